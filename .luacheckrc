@@ -1,0 +1,9 @@
+-- polygon.lua is plain Lua: only the globals every version shares.
+std = "min"
+max_line_length = 110
+
+files["spec"] = { std = "+busted" }
+files["examples/love"] = { std = "+love" }
+files["bench"] = { std = "min" }
+
+exclude_files = { ".luarocks", "lua_modules", ".install" }
