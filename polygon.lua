@@ -1,0 +1,706 @@
+local polygon = {
+  _VERSION     = "polygon 0.1.0",
+  _DESCRIPTION = "Polygon geometry for games: winding, area, convexity, centre, point in polygon, "
+              .. "separating-axis collision with a minimum translation vector, polygon against circle",
+  _URL         = "https://github.com/polygon-lua/polygon.lua",
+  _LICENSE     = [[
+    MIT License
+
+    Copyright (c) 2026 the polygon.lua developers
+
+    Permission is hereby granted, free of charge, to any person obtaining a copy of this software
+    and associated documentation files (the "Software"), to deal in the Software without
+    restriction, including without limitation the rights to use, copy, modify, merge, publish,
+    distribute, sublicense, and/or sell copies of the Software, and to permit persons to whom the
+    Software is furnished to do so, subject to the following conditions:
+
+    The above copyright notice and this permission notice shall be included in all copies or
+    substantial portions of the Software.
+
+    THE SOFTWARE IS PROVIDED "AS IS", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR IMPLIED, INCLUDING
+    BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY, FITNESS FOR A PARTICULAR PURPOSE AND
+    NONINFRINGEMENT. IN NO EVENT SHALL THE AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR ANY CLAIM,
+    DAMAGES OR OTHER LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE, ARISING FROM,
+    OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE SOFTWARE.
+  ]],
+}
+
+-- Points are flat arrays {x1, y1, x2, y2, ...} in screen coordinates: y grows downwards, so a
+-- polygon whose shoelace sum is positive turns clockwise on screen.
+
+local abs, sqrt, huge = math.abs, math.sqrt, math.huge
+local type, error, tostring, setmetatable = type, error, tostring, setmetatable
+
+--------------------------------------------------------------------------------------------------
+-- Arithmetic kernels: the only place that decides a sign
+--------------------------------------------------------------------------------------------------
+-- Every sign the library decides (winding, convexity, which side of an edge a point lies on,
+-- whether projected ranges overlap) comes from one of two predicates:
+--   cross(u0, u1, v0, v1)  the sign of the 2x2 determinant (u1 - u0) x (v1 - v0)
+--   shoelace(points)       the sign of twice the signed area
+-- Each first computes in ordinary floating point with an error bound (Shewchuk's filter). Only
+-- when the bound cannot vouch for the sign does it redo the sum exactly, as a floating-point
+-- expansion: a sum of doubles whose bits do not overlap, built from TwoSum and TwoProduct
+-- (Dekker's split). The exact path allocates nothing: it reuses one scratch array.
+--
+-- Exactness holds while no product overflows or underflows: every nonzero coordinate between
+-- 2^-447 and 2^500 in magnitude (then all coordinates are multiples of 2^-499, all products of
+-- differences multiples of 2^-998, which doubles still hold exactly). Lua 5.3+ integers are
+-- converted to doubles before any product (`+ 0.0`), so they cannot wrap past 2^63.
+
+local EPS = 2^-53                         -- unit roundoff of a double
+local SPLITTER = 134217729.0              -- 2^27 + 1, splits a double into two 26-bit halves
+local CROSS_BOUND = (3 + 16 * EPS) * EPS  -- Shewchuk's ccwerrboundA for a 2x2 determinant
+
+-- a * b as hi + lo exactly (Dekker). Needs |a|, |b| < 2^996 so the split cannot overflow.
+local function twoProduct(a, b)
+  local x = a * b
+  local c = SPLITTER * a
+  local ahi = c - (c - a)
+  local alo = a - ahi
+  c = SPLITTER * b
+  local bhi = c - (c - b)
+  local blo = b - bhi
+  return x, alo * blo - (((x - ahi * bhi) - alo * bhi) - ahi * blo)
+end
+
+-- a - b as hi + lo exactly (Knuth's TwoSum on a and -b).
+local function twoDiff(a, b)
+  local x = a - b
+  local bv = a - x
+  local av = x + bv
+  return x, (a - av) + (bv - b)
+end
+
+-- The scratch expansion: EXP[1..expLen], nonoverlapping, increasing in magnitude, no zeros.
+local EXP, expLen = {}, 0
+
+-- Adds the double b to the expansion exactly (Shewchuk's Grow-Expansion, zeros eliminated).
+local function expAdd(b)
+  if b == 0 then return end
+  local q, k = b, 0
+  for i = 1, expLen do
+    local e = EXP[i]
+    local s = q + e
+    local bv = s - q
+    local h = (q - (s - bv)) + (e - bv)
+    q = s
+    if h ~= 0 then k = k + 1; EXP[k] = h end
+  end
+  if q ~= 0 then k = k + 1; EXP[k] = q end
+  expLen = k
+end
+
+-- Adds a * b to the expansion exactly.
+local function expAddProduct(a, b)
+  if a == 0 or b == 0 then return end
+  local hi, lo = twoProduct(a, b)
+  expAdd(lo)
+  expAdd(hi)
+end
+
+-- The sign of the expansion is the sign of its largest component.
+local function expSign()
+  local top = EXP[expLen]
+  if expLen == 0 or top == 0 then return 0 end
+  return top > 0 and 1 or -1
+end
+
+-- The expansion's value rounded to within one ulp (Shewchuk's Compress: the largest component
+-- of the compressed expansion is within one ulp of the exact sum).
+local function expApprox()
+  if expLen == 0 then return 0.0 end
+  local bottom, q = expLen, EXP[expLen]
+  for i = expLen - 1, 1, -1 do
+    local e = EXP[i]
+    local s = q + e
+    local small = e - (s - q)
+    if small ~= 0 then
+      EXP[bottom] = s; bottom = bottom - 1; q = small
+    else
+      q = s
+    end
+  end
+  EXP[bottom] = q
+  local top = 0
+  for i = bottom + 1, expLen do
+    local g = EXP[i]
+    local s = g + q
+    local small = q - (s - g)
+    if small ~= 0 then top = top + 1; EXP[top] = small end
+    q = s
+  end
+  top = top + 1; EXP[top] = q
+  expLen = top
+  return q
+end
+
+-- The exact sign of (u1 - u0) x (v1 - v0): each difference is split into hi + lo exactly, and the
+-- sixteen partial products are summed as an expansion.
+local function crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+  local axh, axl = twoDiff(ux1 + 0.0, ux0 + 0.0)
+  local ayh, ayl = twoDiff(uy1 + 0.0, uy0 + 0.0)
+  local bxh, bxl = twoDiff(vx1 + 0.0, vx0 + 0.0)
+  local byh, byl = twoDiff(vy1 + 0.0, vy0 + 0.0)
+  expLen = 0
+  expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
+  expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh); expAddProduct(-ayl, bxl)
+  return expSign()
+end
+
+-- A number with the sign of (u1 - u0) x (v1 - v0), exact for the given doubles: positive when
+-- v turns clockwise from u on screen. orient(a, b, c) is cross(a, b, a, c).
+local function cross(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+  local l = (ux1 - ux0 + 0.0) * (vy1 - vy0)
+  local r = (uy1 - uy0 + 0.0) * (vx1 - vx0)
+  local det = l - r
+  local sum
+  -- When l and r differ in sign (or one is zero) no cancellation can happen and det's sign is
+  -- right; otherwise the filter compares det with the rounding error Shewchuk bounds.
+  if l > 0 then
+    if r <= 0 then return det end
+    sum = l + r
+  elseif l < 0 then
+    if r >= 0 then return det end
+    sum = -l - r
+  else
+    return det
+  end
+  local bound = CROSS_BOUND * sum
+  if det >= bound or -det >= bound then return det end
+  return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+end
+
+-- Twice the signed area of points[1..n] (n = #points >= 6), and the bounding box.
+-- The x coordinates are taken relative to the first vertex so the offset of a polygon does not
+-- matter: sum over edges of (x_i + x_j - 2 x_1)(y_j - y_i), the tutorial's trapezoid form, which
+-- equals the cross-product form because the y differences around the polygon sum to zero.
+local function shoelace(points, n)
+  local x0 = points[1] + 0.0
+  local xmin, xmax, ymin, ymax = x0, x0, points[2], points[2]
+  local px, py = 0.0, points[2]
+  local sum = 0.0
+  for i = 3, n - 1, 2 do
+    local x, y = points[i], points[i + 1]
+    if x < xmin then xmin = x elseif x > xmax then xmax = x end
+    if y < ymin then ymin = y elseif y > ymax then ymax = y end
+    x = x - x0
+    sum = sum + (px + x) * (y - py)
+    px, py = x, y
+  end
+  return sum + px * (points[2] - py), xmin, xmax, ymin, ymax
+end
+
+-- A bound on the rounding error of shoelace (and of the centroid's area sum) for m vertices in a
+-- box w by h: each of the m terms is off by at most 4 eps |term| and the summation adds m eps
+-- times the sum of |terms|, which is at most 2 m w h. The factor leaves a margin of four.
+local function areaBound(m, w, h)
+  return (m + 8) * m * 2^-50 * (w + 0.0) * h
+end
+
+-- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges.
+local function shoelaceExact(points, n)
+  expLen = 0
+  local xi, yi = points[n - 1] + 0.0, points[n] + 0.0
+  for i = 1, n - 1, 2 do
+    local xj, yj = points[i] + 0.0, points[i + 1] + 0.0
+    expAddProduct(xi, yj)
+    expAddProduct(-xj, yi)
+    xi, yi = xj, yj
+  end
+end
+
+-- The exact sign of twice the signed area (> 0: clockwise on screen), given shoelace's results.
+local function areaSignOf(points, n, sum, xmin, xmax, ymin, ymax)
+  local bound = areaBound(n / 2, xmax - xmin, ymax - ymin)
+  if sum > bound or -sum > bound then return sum end
+  shoelaceExact(points, n)
+  return expSign()
+end
+
+local function areaSign(points, n)
+  return areaSignOf(points, n, shoelace(points, n))
+end
+
+--------------------------------------------------------------------------------------------------
+-- Argument checks: O(1), raised at the caller's level
+--------------------------------------------------------------------------------------------------
+
+-- level: where the error points, counted from checkPoints (3: the caller of a public function).
+local function checkPoints(points, fname, argname, level)
+  if type(points) ~= "table" then
+    error(("%s: %s must be a table, got %s"):format(fname, argname or "points", type(points)),
+      level or 3)
+  end
+  local n = #points
+  if n % 2 ~= 0 then
+    error(("%s: %s must hold an even number of coordinates, got %d")
+      :format(fname, argname or "points", n), level or 3)
+  end
+  return n
+end
+
+local function checkNumber(v, fname, argname)
+  if type(v) ~= "number" then
+    error(("%s: %s must be a number, got %s"):format(fname, argname, type(v)), 3)
+  end
+end
+
+--------------------------------------------------------------------------------------------------
+-- Measures: winding, area, type, centre
+--------------------------------------------------------------------------------------------------
+
+--- The winding order as seen on screen (y down).
+-- @param points flat array {x1, y1, ...}
+-- @return "cw" or "ccw"; nil for fewer than 3 points or zero signed area. Exact.
+function polygon.polygonWindingOrder(points)
+  local n = checkPoints(points, "polygonWindingOrder")
+  if n < 6 then return nil end
+  local s = areaSign(points, n)
+  if s > 0 then return "cw" elseif s < 0 then return "ccw" end
+  return nil
+end
+
+--- The area (non-negative) by the shoelace formula, relative to the first vertex.
+-- @return area; nil for fewer than 3 points. Off by a few ulps for ordinary polygons at any
+-- offset; a self-intersecting polygon's lobes count with their winding's sign.
+function polygon.polygonArea(points)
+  local n = checkPoints(points, "polygonArea")
+  if n < 6 then return nil end
+  return abs(shoelace(points, n)) * 0.5
+end
+
+--- The exact area of the given doubles, rounded to within one ulp.
+-- @return area; nil for fewer than 3 points. Costs an expansion sum: several times polygonArea.
+function polygon.polygonAreaAccurate(points)
+  local n = checkPoints(points, "polygonAreaAccurate")
+  if n < 6 then return nil end
+  shoelaceExact(points, n)
+  return abs(expApprox()) * 0.5
+end
+
+--- Whether the polygon is convex.
+-- Checks every vertex (the tutorial skips the last one). Repeated consecutive vertices and
+-- collinear vertices that go on forward are allowed; a zero turn that doubles back (a spike) is
+-- concave, and so is a polygon whose turns all agree but which winds around more than once
+-- (a pentagram): its edges' x directions change sign more than twice.
+-- @return "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
+function polygon.polygonType(points)
+  local n = checkPoints(points, "polygonType")
+  if n < 6 then return nil end
+  local x1, y1 = points[1], points[2]
+  -- Start at vertex 1 with the last vertex that differs from it as the previous one.
+  local last = n - 1
+  while last > 1 and points[last] == x1 and points[last + 1] == y1 do last = last - 2 end
+  if last == 1 then return nil end
+  local px, py, cx, cy = points[last], points[last + 1], x1, y1
+  local turn, spike = 0, false
+  local flips, firstDir, lastDir = 0, 0, 0
+  local i = 3
+  while true do
+    local qx, qy
+    if i <= last then qx, qy = points[i], points[i + 1] else qx, qy = x1, y1 end
+    if qx ~= cx or qy ~= cy then
+      local s = cross(px, py, cx, cy, cx, cy, qx, qy)
+      if s > 0 then
+        if turn < 0 then return "concave" end
+        turn = 1
+      elseif s < 0 then
+        if turn > 0 then return "concave" end
+        turn = -1
+      else
+        -- Collinear: a spike if the edge reverses; on a line x decides unless it is vertical.
+        if cx ~= px then
+          if (cx > px) ~= (qx > cx) then spike = true end
+        elseif (cy > py) ~= (qy > cy) then
+          spike = true
+        end
+      end
+      local dir = qx > cx and 1 or (qx < cx and -1 or 0)
+      if dir ~= 0 then
+        if firstDir == 0 then firstDir = dir elseif dir ~= lastDir then flips = flips + 1 end
+        lastDir = dir
+      end
+      px, py, cx, cy = cx, cy, qx, qy
+    end
+    if i > last then break end
+    i = i + 2
+  end
+  if turn == 0 then return nil end
+  if firstDir ~= lastDir then flips = flips + 1 end
+  if spike or flips > 2 then return "concave" end
+  return "convex"
+end
+
+--- The centre as the tutorial defines it: the mean of the vertices.
+-- @return cx, cy; nil for fewer than 3 points. Summed relative to the first vertex.
+function polygon.polygonCenter(points)
+  local n = checkPoints(points, "polygonCenter")
+  if n < 6 then return nil end
+  local x0, y0 = points[1] + 0.0, points[2] + 0.0
+  local sx, sy = 0.0, 0.0
+  for i = 3, n - 1, 2 do
+    sx = sx + (points[i] - x0)
+    sy = sy + (points[i + 1] - y0)
+  end
+  local m = n / 2
+  return x0 + sx / m, y0 + sy / m
+end
+
+--- The area centroid, the point a physics step rotates a uniform polygon about.
+-- @return cx, cy; nil for fewer than 3 points or zero (exact) signed area.
+function polygon.polygonCentroid(points)
+  local n = checkPoints(points, "polygonCentroid")
+  if n < 6 then return nil end
+  local x0, y0 = points[1] + 0.0, points[2] + 0.0
+  local a2, sx, sy = 0.0, 0.0, 0.0
+  local xmin, xmax, ymin, ymax = 0.0, 0.0, 0.0, 0.0
+  -- relative to vertex 1, the edges from and to it add nothing: start at edge 2 -> 3
+  local xi, yi = 0.0, 0.0
+  for i = 3, n - 1, 2 do
+    local xj, yj = points[i] - x0, points[i + 1] - y0
+    if xj < xmin then xmin = xj elseif xj > xmax then xmax = xj end
+    if yj < ymin then ymin = yj elseif yj > ymax then ymax = yj end
+    local c = xi * yj - xj * yi
+    a2 = a2 + c
+    sx = sx + (xi + xj) * c
+    sy = sy + (yi + yj) * c
+    xi, yi = xj, yj
+  end
+  local bound = areaBound(n / 2, xmax - xmin, ymax - ymin)
+  if a2 <= bound and -a2 <= bound then
+    -- Too close to zero to trust: take the exact area; if it is zero there is no centroid.
+    shoelaceExact(points, n)
+    a2 = expApprox()
+    if a2 == 0 then return nil end
+  end
+  return x0 + sx / (3 * a2), y0 + sy / (3 * a2)
+end
+
+--------------------------------------------------------------------------------------------------
+-- Point in polygon
+--------------------------------------------------------------------------------------------------
+
+-- W. R. Franklin's crossing rule, as in the tutorial: count the edges crossed by the ray from
+-- (x, y) to the right. An edge counts when (y1 >= y) ~= (y2 >= y) and x <= the edge's x at height
+-- y. That half-open rule puts a point on an edge shared by two polygons in exactly one of them.
+-- The tutorial divides to find the edge's x; here the comparison is the exact side test
+-- x <= x'  <=>  (p2 - p1) x (q - p1) >= 0 when the edge goes down (y2 > y1), <= 0 when it goes up.
+local function contains(points, n, x, y)
+  local inside = false
+  local x1, y1 = points[n - 1], points[n]
+  for i = 1, n - 1, 2 do
+    local x2, y2 = points[i], points[i + 1]
+    if (y1 >= y) ~= (y2 >= y) then
+      if x <= x1 and x <= x2 then
+        inside = not inside
+      elseif x <= x1 or x <= x2 then
+        local s = cross(x1, y1, x2, y2, x1, y1, x, y)
+        if y2 > y1 then
+          if s >= 0 then inside = not inside end
+        elseif s <= 0 then
+          inside = not inside
+        end
+      end
+    end
+    x1, y1 = x2, y2
+  end
+  return inside
+end
+
+--- Whether (x, y) lies inside the polygon, by the crossing rule with the tutorial's half-open
+-- boundary. Works for concave and self-intersecting polygons (even-odd). Exact.
+-- @return true or false; false for fewer than 3 points.
+function polygon.polygonContains(points, x, y)
+  local n = checkPoints(points, "polygonContains")
+  checkNumber(x, "polygonContains", "x")
+  checkNumber(y, "polygonContains", "y")
+  if n < 6 then return false end
+  return contains(points, n, x, y)
+end
+
+--------------------------------------------------------------------------------------------------
+-- Projection and the separating axis theorem
+--------------------------------------------------------------------------------------------------
+
+--- The range of the polygon projected on the axis (nx, ny), relative to the point (x, y).
+-- @return min, max of (px - x) * nx + (py - y) * ny over the vertices; nil for no points.
+function polygon.projectPolygon(points, x, y, nx, ny)
+  local n = checkPoints(points, "projectPolygon")
+  if n < 2 then return nil end
+  local lo = (points[1] - x + 0.0) * nx + (points[2] - y + 0.0) * ny
+  local hi = lo
+  for i = 3, n - 1, 2 do
+    local s = (points[i] - x + 0.0) * nx + (points[i + 1] - y + 0.0) * ny
+    if s < lo then lo = s elseif s > hi then hi = s end
+  end
+  return lo, hi
+end
+
+-- The vertex of points extreme along the normal of edge a -> b: the largest projection when
+-- want is -1, the smallest when it is 1. Compared exactly: n.(w - v) has the sign of
+-- -(b - a) x (w - v).
+local function extreme(ax, ay, bx, by, points, n, want)
+  local ex, ey = points[1], points[2]
+  for i = 3, n - 1, 2 do
+    local vx, vy = points[i], points[i + 1]
+    if cross(ax, ay, bx, by, ex, ey, vx, vy) * want > 0 then ex, ey = vx, vy end
+  end
+  return ex, ey
+end
+
+-- Whether the edge a -> b has a normal on which the ranges of p1 and p2 are separated or just
+-- touch, decided exactly: max1 <= min2 <=> (b - a) x (min2 - max1) <= 0, and likewise below.
+local function separatedExact(ax, ay, bx, by, p1, n1, p2, n2)
+  local hx1, hy1 = extreme(ax, ay, bx, by, p1, n1, -1)
+  local lx2, ly2 = extreme(ax, ay, bx, by, p2, n2, 1)
+  if cross(ax, ay, bx, by, hx1, hy1, lx2, ly2) <= 0 then return true end
+  local lx1, ly1 = extreme(ax, ay, bx, by, p1, n1, 1)
+  local hx2, hy2 = extreme(ax, ay, bx, by, p2, n2, -1)
+  return cross(ax, ay, bx, by, hx2, hy2, lx1, ly1) <= 0
+end
+
+-- Projects p1 and p2 on each edge normal of `axes` (one of the two), relative to the edge's first
+-- vertex so that far from the origin the projections stay as accurate as near it.
+-- w, h: the bounding box of both polygons, which bounds every |v - a| in the projections; the
+-- projection error is then at most 4 eps (w |nx| + h |ny|), and a gap within four times that is
+-- decided by separatedExact.
+-- Returns false on a separating axis; otherwise the least penetration so far as overlap o along
+-- normal (nx, ny) of squared length l2 (depth o / sqrt(l2)), signed by the side the second
+-- polygon leaves towards: a negative o pushes it along -n.
+local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bo, bl2, bnx, bny)
+  local ax, ay = axes[na - 1], axes[na]
+  for i = 1, na - 1, 2 do
+    local bx, by = axes[i], axes[i + 1]
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
+      local nx, ny = by - ay + 0.0, ax - bx + 0.0
+      local min1, max1 = huge, -huge
+      for j = 1, n1 - 1, 2 do
+        local s = nx * (p1[j] - ax) + ny * (p1[j + 1] - ay)
+        if s < min1 then min1 = s end
+        if s > max1 then max1 = s end
+      end
+      local min2, max2 = huge, -huge
+      for j = 1, n2 - 1, 2 do
+        local s = nx * (p2[j] - ax) + ny * (p2[j + 1] - ay)
+        if s < min2 then min2 = s end
+        if s > max2 then max2 = s end
+      end
+      -- up: how far p2 must move along +n to clear p1; down: along -n
+      local up, down = max1 - min2, max2 - min1
+      local tol = 16 * EPS * (w * abs(nx) + h * abs(ny))
+      if up <= tol or down <= tol then
+        if up < -tol or down < -tol then return false end
+        if separatedExact(ax, ay, bx, by, p1, n1, p2, n2) then return false end
+        -- overlapping by less than the rounding: the float depth may have come out negative
+        if up < 0 then up = 0 end
+        if down < 0 then down = 0 end
+      end
+      local o = up < down and up or -down
+      if o * o * bl2 < bo * bo * (nx * nx + ny * ny) then   -- |o| / |n| < |bo| / |bn|
+        bo, bl2, bnx, bny = o, nx * nx + ny * ny, nx, ny
+      end
+    end
+    ax, ay = bx, by
+  end
+  return bo, bl2, bnx, bny
+end
+
+-- The shared body of the four polygon collision functions.
+local function collide(fname, p1, p2, both)
+  local n1 = checkPoints(p1, fname, "points1", 4)
+  local n2 = checkPoints(p2, fname, "points2", 4)
+  if n1 < 6 or n2 < 6 then return false end
+  local a1, xmin, xmax, ymin, ymax = shoelace(p1, n1)
+  if areaSignOf(p1, n1, a1, xmin, xmax, ymin, ymax) == 0 then return false end
+  local a2, xmin2, xmax2, ymin2, ymax2 = shoelace(p2, n2)
+  if areaSignOf(p2, n2, a2, xmin2, xmax2, ymin2, ymax2) == 0 then return false end
+  -- the box of both polygons, for the projection error bound
+  if xmin2 < xmin then xmin = xmin2 end
+  if xmax2 > xmax then xmax = xmax2 end
+  if ymin2 < ymin then ymin = ymin2 end
+  if ymax2 > ymax then ymax = ymax2 end
+  local w, h = xmax - xmin + 0.0, ymax - ymin + 0.0
+  local o, l2, nx, ny = leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 1, 0, 0)
+  if o and both then
+    o, l2, nx, ny = leastPenetration(p2, n2, p1, n1, p2, n2, w, h, o, l2, nx, ny)
+  end
+  if not o then return false end
+  return o, l2, nx, ny
+end
+
+-- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
+-- component so that neither squaring overflows nor underflows. (nx, ny) must not be (0, 0).
+local function unit(nx, ny)
+  local m = abs(nx) > abs(ny) and abs(nx) or abs(ny)
+  nx, ny = nx / m, ny / m
+  local len = sqrt(nx * nx + ny * ny)
+  return nx / len, ny / len, len * m
+end
+
+-- overlap, dx, dy from collide's least penetration.
+local function displacement(o, _, nx, ny)
+  if not o then return false end
+  if o < 0 then o, nx, ny = -o, -nx, -ny end
+  local ux, uy, len = unit(nx, ny)
+  local depth = o / len
+  return depth, ux * depth + 0.0, uy * depth + 0.0   -- + 0.0 turns -0 into 0
+end
+
+--- Whether the edge normals of points1 show no separating axis between two convex polygons.
+-- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- @return true or false
+function polygon.polygonCollidesWith(points1, points2)
+  return collide("polygonCollidesWith", points1, points2, false) ~= false
+end
+
+--- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
+-- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- @return true or false
+function polygon.polygonsCollide(points1, points2)
+  return collide("polygonsCollide", points1, points2, true) ~= false
+end
+
+--- As polygonCollidesWith, with the minimum translation vector over the axes of points1.
+-- @return overlap, dx, dy (moving points2 by dx, dy makes the polygons just touch) or false
+function polygon.polygonCollidesWithV(points1, points2)
+  return displacement(collide("polygonCollidesWithV", points1, points2, false))
+end
+
+--- As polygonsCollide, with the minimum translation vector.
+-- overlap is the penetration depth along the axis of least penetration, right also when one
+-- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
+-- points2), pointing the right way in either argument order and when the centres coincide.
+-- @return overlap, dx, dy or false
+function polygon.polygonsCollideV(points1, points2)
+  return displacement(collide("polygonsCollideV", points1, points2, true))
+end
+
+--------------------------------------------------------------------------------------------------
+-- Circles
+--------------------------------------------------------------------------------------------------
+
+--- The range of a circle projected on the axis (nx, ny) (unit length), relative to (x, y).
+-- @return min, max
+function polygon.projectCircle(cx, cy, radius, x, y, nx, ny)
+  local s = (cx - x + 0.0) * nx + (cy - y + 0.0) * ny
+  return s - radius, s + radius
+end
+
+--- The minimum translation vector of a circle out of a convex polygon.
+-- The axes are the edge normals and the axis from the vertex nearest the centre (by distance;
+-- the tutorial compares dot products) to the centre. The depth is the full penetration, so a
+-- circle deep inside is pushed out in one step. Touching is not colliding.
+-- @return overlap, dx, dy (move the circle by dx, dy) or false
+function polygon.polygonCircleCollideV(points, cx, cy, radius)
+  local fname = "polygonCircleCollideV"
+  local n = checkPoints(points, fname)
+  checkNumber(cx, fname, "cx")
+  checkNumber(cy, fname, "cy")
+  checkNumber(radius, fname, "radius")
+  if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
+  if n < 6 or areaSign(points, n) == 0 then return false end
+  local best, bux, buy = huge, 0.0, 0.0
+  local nearX, nearY, nearD = 0.0, 0.0, huge
+  local ax, ay = points[n - 1], points[n]
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i], points[i + 1]
+    local ex, ey = bx - cx + 0.0, by - cy + 0.0
+    local d = ex * ex + ey * ey
+    if d < nearD then nearX, nearY, nearD = bx, by, d end
+    if bx ~= ax or by ~= ay then
+      local nx, ny = unit(by - ay + 0.0, ax - bx + 0.0)
+      local min1, max1 = huge, -huge
+      for j = 1, n - 1, 2 do
+        local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
+        if s < min1 then min1 = s end
+        if s > max1 then max1 = s end
+      end
+      local s = nx * (cx - ax) + ny * (cy - ay)
+      local up, down = max1 - (s - radius), (s + radius) - min1
+      if up <= 0 or down <= 0 then return false end
+      if up < best then best, bux, buy = up, nx, ny end
+      if down < best then best, bux, buy = down, -nx, -ny end
+    end
+    ax, ay = bx, by
+  end
+  if nearD > 0 then
+    -- the axis from the nearest vertex to the centre
+    local nx, ny, len = unit(cx - nearX + 0.0, cy - nearY + 0.0)
+    local min1, max1 = huge, -huge
+    for j = 1, n - 1, 2 do
+      local s = nx * (points[j] - nearX) + ny * (points[j + 1] - nearY)
+      if s < min1 then min1 = s end
+      if s > max1 then max1 = s end
+    end
+    local s = len   -- the centre's projection relative to the nearest vertex
+    local up, down = max1 - (s - radius), (s + radius) - min1
+    if up <= 0 or down <= 0 then return false end
+    if up < best then best, bux, buy = up, nx, ny end
+    if down < best then best, bux, buy = down, -nx, -ny end
+  end
+  return best, bux * best + 0.0, buy * best + 0.0
+end
+
+--------------------------------------------------------------------------------------------------
+-- Validation and the Polygon class
+--------------------------------------------------------------------------------------------------
+
+--- Checks everything about a polygon: a table, an even count, at least 3 points, every
+-- coordinate a finite number. O(n), so the per-frame functions keep to O(1) checks.
+-- @return true, or nil and a message
+function polygon.validate(points)
+  if type(points) ~= "table" then
+    return nil, "points must be a table, got " .. type(points)
+  end
+  local n = #points
+  if n % 2 ~= 0 then
+    return nil, ("points must hold an even number of coordinates, got %d"):format(n)
+  end
+  if n < 6 then
+    return nil, ("points must hold at least 3 points, got %d"):format(n / 2)
+  end
+  for i = 1, n do
+    local v = points[i]
+    if type(v) ~= "number" or v ~= v or v == huge or v == -huge then
+      return nil, ("points[%d] must be a finite number, got %s"):format(i, tostring(v))
+    end
+  end
+  return true
+end
+
+local validate = polygon.validate
+
+--- A polygon object holding the caller's points table (not a copy).
+local Polygon = {}
+Polygon.__index = Polygon
+
+local function newPolygon(points, level)
+  local ok, message = validate(points)
+  if not ok then error("Polygon.new: " .. message, level + 1) end
+  return setmetatable({ points = points }, Polygon)
+end
+
+--- Polygon.new(points), also Polygon(points): validates, then wraps points.
+function Polygon.new(points)
+  local p = newPolygon(points, 2)   -- not a tail call, so the error level is the same everywhere
+  return p
+end
+
+--- Whether (x, y) lies inside, as polygonContains.
+function Polygon:contains(x, y)
+  local points = self.points
+  local n = checkPoints(points, "Polygon:contains")
+  checkNumber(x, "Polygon:contains", "x")
+  checkNumber(y, "Polygon:contains", "y")
+  if n < 6 then return false end
+  return contains(points, n, x, y)
+end
+
+setmetatable(Polygon, { __call = function(_, points)
+  local p = newPolygon(points, 2)
+  return p
+end })
+polygon.Polygon = Polygon
+
+return polygon
