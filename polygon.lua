@@ -590,7 +590,9 @@ end
 --- The minimum translation vector of a circle out of a convex polygon.
 -- The axes are the edge normals and the axis from the vertex nearest the centre (by distance;
 -- the tutorial compares dot products) to the centre. The depth is the full penetration, so a
--- circle deep inside is pushed out in one step. Touching is not colliding.
+-- circle deep inside is pushed out in one step. Touching is not colliding, and since a unit
+-- normal cannot be exact, neither is an overlap below the rounding error of the projections
+-- (8 eps times the sizes involved): a circle moved by the returned vector no longer collides.
 -- @return overlap, dx, dy (move the circle by dx, dy) or false
 function polygon.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"
@@ -599,7 +601,13 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
   checkNumber(cy, fname, "cy")
   checkNumber(radius, fname, "radius")
   if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
-  if n < 6 or areaSign(points, n) == 0 then return false end
+  if n < 6 then return false end
+  local a2, xmin, xmax, ymin, ymax = shoelace(points, n)
+  if areaSignOf(points, n, a2, xmin, xmax, ymin, ymax) == 0 then return false end
+  -- every |v - a| and |c - a| in the projections below is at most w + h + d + radius
+  local dx = cx - xmin > xmax - cx and cx - xmin or xmax - cx
+  local dy = cy - ymin > ymax - cy and cy - ymin or ymax - cy
+  local tol = 8 * EPS * (xmax - xmin + ymax - ymin + abs(dx) + abs(dy) + radius)
   local best, bux, buy = huge, 0.0, 0.0
   local nearX, nearY, nearD = 0.0, 0.0, huge
   local ax, ay = points[n - 1], points[n]
@@ -618,7 +626,7 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
       end
       local s = nx * (cx - ax) + ny * (cy - ay)
       local up, down = max1 - (s - radius), (s + radius) - min1
-      if up <= 0 or down <= 0 then return false end
+      if up <= tol or down <= tol then return false end
       if up < best then best, bux, buy = up, nx, ny end
       if down < best then best, bux, buy = down, -nx, -ny end
     end
@@ -635,7 +643,7 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
     end
     local s = len   -- the centre's projection relative to the nearest vertex
     local up, down = max1 - (s - radius), (s + radius) - min1
-    if up <= 0 or down <= 0 then return false end
+    if up <= tol or down <= tol then return false end
     if up < best then best, bux, buy = up, nx, ny end
     if down < best then best, bux, buy = down, -nx, -ny end
   end

@@ -1,0 +1,47 @@
+# polygon.lua: `make test` runs every check, `make demo` the example scene, `make bench` the
+# benchmark. Missing Debian packages are installed first (apt-get, as root or through sudo).
+
+LUAS     ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
+LUA      ?= lua5.4
+PACKAGES  = lua5.1 lua5.2 lua5.3 lua5.4 luajit lua-busted lua-check luarocks
+SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all setup setup-love test lint demo bench bench-quick screenshots
+
+all: test
+
+# Installs whatever of $(PACKAGES) is missing (dpkg -s tells; apt-get update only when needed).
+setup:
+	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
+	fi
+
+# The LÖVE demos need love, a virtual X server and software OpenGL.
+setup-love:
+	@missing=""; for p in love xvfb xauth libgl1-mesa-dri; do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing:$$missing"; \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
+	fi
+
+# Every check: luacheck, the specs on each interpreter, the rockspec, the quick benchmark and,
+# when love is installed, the demo screenshots. Ends with "N passed, N failed".
+test: setup
+	@LUAS="$(LUAS)" bash .ci/test
+
+lint: setup
+	luacheck .
+
+demo: setup
+	$(LUA) examples/scene.lua
+
+bench: setup
+	bash bench/bench.sh
+
+bench-quick: setup
+	BENCH_QUICK=1 bash bench/bench.sh
+
+screenshots: setup-love
+	bash examples/love/check-screenshots.sh docs

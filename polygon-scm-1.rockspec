@@ -1,0 +1,30 @@
+rockspec_format = "3.0"
+package = "polygon"
+version = "scm-1"
+source = {
+  url = "git+https://github.com/polygon-lua/polygon.lua.git",
+}
+description = {
+  summary = "Polygon geometry for games: winding, area, convexity, point in polygon, SAT collision",
+  detailed = [[
+    One pure-Lua file over flat point arrays {x1, y1, x2, y2, ...} (the form love.graphics.polygon
+    takes): winding order, area, convex or concave, centre and centroid, point in polygon,
+    separating-axis collision of convex polygons with a minimum translation vector, and convex
+    polygon against circle. Every sign it decides is exact; per-frame calls allocate nothing.
+  ]],
+  homepage = "https://github.com/polygon-lua/polygon.lua",
+  license = "MIT",
+  labels = { "geometry", "polygon", "collision", "love2d", "gamedev" },
+}
+dependencies = {
+  "lua >= 5.1",
+}
+build = {
+  type = "builtin",
+  modules = {
+    polygon = "polygon.lua",
+  },
+}
+test = {
+  type = "busted",
+}
