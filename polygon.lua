@@ -171,31 +171,34 @@ local function cross(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
   return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
 end
 
--- Twice the signed area of points[1..n] (n = #points >= 6), and the bounding box.
+-- Twice the signed area of points[1..n] (n = #points >= 6), with what its error bound needs.
 -- The x coordinates are taken relative to the first vertex so the offset of a polygon does not
--- matter: sum over edges of (x_i + x_j - 2 x_1)(y_j - y_i), the tutorial's trapezoid form, which
--- equals the cross-product form because the y differences around the polygon sum to zero.
+-- matter: sum over edges of (X_i + X_j)(y_j - y_i) with X = x - x_1, the tutorial's trapezoid
+-- form, equal to the cross-product form because the y differences around a polygon sum to zero.
+-- Also returns sx = sum of X_i^2 and sd = sum of (y_j - y_i)^2, branch-free, for areaBound.
 local function shoelace(points, n)
-  local x0 = points[1] + 0.0
-  local xmin, xmax, ymin, ymax = x0, x0, points[2], points[2]
-  local px, py = 0.0, points[2]
-  local sum = 0.0
+  local x0, y1 = points[1] + 0.0, points[2]
+  local px, py = 0.0, y1
+  local sum, sx, sd = 0.0, 0.0, 0.0
   for i = 3, n - 1, 2 do
-    local x, y = points[i], points[i + 1]
-    if x < xmin then xmin = x elseif x > xmax then xmax = x end
-    if y < ymin then ymin = y elseif y > ymax then ymax = y end
-    x = x - x0
-    sum = sum + (px + x) * (y - py)
+    local x, y = points[i] - x0, points[i + 1]
+    local d = y - py
+    sum = sum + (px + x) * d
+    sx, sd = sx + x * x, sd + d * d
     px, py = x, y
   end
-  return sum + px * (points[2] - py), xmin, xmax, ymin, ymax
+  local d = y1 - py
+  return sum + px * d, sx, sd + d * d
 end
 
--- A bound on the rounding error of shoelace (and of the centroid's area sum) for m vertices in a
--- box w by h: each of the m terms is off by at most 4 eps |term| and the summation adds m eps
--- times the sum of |terms|, which is at most 2 m w h. The factor leaves a margin of four.
-local function areaBound(m, w, h)
-  return (m + 8) * m * 2^-50 * (w + 0.0) * h
+-- Whether shoelace's sum is too close to zero for its sign to be trusted. Each term
+-- (X_i + X_j) d is off by at most 4 eps (|X_i| + |X_j|) |d| and summing m terms adds (m - 1) eps
+-- times their magnitudes, so the error is below (m + 3) eps T, where by Cauchy-Schwarz
+-- T = sum (|X_i| + |X_j|) |d| <= 2 sqrt(sx sd). The test compares squares against a bound four
+-- times that (no square root); an overflow only sends the decision to the exact path.
+local function areaUncertain(m, sum, sx, sd)
+  local k = (m + 8) * 2^-50
+  return sum * sum <= k * k * sx * sd
 end
 
 -- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges.
@@ -211,9 +214,8 @@ local function shoelaceExact(points, n)
 end
 
 -- The exact sign of twice the signed area (> 0: clockwise on screen), given shoelace's results.
-local function areaSignOf(points, n, sum, xmin, xmax, ymin, ymax)
-  local bound = areaBound(n / 2, xmax - xmin, ymax - ymin)
-  if sum > bound or -sum > bound then return sum end
+local function areaSignOf(points, n, sum, sx, sd)
+  if not areaUncertain(n / 2, sum, sx, sd) then return sum end
   shoelaceExact(points, n)
   return expSign()
 end
@@ -256,7 +258,11 @@ end
 function polygon.polygonWindingOrder(points)
   local n = checkPoints(points, "polygonWindingOrder")
   if n < 6 then return nil end
-  local s = areaSign(points, n)
+  local s, sx, sd = shoelace(points, n)
+  if areaUncertain(n / 2, s, sx, sd) then
+    shoelaceExact(points, n)
+    s = expSign()
+  end
   if s > 0 then return "cw" elseif s < 0 then return "ccw" end
   return nil
 end
@@ -267,7 +273,16 @@ end
 function polygon.polygonArea(points)
   local n = checkPoints(points, "polygonArea")
   if n < 6 then return nil end
-  return abs(shoelace(points, n)) * 0.5
+  -- shoelace's sum alone: the loop without the error bound's sums is the cost of the naive one
+  local x0, y1 = points[1] + 0.0, points[2]
+  local px, py, sum = 0.0, y1, 0.0
+  for i = 3, n - 1, 2 do
+    local x, y = points[i] - x0, points[i + 1]
+    sum = sum + (px + x) * (y - py)
+    px, py = x, y
+  end
+  sum = sum + px * (y1 - py)
+  return (sum < 0 and -sum or sum) * 0.5
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
@@ -288,46 +303,53 @@ end
 function polygon.polygonType(points)
   local n = checkPoints(points, "polygonType")
   if n < 6 then return nil end
-  local x1, y1 = points[1], points[2]
-  -- Start at vertex 1 with the last vertex that differs from it as the previous one.
-  local last = n - 1
-  while last > 1 and points[last] == x1 and points[last + 1] == y1 do last = last - 2 end
-  if last == 1 then return nil end
-  local px, py, cx, cy = points[last], points[last + 1], x1, y1
+  -- Walk the turns at every vertex, starting at the last one: the previous vertex is the last
+  -- one before it that differs from it, and a next vertex equal to the current one is skipped.
+  local cx, cy = points[n - 1], points[n]
+  local j = n - 3
+  while j > 0 and points[j] == cx and points[j + 1] == cy do j = j - 2 end
+  if j < 0 then return nil end   -- all points are one point
+  local px, py = points[j], points[j + 1]
   local turn, spike = 0, false
-  local flips, firstDir, lastDir = 0, 0, 0
-  local i = 3
-  while true do
-    local qx, qy
-    if i <= last then qx, qy = points[i], points[i + 1] else qx, qy = x1, y1 end
+  local flips, dir = 0, 0
+  for i = 1, n - 1, 2 do
+    local qx, qy = points[i], points[i + 1]
     if qx ~= cx or qy ~= cy then
-      local s = cross(px, py, cx, cy, cx, cy, qx, qy)
+      -- cross(p, c, c, q) with its filter written out, as the per-vertex call would cost the
+      -- PUC interpreters half the loop: when l and r differ in sign |l + r| <= |l - r| always
+      -- passes; when they agree |l + r| = |l| + |r|, Shewchuk's bound.
+      local l = (cx - px + 0.0) * (qy - cy)
+      local r = (cy - py + 0.0) * (qx - cx)
+      local s, e = l - r, l + r
+      if e < 0 then e = -e end
+      e = CROSS_BOUND * e
+      if s < e and -s < e then s = crossExact(px, py, cx, cy, cx, cy, qx, qy) end
       if s > 0 then
         if turn < 0 then return "concave" end
         turn = 1
       elseif s < 0 then
         if turn > 0 then return "concave" end
         turn = -1
-      else
-        -- Collinear: a spike if the edge reverses; on a line x decides unless it is vertical.
-        if cx ~= px then
-          if (cx > px) ~= (qx > cx) then spike = true end
-        elseif (cy > py) ~= (qy > cy) then
-          spike = true
-        end
+      elseif cx ~= px then   -- collinear: a spike if the walk reverses (x decides on a line...
+        if (cx > px) ~= (qx > cx) then spike = true end
+      elseif (cy > py) ~= (qy > cy) then   -- ...unless the line is vertical)
+        spike = true
       end
-      local dir = qx > cx and 1 or (qx < cx and -1 or 0)
-      if dir ~= 0 then
-        if firstDir == 0 then firstDir = dir elseif dir ~= lastDir then flips = flips + 1 end
-        lastDir = dir
+      -- Count the changes of sign of the edges' x direction: around a convex polygon there are
+      -- two. Counted along the walk they are one fewer when the first and last edges differ,
+      -- and the count around the cycle is even, so more than two along the walk means more
+      -- than two around.
+      if qx > cx then
+        if dir < 0 then flips = flips + 1 end
+        dir = 1
+      elseif qx < cx then
+        if dir > 0 then flips = flips + 1 end
+        dir = -1
       end
       px, py, cx, cy = cx, cy, qx, qy
     end
-    if i > last then break end
-    i = i + 2
   end
-  if turn == 0 then return nil end
-  if firstDir ~= lastDir then flips = flips + 1 end
+  if turn == 0 then return nil end   -- no turn at all: every point on one line
   if spike or flips > 2 then return "concave" end
   return "convex"
 end
@@ -354,25 +376,20 @@ function polygon.polygonCentroid(points)
   if n < 6 then return nil end
   local x0, y0 = points[1] + 0.0, points[2] + 0.0
   local a2, sx, sy = 0.0, 0.0, 0.0
-  local xmin, xmax, ymin, ymax = 0.0, 0.0, 0.0, 0.0
   -- relative to vertex 1, the edges from and to it add nothing: start at edge 2 -> 3
   local xi, yi = 0.0, 0.0
   for i = 3, n - 1, 2 do
     local xj, yj = points[i] - x0, points[i + 1] - y0
-    if xj < xmin then xmin = xj elseif xj > xmax then xmax = xj end
-    if yj < ymin then ymin = yj elseif yj > ymax then ymax = yj end
     local c = xi * yj - xj * yi
     a2 = a2 + c
     sx = sx + (xi + xj) * c
     sy = sy + (yi + yj) * c
     xi, yi = xj, yj
   end
-  local bound = areaBound(n / 2, xmax - xmin, ymax - ymin)
-  if a2 <= bound and -a2 <= bound then
-    -- Too close to zero to trust: take the exact area; if it is zero there is no centroid.
+  if areaSign(points, n) == 0 then return nil end
+  if a2 == 0 then   -- the rounded sum lost everything: take the exact area
     shoelaceExact(points, n)
     a2 = expApprox()
-    if a2 == 0 then return nil end
   end
   return x0 + sx / (3 * a2), y0 + sy / (3 * a2)
 end
@@ -437,6 +454,54 @@ function polygon.projectPolygon(points, x, y, nx, ny)
   return lo, hi
 end
 
+-- The range of the projections nx (vx - ax) + ny (vy - ay) over the vertices of points.
+-- LuaJIT compiles math.min and math.max to single branch-free instructions, where the unpredictable
+-- comparisons would cost it most of the loop; the PUC interpreters call them as functions, so for
+-- them plain comparisons are faster. The two bodies compute the same numbers.
+local projectRange, minProjection
+if rawget(_G, "jit") then
+  local min, max = math.min, math.max
+  projectRange = function(points, n, ax, ay, nx, ny)
+    local lo, hi = huge, -huge
+    for i = 1, n - 1, 2 do
+      local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
+      lo, hi = min(lo, s), max(hi, s)
+    end
+    return lo, hi
+  end
+  minProjection = function(points, n, ax, ay, nx, ny)
+    local lo = huge
+    for i = 1, n - 1, 2 do lo = min(lo, nx * (points[i] - ax) + ny * (points[i + 1] - ay)) end
+    return lo
+  end
+else
+  projectRange = function(points, n, ax, ay, nx, ny)
+    local lo, hi = huge, -huge
+    for i = 1, n - 1, 2 do
+      local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
+      if s < lo then lo = s end
+      if s > hi then hi = s end
+    end
+    return lo, hi
+  end
+  minProjection = function(points, n, ax, ay, nx, ny)
+    local lo = huge
+    for i = 1, n - 1, 2 do
+      local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
+      if s < lo then lo = s end
+    end
+    return lo
+  end
+end
+
+-- The projections above are taken relative to a vertex a of one polygon so that far from the
+-- origin they stay as accurate as near it. Their rounding error is at most 4 eps (w |nx| + h |ny|)
+-- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that is decided
+-- again exactly, with the cross kernel.
+local function projectionTolerance(w, h, nx, ny)
+  return 16 * EPS * (w * abs(nx) + h * abs(ny))
+end
+
 -- The vertex of points extreme along the normal of edge a -> b: the largest projection when
 -- want is -1, the smallest when it is 1. Compared exactly: n.(w - v) has the sign of
 -- -(b - a) x (w - v).
@@ -460,35 +525,22 @@ local function separatedExact(ax, ay, bx, by, p1, n1, p2, n2)
   return cross(ax, ay, bx, by, hx2, hy2, lx1, ly1) <= 0
 end
 
--- Projects p1 and p2 on each edge normal of `axes` (one of the two), relative to the edge's first
--- vertex so that far from the origin the projections stay as accurate as near it.
--- w, h: the bounding box of both polygons, which bounds every |v - a| in the projections; the
--- projection error is then at most 4 eps (w |nx| + h |ny|), and a gap within four times that is
--- decided by separatedExact.
+-- The tutorial's test, on the edge normals of `axes` (p1 here): both polygons projected on each
+-- normal, and both ends of the ranges compared. Used by the one-sided functions.
 -- Returns false on a separating axis; otherwise the least penetration so far as overlap o along
--- normal (nx, ny) of squared length l2 (depth o / sqrt(l2)), signed by the side the second
--- polygon leaves towards: a negative o pushes it along -n.
+-- normal (nx, ny) of squared length l2 (depth |o| / sqrt(l2)), signed by the way the second
+-- polygon leaves: a negative o pushes it along -n. w, h: see projectionTolerance.
 local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bo, bl2, bnx, bny)
   local ax, ay = axes[na - 1], axes[na]
   for i = 1, na - 1, 2 do
     local bx, by = axes[i], axes[i + 1]
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
       local nx, ny = by - ay + 0.0, ax - bx + 0.0
-      local min1, max1 = huge, -huge
-      for j = 1, n1 - 1, 2 do
-        local s = nx * (p1[j] - ax) + ny * (p1[j + 1] - ay)
-        if s < min1 then min1 = s end
-        if s > max1 then max1 = s end
-      end
-      local min2, max2 = huge, -huge
-      for j = 1, n2 - 1, 2 do
-        local s = nx * (p2[j] - ax) + ny * (p2[j + 1] - ay)
-        if s < min2 then min2 = s end
-        if s > max2 then max2 = s end
-      end
+      local min1, max1 = projectRange(p1, n1, ax, ay, nx, ny)
+      local min2, max2 = projectRange(p2, n2, ax, ay, nx, ny)
       -- up: how far p2 must move along +n to clear p1; down: along -n
       local up, down = max1 - min2, max2 - min1
-      local tol = 16 * EPS * (w * abs(nx) + h * abs(ny))
+      local tol = projectionTolerance(w, h, nx, ny)
       if up <= tol or down <= tol then
         if up < -tol or down < -tol then return false end
         if separatedExact(ax, ay, bx, by, p1, n1, p2, n2) then return false end
@@ -497,8 +549,9 @@ local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bo, bl2, bnx, bn
         if down < 0 then down = 0 end
       end
       local o = up < down and up or -down
-      if o * o * bl2 < bo * bo * (nx * nx + ny * ny) then   -- |o| / |n| < |bo| / |bn|
-        bo, bl2, bnx, bny = o, nx * nx + ny * ny, nx, ny
+      local l2 = nx * nx + ny * ny
+      if o * o * bl2 < bo * bo * l2 then   -- |o| / |n| < |bo| / |bn|
+        bo, bl2, bnx, bny = o, l2, nx, ny
       end
     end
     ax, ay = bx, by
@@ -506,27 +559,70 @@ local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bo, bl2, bnx, bn
   return bo, bl2, bnx, bny
 end
 
--- The shared body of the four polygon collision functions.
+-- Whether no vertex of `other` lies strictly inside the edge a -> b of a polygon whose area has
+-- the sign `turn` (> 0 clockwise on screen), decided exactly.
+local function outsideExact(ax, ay, bx, by, turn, other, no)
+  for i = 1, no - 1, 2 do
+    if turn * cross(ax, ay, bx, by, ax, ay, other[i], other[i + 1]) > 0 then return false end
+  end
+  return true
+end
+
+-- The separating axis test of two convex polygons, face by face: for each edge of `edges`, how
+-- deep `other` reaches past it, measured on the edge's outward normal. Two convex polygons
+-- overlap exactly when every edge of both is reached past, and the least such depth is the
+-- least penetration over all the tutorial's axes and both ends of their ranges (the overlap of
+-- the far ends is never smaller: it is the support of the Minkowski difference in a direction
+-- that is not a face of it). So one polygon is projected per axis where the tutorial projects
+-- both, and the other polygon's own projection is known: its edge, at 0.
+-- turn: the sign of the area of `edges`; push: 1 when `other` is the polygon the displacement
+-- moves, -1 when `edges` is. Returns false or the best (bo, bl2, bnx, bny) as leastPenetration.
+local function deepestReach(edges, ne, turn, other, no, push, w, h, bo, bl2, bnx, bny)
+  local ax, ay = edges[ne - 1], edges[ne]
+  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
+  for i = 1, ne - 1, 2 do
+    local bx, by = edges[i], edges[i + 1]
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
+      local nx, ny = (by - ay) * sign, (ax - bx) * sign
+      local depth = -minProjection(other, no, ax, ay, nx, ny)
+      local tol = projectionTolerance(w, h, nx, ny)
+      if depth <= tol then
+        if depth < -tol or outsideExact(ax, ay, bx, by, turn, other, no) then return false end
+        if depth < 0 then depth = 0 end
+      end
+      local l2 = nx * nx + ny * ny
+      if depth * depth * bl2 < bo * bo * l2 then
+        bo, bl2, bnx, bny = depth * push, l2, nx, ny
+      end
+    end
+    ax, ay = bx, by
+  end
+  return bo, bl2, bnx, bny
+end
+
+-- The shared body of the four polygon collision functions: false, or the least penetration as
+-- leastPenetration returns it. both: the axes of both polygons, else those of p1 only.
 local function collide(fname, p1, p2, both)
   local n1 = checkPoints(p1, fname, "points1", 4)
   local n2 = checkPoints(p2, fname, "points2", 4)
   if n1 < 6 or n2 < 6 then return false end
-  local a1, xmin, xmax, ymin, ymax = shoelace(p1, n1)
-  if areaSignOf(p1, n1, a1, xmin, xmax, ymin, ymax) == 0 then return false end
-  local a2, xmin2, xmax2, ymin2, ymax2 = shoelace(p2, n2)
-  if areaSignOf(p2, n2, a2, xmin2, xmax2, ymin2, ymax2) == 0 then return false end
-  -- the box of both polygons, for the projection error bound
-  if xmin2 < xmin then xmin = xmin2 end
-  if xmax2 > xmax then xmax = xmax2 end
-  if ymin2 < ymin then ymin = ymin2 end
-  if ymax2 > ymax then ymax = ymax2 end
-  local w, h = xmax - xmin + 0.0, ymax - ymin + 0.0
-  local o, l2, nx, ny = leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 1, 0, 0)
-  if o and both then
-    o, l2, nx, ny = leastPenetration(p2, n2, p1, n1, p2, n2, w, h, o, l2, nx, ny)
+  local a1, sx1, sd1 = shoelace(p1, n1)
+  local turn1 = areaSignOf(p1, n1, a1, sx1, sd1)
+  if turn1 == 0 then return false end
+  local a2, sx2, sd2 = shoelace(p2, n2)
+  local turn2 = areaSignOf(p2, n2, a2, sx2, sd2)
+  if turn2 == 0 then return false end
+  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
+  -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
+  -- between the two first vertices covers a vertex of one polygon seen from one of the other.
+  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs(p2[1] - p1[1] + 0.0))
+  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs(p2[2] - p1[2] + 0.0))
+  if not both then
+    return leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 1, 0, 0)
   end
+  local o, l2, nx, ny = deepestReach(p1, n1, turn1, p2, n2, 1, w, h, huge, 1, 0, 0)
   if not o then return false end
-  return o, l2, nx, ny
+  return deepestReach(p2, n2, turn2, p1, n1, -1, w, h, o, l2, nx, ny)
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -602,12 +698,13 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
   checkNumber(radius, fname, "radius")
   if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
   if n < 6 then return false end
-  local a2, xmin, xmax, ymin, ymax = shoelace(points, n)
-  if areaSignOf(points, n, a2, xmin, xmax, ymin, ymax) == 0 then return false end
-  -- every |v - a| and |c - a| in the projections below is at most w + h + d + radius
-  local dx = cx - xmin > xmax - cx and cx - xmin or xmax - cx
-  local dy = cy - ymin > ymax - cy and cy - ymin or ymax - cy
-  local tol = 8 * EPS * (xmax - xmin + ymax - ymin + abs(dx) + abs(dy) + radius)
+  local a2, sx, sd = shoelace(points, n)
+  if areaSignOf(points, n, a2, sx, sd) == 0 then return false end
+  -- |v - a| over the polygon is at most 2 (sqrt(sx) + sqrt(m sd)); |c - a| at most that plus
+  -- |c - v1|; the projections' rounding error is a few eps times these sizes
+  local m = n / 2
+  local size = 2 * (sqrt(sx) + sqrt(m * sd))
+  local tol = 8 * EPS * (2 * size + abs(cx - points[1]) + abs(cy - points[2]) + radius)
   local best, bux, buy = huge, 0.0, 0.0
   local nearX, nearY, nearD = 0.0, 0.0, huge
   local ax, ay = points[n - 1], points[n]
