@@ -444,6 +444,10 @@ end
 -- @return min, max of (px - x) * nx + (py - y) * ny over the vertices; nil for no points.
 function polygon.projectPolygon(points, x, y, nx, ny)
   local n = checkPoints(points, "projectPolygon")
+  checkNumber(x, "projectPolygon", "x")
+  checkNumber(y, "projectPolygon", "y")
+  checkNumber(nx, "projectPolygon", "nx")
+  checkNumber(ny, "projectPolygon", "ny")
   if n < 2 then return nil end
   local lo = (points[1] - x + 0.0) * nx + (points[2] - y + 0.0) * ny
   local hi = lo
@@ -679,6 +683,15 @@ end
 --- The range of a circle projected on the axis (nx, ny) (unit length), relative to (x, y).
 -- @return min, max
 function polygon.projectCircle(cx, cy, radius, x, y, nx, ny)
+  local fname = "projectCircle"
+  checkNumber(cx, fname, "cx")
+  checkNumber(cy, fname, "cy")
+  checkNumber(radius, fname, "radius")
+  checkNumber(x, fname, "x")
+  checkNumber(y, fname, "y")
+  checkNumber(nx, fname, "nx")
+  checkNumber(ny, fname, "ny")
+  if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
   local s = (cx - x + 0.0) * nx + (cy - y + 0.0) * ny
   return s - radius, s + radius
 end
