@@ -1,0 +1,232 @@
+-- bench/baseline.lua: the tutorial's formulas, transcribed as plainly as possible, so that the
+-- benchmark can show what polygon.lua's accuracy and speed cost or save, function by function.
+--
+-- This is NOT a library to use. It keeps the tutorial's arithmetic and its defects on purpose:
+--   * polygonWindingOrder answers "cw" for a zero sum and rounds freely (no exact sign);
+--   * polygonType never checks the corner at the last vertex and trusts rounded cross products;
+--   * the separating-axis functions call projectPolygon once per axis for both polygons, project
+--     relative to the mixed point (x2, y1) and never skip a zero-length edge;
+--   * overlap is min(max1, max2) - max(min1, min2), which is not the depth to push out when one
+--     shape holds the other, and the displacement is never flipped towards the second shape;
+--   * polygonsCollideV runs polygonCollidesWithV twice, the second pass with the roles swapped;
+--   * the circle test picks the "nearest" vertex by the smallest dot product with the centre.
+-- polygonCentroid is the textbook formula in absolute coordinates; polygonAreaAccurate is the
+-- plain shoelace (the tutorial has neither).
+local sqrt, abs, min, max = math.sqrt, math.abs, math.min, math.max
+
+local baseline = {}
+
+-- Twice the signed area, summed as (x[i+1] + x[i]) * (y[i+1] - y[i]) with the wrap-around term
+-- (last vertex to first) first, as the tutorial writes it.
+local function trapezoidSum(points)
+  local n = #points
+  local total = (points[1] + points[n - 1]) * (points[2] - points[n])
+  for i = 1, n - 3, 2 do
+    total = total + (points[i + 2] + points[i]) * (points[i + 3] - points[i + 1])
+  end
+  return total
+end
+
+function baseline.polygonWindingOrder(points)
+  if #points < 6 then return nil end
+  if trapezoidSum(points) < 0 then return "ccw" end
+  return "cw"
+end
+
+function baseline.polygonArea(points)
+  if #points < 6 then return nil end
+  return abs(trapezoidSum(points)) * 0.5
+end
+
+-- The tutorial has no accurate area: the plain shoelace stands in for it.
+baseline.polygonAreaAccurate = baseline.polygonArea
+
+function baseline.polygonType(points)
+  local n = #points
+  if n < 6 then return nil end
+  -- corner at the first vertex: edges to the last and to the second vertex
+  local ax, ay = points[n - 1] - points[1], points[n] - points[2]
+  local bx, by = points[3] - points[1], points[4] - points[2]
+  local firstTurn = ax * by - ay * bx
+  for i = 1, n - 5, 2 do
+    ax, ay = -bx, -by
+    bx, by = points[i + 4] - points[i + 2], points[i + 5] - points[i + 3]
+    if firstTurn * (ax * by - ay * bx) < 0 then return "concave" end
+  end
+  return "convex"
+end
+
+function baseline.polygonCenter(points)
+  local sx, sy = points[1], points[2]
+  for i = 3, #points, 2 do
+    sx = sx + points[i]
+    sy = sy + points[i + 1]
+  end
+  local count = #points / 2
+  return sx / count, sy / count
+end
+
+-- Textbook area centroid: sum of (p[i] + p[i+1]) * cross(p[i], p[i+1]) over 6 * area, all in
+-- absolute coordinates. The one guard (zero area) only keeps the benchmark's checksum finite.
+function baseline.polygonCentroid(points)
+  local n = #points
+  if n < 6 then return nil end
+  local twiceArea, sx, sy = 0, 0, 0
+  local px, py = points[n - 1], points[n]
+  for i = 1, n - 1, 2 do
+    local qx, qy = points[i], points[i + 1]
+    local cross = px * qy - qx * py
+    twiceArea = twiceArea + cross
+    sx = sx + (px + qx) * cross
+    sy = sy + (py + qy) * cross
+    px, py = qx, qy
+  end
+  if twiceArea == 0 then return nil end
+  return sx / (3 * twiceArea), sy / (3 * twiceArea)
+end
+
+-- Franklin's crossing test as in the tutorial's Polygon:contains, as a plain function.
+function baseline.polygonContains(points, x, y)
+  local n = #points
+  if n < 6 then return false end
+  local x1, y1, x2, y2 = points[n - 1], points[n], points[1], points[2]
+  local inside = false
+  for i = 1, n - 1, 2 do
+    if ((y1 >= y) ~= (y2 >= y)) and (x <= (x2 - x1) * (y - y1) / (y2 - y1) + x1) then
+      inside = not inside
+    end
+    x1, y1 = x2, y2
+    x2, y2 = points[i + 2], points[i + 3]
+  end
+  return inside
+end
+
+function baseline.projectPolygon(points, x, y, nx, ny)
+  local lo = (points[1] - x) * nx + (points[2] - y) * ny
+  local hi = lo
+  for i = 3, #points, 2 do
+    local s = (points[i] - x) * nx + (points[i + 1] - y) * ny
+    if s < lo then lo = s end
+    if s > hi then hi = s end
+  end
+  return lo, hi
+end
+local projectPolygon = baseline.projectPolygon
+
+function baseline.polygonCollidesWith(points1, points2)
+  local x1, y1 = points1[#points1 - 1], points1[#points1]
+  local x2, y2 = points1[1], points1[2]
+  for i = 1, #points1, 2 do
+    local nx, ny = y2 - y1, x1 - x2
+    local min1, max1 = projectPolygon(points1, x2, y1, nx, ny)
+    local min2, max2 = projectPolygon(points2, x2, y1, nx, ny)
+    if max1 <= min2 or min1 >= max2 then return false end
+    x1, y1 = x2, y2
+    x2, y2 = points1[i + 2], points1[i + 3]
+  end
+  return true
+end
+
+function baseline.polygonsCollide(points1, points2)
+  return baseline.polygonCollidesWith(points1, points2)
+    and baseline.polygonCollidesWith(points2, points1)
+end
+
+function baseline.polygonCollidesWithV(points1, points2)
+  local x1, y1 = points1[#points1 - 1], points1[#points1]
+  local x2, y2 = points1[1], points1[2]
+  local best, bestX, bestY
+  for i = 1, #points1, 2 do
+    local nx, ny = y2 - y1, x1 - x2
+    local min1, max1 = projectPolygon(points1, x2, y1, nx, ny)
+    local min2, max2 = projectPolygon(points2, x2, y1, nx, ny)
+    if max1 <= min2 or min1 >= max2 then return false end
+    local lengthSq = nx * nx + ny * ny
+    local scaled = (min(max1, max2) - max(min1, min2)) / lengthSq
+    local length = sqrt(lengthSq)
+    if not best or scaled * length < best then
+      best = scaled * length
+      bestX, bestY = nx * scaled, ny * scaled
+    end
+    x1, y1 = x2, y2
+    x2, y2 = points1[i + 2], points1[i + 3]
+  end
+  return best, bestX, bestY
+end
+
+function baseline.polygonsCollideV(points1, points2)
+  local o1, ax, ay = baseline.polygonCollidesWithV(points1, points2)
+  local o2, bx, by = baseline.polygonCollidesWithV(points2, points1)
+  if o1 and o2 then
+    if o1 < o2 then return o1, ax, ay end
+    return o2, bx, by
+  end
+  return false
+end
+
+function baseline.projectCircle(cx, cy, radius, x, y, nx, ny)
+  local s = (cx - x) * nx + (cy - y) * ny
+  return s - radius, s + radius
+end
+local projectCircle = baseline.projectCircle
+
+function baseline.polygonCircleCollideV(points, cx, cy, radius)
+  local x1, y1 = points[#points - 1], points[#points]
+  local x2, y2 = points[1], points[2]
+  local best, bestX, bestY
+  for i = 1, #points, 2 do
+    local nx, ny = y2 - y1, x1 - x2
+    local length = sqrt(nx * nx + ny * ny)
+    nx, ny = nx / length, ny / length
+    local min1, max1 = projectPolygon(points, x2, y1, nx, ny)
+    local min2, max2 = projectCircle(cx, cy, radius, x2, y1, nx, ny)
+    if max1 <= min2 or min1 >= max2 then return false end
+    local overlap = min(max1, max2) - max(min1, min2)
+    if not best or overlap < best then
+      best, bestX, bestY = overlap, nx * overlap, ny * overlap
+    end
+    x1, y1 = x2, y2
+    x2, y2 = points[i + 2], points[i + 3]
+  end
+  -- "nearest" vertex: the tutorial compares dot products with the centre, not distances
+  local index, nearest = 1, cx * points[1] + cy * points[2]
+  for i = 3, #points, 2 do
+    local d = cx * points[i] + cy * points[i + 1]
+    if d < nearest then index, nearest = i, d end
+  end
+  local px, py = points[index], points[index + 1]
+  local nx, ny = cx - px, cy - py
+  local length = sqrt(nx * nx + ny * ny)
+  nx, ny = nx / length, ny / length
+  local min1, max1 = projectPolygon(points, px, py, nx, ny)
+  local min2, max2 = projectCircle(cx, cy, radius, px, py, nx, ny)
+  if max1 <= min2 or min1 >= max2 then return false end
+  local overlap = min(max1, max2) - max(min1, min2)
+  if overlap < best then
+    best, bestX, bestY = overlap, nx * overlap, ny * overlap
+  end
+  return best, bestX, bestY
+end
+
+-- The tutorial's class, reduced to what the benchmark times.
+local Polygon = {}
+Polygon.__index = Polygon
+function Polygon.new(points) return setmetatable({ points = points }, Polygon) end
+-- As in the tutorial, the method reads self.points afresh at every step.
+function Polygon:contains(x, y)
+  if #self.points < 6 then return false end
+  local x1, y1 = self.points[#self.points - 1], self.points[#self.points]
+  local x2, y2 = self.points[1], self.points[2]
+  local inside = false
+  for i = 1, #self.points - 1, 2 do
+    if ((y1 >= y) ~= (y2 >= y)) and (x <= (x2 - x1) * (y - y1) / (y2 - y1) + x1) then
+      inside = not inside
+    end
+    x1, y1 = x2, y2
+    x2, y2 = self.points[i + 2], self.points[i + 3]
+  end
+  return inside
+end
+baseline.Polygon = Polygon
+
+return baseline
