@@ -1,12 +1,12 @@
 #!/bin/sh
 # bench/bench.sh: polygon.lua against the tutorial's formulas, speed beside error.
 #
-#   sh bench/bench.sh                 full run (about a minute on 2 cores): prints the tables and
+#   bash bench/bench.sh               full run (about a minute on 2 cores): prints the tables and
 #                                     writes bench/RESULTS.md, bench/data/<lua>.dat and, when
 #                                     gnuplot is installed, bench/speed-vs-error.png
-#   BENCH_QUICK=1 sh bench/bench.sh   a few seconds, small inputs, writes only to a temporary
+#   BENCH_QUICK=1 bash bench/bench.sh a few seconds, small inputs, writes only to a temporary
 #                                     directory (for CI: the benchmark must never silently break)
-#   BENCH_LUAS="luajit" sh bench/bench.sh   choose the interpreters (default: luajit lua5.4 lua5.1)
+#   BENCH_LUAS="luajit" bash bench/bench.sh   choose the interpreters (default: luajit lua5.4 lua5.1)
 #
 # Exits non-zero when a run fails: an error in a row, a function missing from polygon.lua, a NaN
 # checksum, no interpreter found, or gnuplot failing on bench/plot.gp.
@@ -24,6 +24,12 @@ else
 fi
 sections=$(mktemp -d "${TMPDIR:-/tmp}/polygon-bench-sections.XXXXXX") || exit 2
 mkdir -p "$out/data"
+
+# which polygon.lua was measured (BENCH_REV overrides, e.g. when run from an exported tree)
+rev=${BENCH_REV:-$(git rev-parse --short HEAD 2>/dev/null || echo "an unknown revision")}
+if git rev-parse --git-dir >/dev/null 2>&1 && ! git diff --quiet HEAD -- polygon.lua 2>/dev/null; then
+  rev="$rev plus uncommitted changes to polygon.lua"
+fi
 
 status=0
 ran=
@@ -48,12 +54,14 @@ fi
 {
   echo "# Benchmark: polygon.lua against the tutorial's formulas"
   echo
-  echo "Made by \`make bench\` (\`sh bench/bench.sh\`) on$ran. Each row times polygon.lua and"
-  echo "bench/baseline.lua, a plain transcription of the tutorial's formulas with their defects, in"
-  echo "the same process on the same prepared inputs, and counts their errors against exact answers"
-  echo "(bench/exact.lua, floating-point expansions). The ratio is polygon.lua's time over the"
-  echo "baseline's: below 1 is faster. Single-row ratios on LuaJIT move by about 5% from run to run"
-  echo "(see \`--aa\` in bench/run.lua for the A/A test that measures this)."
+  echo "Made by \`make bench\` (\`bash bench/bench.sh\`) on$ran, polygon.lua of $rev."
+  echo "Each row times polygon.lua and bench/baseline.lua, a plain transcription of the tutorial's"
+  echo "formulas with their defects, in the same process on the same prepared inputs, and counts"
+  echo "their errors against exact answers (bench/exact.lua, floating-point expansions). The ratio"
+  echo "is polygon.lua's time over the baseline's: below 1 is faster. On LuaJIT a ratio moves from"
+  echo "run to run: about 5% for most rows in an A/A test (\`luajit bench/run.lua --aa\`, the"
+  echo "baseline against a copy of itself), more for branchy code (polygonsCollideV on the mixed"
+  echo "pairs gave 0.32 to 0.41 over three runs of the same polygon.lua). PUC Lua varies by 2%."
   echo
   echo "![time per call against error](speed-vs-error.png)"
   echo
