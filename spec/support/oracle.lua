@@ -1,0 +1,392 @@
+--- Exact answers for the specs: what real arithmetic on the given doubles says.
+--
+-- Built on spec/support/exact.lua (big integers times powers of two). Slow on purpose: it shares
+-- no code and no method with polygon.lua, so agreement between the two means something.
+-- Points are flat arrays {x1, y1, x2, y2, ...} in screen coordinates (y down), as in the library.
+
+local exact = require "exact"
+
+local new, add, sub, mul, sign = exact.new, exact.add, exact.sub, exact.mul, exact.sign
+
+local oracle = {}
+
+-- Exact vertices of a flat array: xs[i], ys[i].
+local function vertices(points)
+  local xs, ys = {}, {}
+  for i = 1, #points / 2 do
+    xs[i], ys[i] = new(points[2 * i - 1]), new(points[2 * i])
+  end
+  return xs, ys
+end
+oracle.vertices = vertices
+
+-- (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) for exact values.
+local function cross(ax, ay, bx, by, cx, cy)
+  return sub(mul(sub(bx, ax), sub(cy, ay)), mul(sub(by, ay), sub(cx, ax)))
+end
+
+-- (bx - ax) * (cx - bx) + (by - ay) * (cy - by): > 0 when a -> b -> c goes on forward.
+local function forward(ax, ay, bx, by, cx, cy)
+  return add(mul(sub(bx, ax), sub(cx, bx)), mul(sub(by, ay), sub(cy, by)))
+end
+
+--- Sign of the cross product (b - a) x (c - a) of three points given as numbers.
+-- On screen (y down) a positive sign means a -> b -> c turns clockwise.
+function oracle.orient(ax, ay, bx, by, cx, cy)
+  return sign(cross(new(ax), new(ay), new(bx), new(by), new(cx), new(cy)))
+end
+
+--- The exact shoelace sum  sum_i x_i * y_(i+1) - x_(i+1) * y_i  (twice the signed area).
+function oracle.shoelace(points)
+  local n = #points / 2
+  local as, bs, signs = {}, {}, {}
+  for i = 1, n do
+    local j = i % n + 1
+    as[2 * i - 1], bs[2 * i - 1], signs[2 * i - 1] = points[2 * i - 1], points[2 * j], 1
+    as[2 * i], bs[2 * i], signs[2 * i] = points[2 * j - 1], points[2 * i], -1
+  end
+  return exact.sumOfProducts(as, bs, signs)
+end
+
+--- "cw" for a positive shoelace sum, "ccw" for a negative one, nil for zero or < 3 points.
+function oracle.winding(points)
+  if #points < 6 then
+    return nil
+  end
+  local s = sign(oracle.shoelace(points))
+  if s > 0 then
+    return "cw"
+  elseif s < 0 then
+    return "ccw"
+  end
+  return nil
+end
+
+--- The exact area (an exact value: half the absolute shoelace sum), nil for < 3 points.
+function oracle.area(points)
+  if #points < 6 then
+    return nil
+  end
+  return mul(exact.abs(oracle.shoelace(points)), exact.pow2(-1))
+end
+
+--- The crossing rule with the tutorial's half-open boundary, decided exactly: edge (x1, y1)-(x2, y2)
+-- counts when (y1 >= y) ~= (y2 >= y) and x <= the edge's x at height y. That last test is
+-- x - x1 <= (y - y1) * (x2 - x1) / (y2 - y1); multiplied out with d = (x - x1) * (y2 - y1) -
+-- (y - y1) * (x2 - x1) it reads d <= 0 when y2 > y1 and d >= 0 when y2 < y1 (no division).
+function oracle.contains(points, x, y)
+  local n = #points / 2
+  if n < 3 then
+    return false
+  end
+  local ex, ey = new(x), new(y)
+  local inside = false
+  for i = 1, n do
+    local j = i % n + 1
+    local x1, y1 = points[2 * i - 1], points[2 * i]
+    local x2, y2 = points[2 * j - 1], points[2 * j]
+    if (y1 >= y) ~= (y2 >= y) then
+      local ex1, ey1 = new(x1), new(y1)
+      local d = sign(sub(mul(sub(ex, ex1), sub(new(y2), ey1)), mul(sub(ey, ey1), sub(new(x2), ex1))))
+      if (y2 > y1 and d <= 0) or (y2 < y1 and d >= 0) then
+        inside = not inside
+      end
+    end
+  end
+  return inside
+end
+
+--- Is (x, y) exactly on the closed segment (x1, y1)-(x2, y2)?
+function oracle.onSegment(x1, y1, x2, y2, x, y)
+  local inBox = math.min(x1, x2) <= x and x <= math.max(x1, x2)
+    and math.min(y1, y2) <= y and y <= math.max(y1, y2)
+  return inBox and oracle.orient(x1, y1, x2, y2, x, y) == 0
+end
+
+--- Is (x, y) exactly on the boundary of the polygon?
+function oracle.onBoundary(points, x, y)
+  local n = #points / 2
+  for i = 1, n do
+    local j = i % n + 1
+    if oracle.onSegment(points[2 * i - 1], points[2 * i], points[2 * j - 1], points[2 * j], x, y) then
+      return true
+    end
+  end
+  return false
+end
+
+-- Vertices with consecutive repeats removed (cyclically); returns exact xs, ys.
+local function distinctVertices(points)
+  local n = #points / 2
+  local xs, ys = {}, {}
+  for i = 1, n do
+    local j = i % n + 1
+    if points[2 * i - 1] ~= points[2 * j - 1] or points[2 * i] ~= points[2 * j] then
+      xs[#xs + 1], ys[#ys + 1] = new(points[2 * i - 1]), new(points[2 * i])
+    end
+  end
+  return xs, ys
+end
+
+--- Are all points on one line (also: all equal, or fewer than 3 points)?
+function oracle.allCollinear(points)
+  local xs, ys = distinctVertices(points)
+  if #xs < 2 then
+    return true
+  end
+  for k = 3, #xs do
+    if sign(cross(xs[1], ys[1], xs[2], ys[2], xs[k], ys[k])) ~= 0 then
+      return false
+    end
+  end
+  -- Non-consecutive points may still differ from the first two, but every point lies on the
+  -- line through xs[1] and xs[2] (which differ), so all lie on one line.
+  return true
+end
+
+-- 0 for directions in [0, pi) (dy > 0, or dy == 0 and dx > 0), 1 for [pi, 2 pi). Angles are
+-- measured from +x towards +y; only their order matters here.
+local function half(dx, dy)
+  local sy = sign(dy)
+  if sy > 0 or (sy == 0 and sign(dx) > 0) then
+    return 0
+  end
+  return 1
+end
+
+-- Is the angle of direction a strictly smaller than that of direction b (both in [0, 2 pi))?
+local function angleLess(ax, ay, bx, by)
+  local ha, hb = half(ax, ay), half(bx, by)
+  if ha ~= hb then
+    return ha < hb
+  end
+  return sign(sub(mul(ax, by), mul(ay, bx))) > 0
+end
+
+--- "convex", "concave" or nil, by the contract's rules: nil for < 3 points or all points on one
+-- line; repeated consecutive vertices are ignored; a zero turn that goes on forward is fine, one
+-- that doubles back (a spike) is concave; all turns must have one sign and the edge direction
+-- must go round exactly once (a pentagram, whose turns all agree, goes round twice).
+function oracle.polygonType(points)
+  if #points < 6 or oracle.allCollinear(points) then
+    return nil
+  end
+  local xs, ys = distinctVertices(points)
+  local n = #xs
+  local turn = 0
+  local dxs, dys = {}, {}
+  for i = 1, n do
+    local j = i % n + 1
+    dxs[i], dys[i] = sub(xs[j], xs[i]), sub(ys[j], ys[i])
+  end
+  for i = 1, n do
+    -- the turn at vertex i + 1, between edge i and edge i + 1
+    local j = i % n + 1
+    local k = j % n + 1
+    local s = sign(cross(xs[i], ys[i], xs[j], ys[j], xs[k], ys[k]))
+    if s == 0 then
+      if sign(forward(xs[i], ys[i], xs[j], ys[j], xs[k], ys[k])) <= 0 then
+        return "concave" -- doubles back
+      end
+    elseif turn == 0 then
+      turn = s
+    elseif s ~= turn then
+      return "concave"
+    end
+  end
+  -- All turns agree with `turn` (angles grow for turn > 0). Count how often the direction wraps
+  -- past angle 0: once for a convex polygon.
+  local wraps = 0
+  for i = 1, n do
+    local j = i % n + 1
+    local wrapped
+    if turn > 0 then
+      wrapped = angleLess(dxs[j], dys[j], dxs[i], dys[i])
+    else
+      wrapped = angleLess(dxs[i], dys[i], dxs[j], dys[j])
+    end
+    if wrapped then
+      wraps = wraps + 1
+    end
+  end
+  return wraps == 1 and "convex" or "concave"
+end
+
+---------------------------------------------------------------------------------------------------
+-- Separating axes, exactly. For convex polygons only, as the library's collision functions.
+
+-- Exact min and max of x * nx + y * ny over the vertices.
+local function projectRange(xs, ys, nx, ny)
+  local lo, hi
+  for i = 1, #xs do
+    local s = add(mul(xs[i], nx), mul(ys[i], ny))
+    if not lo or exact.compare(s, lo) < 0 then
+      lo = s
+    end
+    if not hi or exact.compare(s, hi) > 0 then
+      hi = s
+    end
+  end
+  return lo, hi
+end
+
+-- The axes (edge normals, zero-length edges skipped) of a polygon's exact vertices.
+local function axes(xs, ys)
+  local list = {}
+  local n = #xs
+  for i = 1, n do
+    local j = i % n + 1
+    local nx, ny = sub(ys[i], ys[j]), sub(xs[j], xs[i])
+    if sign(nx) ~= 0 or sign(ny) ~= 0 then
+      list[#list + 1] = { nx, ny }
+    end
+  end
+  return list
+end
+
+-- Does a polygon collide at all in the contract's sense (>= 3 points, nonzero area)?
+local function solid(points)
+  return #points >= 6 and sign(oracle.shoelace(points)) ~= 0
+end
+
+--- For each axis of p1 (and of p2 when both is true), the exact projected overlap
+-- min(max1 - min2, max2 - min1) (not yet divided by |n|) together with the axis.
+-- Returns a list of { overlap = exact, nx = exact, ny = exact, side = "+"/"-" } where side "+" means
+-- max1 - min2 < max2 - min1 (the second shape leaves along +n).
+function oracle.axisOverlaps(p1, p2, both)
+  local x1, y1 = vertices(p1)
+  local x2, y2 = vertices(p2)
+  local list = {}
+  local function scan(xs, ys)
+    for _, axis in ipairs(axes(xs, ys)) do
+      local nx, ny = axis[1], axis[2]
+      local min1, max1 = projectRange(x1, y1, nx, ny)
+      local min2, max2 = projectRange(x2, y2, nx, ny)
+      local a, b = sub(max1, min2), sub(max2, min1)
+      local plus = exact.compare(a, b) < 0
+      list[#list + 1] = { overlap = plus and a or b, nx = nx, ny = ny, side = plus and "+" or "-" }
+    end
+  end
+  scan(x1, y1)
+  if both then
+    scan(x2, y2)
+  end
+  return list
+end
+
+--- Exact SAT: true when no tested axis separates or makes the polygons touch.
+-- both = false tests the axes of p1 only (polygonCollidesWith), true those of both (polygonsCollide).
+function oracle.collides(p1, p2, both)
+  if not solid(p1) or not solid(p2) then
+    return false
+  end
+  for _, o in ipairs(oracle.axisOverlaps(p1, p2, both)) do
+    if sign(o.overlap) <= 0 then
+      return false
+    end
+  end
+  return true
+end
+
+--- The penetration depth min over axes of overlap / |n|, as a double (each term is the exact
+-- overlap and |n|^2 rounded once, then divided: a few ulps). Negative when an axis separates.
+-- Returns depth and the axis record that attains it.
+function oracle.depth(p1, p2, both)
+  local best, bestAxis
+  for _, o in ipairs(oracle.axisOverlaps(p1, p2, both)) do
+    local n2 = exact.tonumber(add(mul(o.nx, o.nx), mul(o.ny, o.ny)))
+    local d = exact.tonumber(o.overlap) / math.sqrt(n2)
+    if not best or d < best then
+      best, bestAxis = d, o
+    end
+  end
+  return best, bestAxis
+end
+
+---------------------------------------------------------------------------------------------------
+-- Floating results, from exact sums rounded once or twice (for tolerance checks).
+
+--- The mean of the vertices: x1 + round(sum (x_i - x1)) / m, the sum exact. Within an ulp or so.
+function oracle.center(points)
+  local m = #points / 2
+  if m < 3 then
+    return nil
+  end
+  local x0, y0 = points[1] + 0.0, points[2] + 0.0
+  local ex0, ey0 = new(x0), new(y0)
+  local sx, sy = {}, {}
+  for i = 1, m do
+    sx[i] = sub(new(points[2 * i - 1]), ex0)
+    sy[i] = sub(new(points[2 * i]), ey0)
+  end
+  return x0 + exact.tonumber(exact.sum(sx)) / m, y0 + exact.tonumber(exact.sum(sy)) / m
+end
+
+--- The area centroid, nil for zero area. Exact sums relative to vertex 1 (X = x - x1):
+-- c_i = X_i Y_j - X_j Y_i, cx = x1 + sum (X_i + X_j) c_i / (3 sum c_i), rounded at the end only.
+function oracle.centroid(points)
+  local m = #points / 2
+  if m < 3 then
+    return nil
+  end
+  local xs, ys = vertices(points)
+  local ex0, ey0 = xs[1], ys[1]
+  for i = 1, m do
+    xs[i], ys[i] = sub(xs[i], ex0), sub(ys[i], ey0)
+  end
+  local a2, sx, sy = {}, {}, {}
+  for i = 1, m do
+    local j = i % m + 1
+    local c = sub(mul(xs[i], ys[j]), mul(xs[j], ys[i]))
+    a2[i] = c
+    sx[i] = mul(add(xs[i], xs[j]), c)
+    sy[i] = mul(add(ys[i], ys[j]), c)
+  end
+  local area2 = exact.sum(a2)
+  if sign(area2) == 0 then
+    return nil
+  end
+  local d = 3 * exact.tonumber(area2)
+  return points[1] + exact.tonumber(exact.sum(sx)) / d, points[2] + exact.tonumber(exact.sum(sy)) / d
+end
+
+--- The contract's circle depth: over the edge normals n of the polygon and the axis from the vertex
+-- nearest to the centre (by exact squared distance; skipped when the centre is on it),
+-- min(max1 - min2, max2 - min1) with the circle's range s - r .. s + r, s = c.n / |n|.
+-- The differences of projections are exact, then rounded once and divided by |n|: a few ulps.
+-- Returns the depth and the unit direction (ux, uy) in which the circle leaves along that axis.
+function oracle.circleDepth(points, cx, cy, r)
+  local xs, ys = vertices(points)
+  local ecx, ecy = new(cx), new(cy)
+  local axisList = axes(xs, ys)
+  local nearest, nearestD
+  for i = 1, #xs do
+    local dx, dy = sub(ecx, xs[i]), sub(ecy, ys[i])
+    local d = add(mul(dx, dx), mul(dy, dy))
+    if not nearestD or exact.compare(d, nearestD) < 0 then
+      nearest, nearestD = i, d
+    end
+  end
+  if sign(nearestD) ~= 0 then
+    axisList[#axisList + 1] = { sub(ecx, xs[nearest]), sub(ecy, ys[nearest]) }
+  end
+  local best, bux, buy
+  for _, axis in ipairs(axisList) do
+    local nx, ny = axis[1], axis[2]
+    local min1, max1 = projectRange(xs, ys, nx, ny)
+    local s = add(mul(ecx, nx), mul(ecy, ny))
+    local len = math.sqrt(exact.tonumber(add(mul(nx, nx), mul(ny, ny))))
+    local up = exact.tonumber(sub(max1, s)) / len + r -- the circle leaves along +n
+    local down = exact.tonumber(sub(s, min1)) / len + r -- along -n
+    local fx, fy = exact.tonumber(nx) / len, exact.tonumber(ny) / len
+    if not best or up < best then
+      best, bux, buy = up, fx, fy
+    end
+    if down < best then
+      best, bux, buy = down, -fx, -fy
+    end
+  end
+  return best, bux, buy
+end
+
+return oracle
