@@ -1,0 +1,110 @@
+-- Hard cases, family 6: polygons of 10^5 vertices, for the area.
+--
+-- polygonAreaAccurate must be within 1 ulp of the exact area of the given doubles for any number
+-- of vertices; polygonArea sums 10^5 rounded terms, so its error grows with n: measured here at
+-- 83 ulps (around the origin) and 61 ulps (around (1e6, -1e6)), the same on every interpreter,
+-- and asserted below 2^-42 relative (about 1000 to 2000 ulps). The tutorial's sum, not taken
+-- relative to a vertex, is off by 215552 ulps (2.5e-11 relative, about 2^-35) at (1e6, -1e6).
+
+local polygon = require "polygon"
+local oracle = require "oracle"
+local exact = require "exact"
+local prng = require "prng"
+
+local N = 100000
+
+-- A wobbly circle of radius about 100 around (ox, oy), counter-clockwise in math terms.
+local function wobbly(ox, oy, seed)
+  local r = prng.new(seed)
+  local points = {}
+  for k = 1, N do
+    local angle = 2 * math.pi * (k - 1) / N
+    local radius = 100 * (1 + 0.01 * r:range(-1, 1))
+    points[2 * k - 1] = ox + radius * math.cos(angle)
+    points[2 * k] = oy + radius * math.sin(angle)
+  end
+  return points
+end
+
+-- A sliver: out along y = 0.3 x + a wobble of 1e-9, back along y = 0.3 x (both rounded), so the
+-- area is about 1e-7 while the products x y reach 3e11: the float sum cancels almost everything.
+local function sliver(ox, seed)
+  local r = prng.new(seed)
+  local points = {}
+  local half = N / 2
+  for k = 1, half do
+    local x = ox + k * 0.001
+    points[2 * k - 1], points[2 * k] = x, 0.3 * x + 1e-9 * r:range(0, 1)
+  end
+  for k = 1, half do
+    local x = ox + (half - k + 1) * 0.001
+    points[N + 2 * k - 1], points[N + 2 * k] = x, 0.3 * x
+  end
+  return points
+end
+
+local function relativeError(value, exactValue)
+  return math.abs(exact.tonumber(exact.sub(exact.new(value), exactValue))) / exact.tonumber(exactValue)
+end
+
+describe("a polygon of 10^5 vertices", function()
+  for _, case in ipairs({ { 0, 0, 11 }, { 1e6, -1e6, 14 } }) do
+    local ox, oy = case[1], case[2]
+    describe(("(a wobbly circle around (%g, %g))"):format(ox, oy), function()
+      local points = wobbly(ox, oy, case[3])
+      local twice = oracle.shoelace(points)
+      local area = exact.mul(exact.abs(twice), exact.pow2(-1))
+
+      it("has polygonAreaAccurate within 1 ulp of the exact area", function()
+        local a = polygon.polygonAreaAccurate(points)
+        assert.is_true(exact.withinUlps(a, area, 1),
+          ("got %.17g, exact %s"):format(a, exact.tostring(area)))
+      end)
+
+      it("has polygonArea within 2^-42 relative of the exact area", function()
+        local a = polygon.polygonArea(points)
+        local err = relativeError(a, area)
+        assert.is_true(err <= 2 ^ -42,
+          ("got %.17g, exact %s, relative error %g"):format(a, exact.tostring(area), err))
+      end)
+
+      if ox ~= 0 then
+        it("has its area wrong by far more when the sum is not taken relative to a vertex", function()
+          -- the tutorial's sum of (x_(k+1) + x_k)(y_(k+1) - y_k): far from the origin its terms
+          -- are much larger than the area's share of each, and so is their rounding
+          local n = #points
+          local sum = (points[1] + points[n - 1]) * (points[2] - points[n])
+          for i = 1, n - 3, 2 do
+            sum = sum + (points[i + 2] + points[i]) * (points[i + 3] - points[i + 1])
+          end
+          local naive = relativeError(math.abs(sum) * 0.5, area)
+          assert.is_true(naive > 2 ^ -42, "the naive sum should fail the bound here: " .. naive)
+        end)
+      end
+
+      it("has the exact winding", function()
+        -- math-ccw with y up is clockwise on screen: a positive shoelace sum
+        assert.are.equal(1, exact.sign(twice))
+        assert.are.equal("cw", polygon.polygonWindingOrder(points))
+      end)
+    end)
+  end
+
+  describe("(a sliver whose float shoelace sum cancels, at x = 1e6)", function()
+    local points = sliver(1e6, 21)
+    local twice = oracle.shoelace(points)
+    local area = exact.mul(exact.abs(twice), exact.pow2(-1))
+
+    it("has polygonAreaAccurate within 1 ulp of the exact area", function()
+      local a = polygon.polygonAreaAccurate(points)
+      assert.is_true(exact.withinUlps(a, area, 1), ("got %.17g, exact %s"):format(a, exact.tostring(area)))
+    end)
+
+    it("still has the exact winding", function()
+      -- out along y = 0.3 x + wobble (the larger y), back along y = 0.3 x: like (0, e), (1, e),
+      -- (1, 0), (0, 0), whose shoelace sum is -e - e + 0 + 0 < 0: counter-clockwise on screen
+      assert.are.equal(-1, exact.sign(twice))
+      assert.are.equal("ccw", polygon.polygonWindingOrder(points))
+    end)
+  end)
+end)

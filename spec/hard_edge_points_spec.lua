@@ -1,0 +1,166 @@
+-- Hard cases, family 3: points on edges, on vertices, on horizontal edges, and one and two ulps
+-- to either side of them (polygonContains against the exact crossing rule of the oracle).
+--
+-- The polygons have slanted edges whose lines pass between doubles almost everywhere, edges with
+-- exactly representable points (coordinates on a coarse dyadic grid), horizontal and vertical
+-- edges, in both windings and near and far from the origin. Test points are x1 + t (x2 - x1),
+-- y1 + t (y2 - y1) as rounded, and the same moved by one and two ulps in x and in y; the oracle
+-- says which are exactly on an edge, which on a vertex, and the inside/outside of every one.
+
+local polygon = require "polygon"
+local oracle = require "oracle"
+local prng = require "prng"
+local probe = require "probe"
+local tally = require "tally"
+
+local function reversed(points)
+  local out = {}
+  local m = #points / 2
+  for i = 1, m do
+    out[2 * i - 1], out[2 * i] = points[2 * (m - i + 1) - 1], points[2 * (m - i + 1)]
+  end
+  return out
+end
+
+local function shifted(points, dx, dy)
+  local out = {}
+  for i = 1, #points - 1, 2 do
+    out[i], out[i + 1] = points[i] + dx, points[i + 1] + dy
+  end
+  return out
+end
+
+-- The naive crossing test, dividing for the edge's x at height y as the tutorial does.
+local function naiveContains(points, x, y)
+  local inside = false
+  local n = #points
+  local x1, y1 = points[n - 1], points[n]
+  for i = 1, n - 1, 2 do
+    local x2, y2 = points[i], points[i + 1]
+    if (y1 >= y) ~= (y2 >= y) and x <= (x2 - x1) * (y - y1) / (y2 - y1) + x1 then
+      inside = not inside
+    end
+    x1, y1 = x2, y2
+  end
+  return inside
+end
+
+-- Hand-made shapes: a triangle with slanted sides whose slopes are not dyadic, a trapezoid with
+-- two horizontal edges, a concave arrow with horizontal and vertical edges, a thin sliver.
+local SHAPES = {
+  triangle = { 0.1, 0.2, 3.7, 1.3, 1.9, 4.3 },
+  trapezoid = { 1, 1, 6, 1, 5, 3, 2, 3 },
+  arrow = { 0, 3, 4, 3, 4, 0, 9, 4, 4, 8, 4, 5, 0, 5 },
+  sliver = { 0, 0, 10, 1e-9, 10.000000001, 3e-9 },
+  grid = { 0.25, 0.5, 4.75, 1.25, 3.5, 5.125, 0.75, 4.5 },
+}
+
+-- Random shapes: triangles and convex quadrilaterals with random doubles, and the same snapped to
+-- a grid of 1/8 so that quarter points of edges are exactly on them.
+local function randomShapes(seed, count)
+  local r = prng.new(seed)
+  local list = {}
+  for k = 1, count do
+    local snap = k % 2 == 0
+    local pts = {}
+    local m = 3 + k % 2
+    for i = 1, m do
+      -- corners roughly around a circle, so quadrilaterals come out convex
+      local angle = (i - 1 + r:range(-0.3, 0.3)) * 2 * math.pi / m
+      local radius = r:range(2, 6)
+      local x, y = radius * math.cos(angle), radius * math.sin(angle)
+      if snap then
+        x, y = math.floor(x * 8) / 8, math.floor(y * 8) / 8
+      end
+      pts[2 * i - 1], pts[2 * i] = x, y
+    end
+    list[#list + 1] = pts
+  end
+  return list
+end
+
+local function allCases()
+  local cases = {}
+  local function add(name, points)
+    cases[#cases + 1] = { name = name, points = points }
+    cases[#cases + 1] = { name = name .. " reversed", points = reversed(points) }
+  end
+  for name, points in pairs(SHAPES) do
+    add(name, points)
+    add(name .. " at 1e6", shifted(points, 1e6, -2.5e6))
+  end
+  for k, points in ipairs(randomShapes(4242, 24)) do
+    add("random " .. k, points)
+  end
+  table.sort(cases, function(a, b) return a.name < b.name end)
+  return cases
+end
+
+describe("points on and one or two ulps beside edges and vertices", function()
+  local cases = allCases()
+
+  it("are inside exactly when the exact crossing rule says so", function()
+    local t = tally.new("polygonContains vs oracle")
+    local naive = tally.new("naive contains vs oracle")
+    local onEdge, onVertex, onHorizontal, checked = 0, 0, 0, 0
+    for _, case in ipairs(cases) do
+      local p = case.points
+      local object = polygon.Polygon(p)
+      local vertices = {}
+      for i = 1, #p - 1, 2 do vertices[("%.17g,%.17g"):format(p[i], p[i + 1])] = true end
+      for _, q in ipairs(probe.pointsNear(p, { 0, 1 / 3, 0.25, 0.5, 0.75 })) do
+        local x, y = q[1], q[2]
+        local expected = oracle.contains(p, x, y)
+        checked = checked + 1
+        if oracle.onBoundary(p, x, y) then
+          if vertices[("%.17g,%.17g"):format(x, y)] then
+            onVertex = onVertex + 1
+          else
+            onEdge = onEdge + 1
+          end
+          for _, e in ipairs(probe.edges(p)) do
+            if e[2] == e[4] and e[2] == y and oracle.onSegment(e[1], e[2], e[3], e[4], x, y) then
+              onHorizontal = onHorizontal + 1
+            end
+          end
+        end
+        t:check(polygon.polygonContains(p, x, y) == expected, case.name, x, y, "expected", expected)
+        t:check(object:contains(x, y) == expected, case.name, "Polygon:contains", x, y)
+        naive:check(naiveContains(p, x, y) == expected)
+      end
+    end
+    naive:report((" (on edges %d, on vertices %d, on horizontal edges %d)")
+      :format(onEdge, onVertex, onHorizontal))
+    assert.are.equal(0, t.count, t:message())
+    -- the cases really include what they claim to
+    assert.is_true(onEdge > 100, "points exactly on edges: " .. onEdge)
+    assert.is_true(onVertex > 50, "points on vertices: " .. onVertex)
+    assert.is_true(onHorizontal > 20, "points on horizontal edges: " .. onHorizontal)
+    assert.is_true(checked > 3000)
+    assert.is_true(naive.count > 0, "the naive division should misplace some of these points")
+  end)
+
+  it("follow the half-open rule on horizontal edges and at vertices (hand-computed)", function()
+    -- trapezoid (1,1) (6,1) (5,3) (2,3): the top edge y = 1 is outside, the bottom edge y = 3
+    -- inside between its ends; the left side is x = 1 + (y - 1) / 2, the right one
+    -- x = 6 - (y - 1) / 2, so at y = 2 they are at x = 1.5 and x = 5.5.
+    local trapezoid = SHAPES.trapezoid
+    local cases2 = {
+      { 3, 1, false }, -- on the top edge
+      { 3, 3, true }, -- on the bottom edge
+      { 2, 3, false }, -- bottom-left vertex: crossing of x = 2 and x = 5 both count, even
+      { 5, 3, true }, -- bottom-right vertex: only the right side counts (5 <= 5), odd
+      { 1, 1, false }, { 6, 1, false }, -- top vertices: no edge crosses y = 1 half-openly
+      { 1.5, 2, false }, -- on the left side: both sides count
+      { 5.5, 2, true }, -- on the right side: only the right one
+      { 1.4999999999999998, 2, false }, { 5.5000000000000009, 2, false },
+      { 1.5000000000000002, 2, true }, { 5.4999999999999991, 2, true },
+    }
+    for _, c in ipairs(cases2) do
+      assert.are.equal(c[3], oracle.contains(trapezoid, c[1], c[2]), "oracle at " .. c[1] .. ", " .. c[2])
+      local at = c[1] .. ", " .. c[2]
+      assert.are.equal(c[3], polygon.polygonContains(trapezoid, c[1], c[2]), "library at " .. at)
+      assert.are.equal(c[3], polygon.polygonContains(reversed(trapezoid), c[1], c[2]), "reversed")
+    end
+  end)
+end)

@@ -1,0 +1,221 @@
+-- Hard cases, family 7: generated convex pairs and circles around touching, with the collision
+-- answer, the depth and the displacement checked against the exact separating-axis oracle.
+--
+-- For a pair (A, B) of convex polygons:
+--   * polygonsCollide / polygonCollidesWith equal the exact SAT on both / A's axes (touching is not
+--     colliding), in both argument orders; the V functions return false exactly when those do;
+--   * after moving B by (dx, dy) they no longer overlap by more than rounding: the exact least
+--     penetration is <= TOL = M 2^-50 (M: the largest coordinate magnitude, so TOL is 2 to 4 ulps
+--     of it); for the one-sided function, on A's axes;
+--   * they "just touch": the exact least penetration after the move is >= -SLACK, and overlap is
+--     the exact least penetration min over axes of min(max1 - min2, max2 - min1) / |n| within
+--     SLACK, and |(dx, dy)| == overlap within TOL. SLACK = M 2^-45 = 32 TOL: polygon.lua raises a
+--     depth below 16 eps times a size bound (|x1| + |y1| + sums of the polygons' extents) to that
+--     floor, so that a second pair of exact tests sees them apart; measured (POLYGON_SPEC_COUNTS=1),
+--     |overlap - exact| reaches 27.4 M 2^-50 near the origin and 4.1 M 2^-50 far from it.
+-- For a polygon and a circle the same with the contract's circle axes; there the library may call
+-- an overlap within its rounding "touching", so only depths beyond TOL must agree in kind.
+
+local polygon = require "polygon"
+local oracle = require "oracle"
+local prng = require "prng"
+local tally = require "tally"
+
+-- A convex polygon of m vertices on an ellipse around (cx, cy), in either winding.
+local function convex(r, cx, cy, size)
+  local m = r:int(3, 8)
+  local angles = {}
+  for i = 1, m do
+    angles[i] = (i - 1 + r:range(-0.35, 0.35)) * 2 * math.pi / m
+  end
+  local ax, ay = size * r:range(0.5, 1.5), size * r:range(0.5, 1.5)
+  local points = {}
+  for i = 1, m do
+    points[2 * i - 1] = cx + ax * math.cos(angles[i])
+    points[2 * i] = cy + ay * math.sin(angles[i])
+  end
+  if r:int(0, 1) == 1 then
+    local reversed = {}
+    for i = 1, m do
+      reversed[2 * i - 1], reversed[2 * i] = points[2 * (m - i + 1) - 1], points[2 * (m - i + 1)]
+    end
+    points = reversed
+  end
+  return points
+end
+
+local function support(points, ux, uy, want)
+  local best
+  for i = 1, #points - 1, 2 do
+    local s = points[i] * ux + points[i + 1] * uy
+    if not best or (s - best) * want > 0 then best = s end
+  end
+  return best
+end
+
+local function moved(points, dx, dy)
+  local out = {}
+  for i = 1, #points - 1, 2 do
+    out[i], out[i + 1] = points[i] + dx, points[i + 1] + dy
+  end
+  return out
+end
+
+local function magnitude(...)
+  local m = 0
+  for _, points in ipairs({ ... }) do
+    for i = 1, #points do m = math.max(m, math.abs(points[i])) end
+  end
+  return m
+end
+
+-- Gaps (as fractions of the size) by which B is placed beyond touching A along a direction:
+-- negative ones overlap.
+local GAPS = { -0.3, -1e-3, -1e-9, -1e-13, 0, 1e-13, 1e-9, 1e-3 }
+
+-- Pairs around touching: B translated along a random direction u so that its extent along u starts
+-- where A's ends, plus the gap; and pairs that share an edge or a vertex exactly.
+local function pairsAround(seed, count, offset)
+  local r = prng.new(seed)
+  local list = {}
+  for _ = 1, count do
+    local size = r:range(1, 10)
+    local cx, cy = offset + r:range(-5, 5), -offset + r:range(-5, 5)
+    local a = convex(r, cx, cy, size)
+    local b0 = convex(r, 0, 0, size * r:range(0.3, 2))
+    -- B in front of A's edge f (so that the gap is measured on an axis of the SAT), or in a random
+    -- direction u
+    local m = #a / 2
+    local f = r:int(1, m)
+    local g = f % m + 1
+    local ccx, ccy = oracle.center(a)
+    local ux, uy = a[2 * g] - a[2 * f], a[2 * f - 1] - a[2 * g - 1]
+    local length = math.sqrt(ux * ux + uy * uy)
+    ux, uy = ux / length, uy / length
+    local mx, my = (a[2 * f - 1] + a[2 * g - 1]) / 2, (a[2 * f] + a[2 * g]) / 2
+    if (mx - ccx) * ux + (my - ccy) * uy < 0 then ux, uy = -ux, -uy end -- outwards
+    if r:int(0, 2) == 0 then
+      local angle = r:range(0, 2 * math.pi)
+      ux, uy = math.cos(angle), math.sin(angle)
+      mx, my = ccx, ccy
+    end
+    local shift = support(a, ux, uy, 1) - (mx * ux + my * uy) - support(b0, ux, uy, -1) + r:pick(GAPS) * size
+    list[#list + 1] = { a, moved(b0, mx + shift * ux, my + shift * uy) }
+    -- B sharing A's edge k exactly: the edge's two vertices and a point beyond it
+    local k = r:int(1, m)
+    local j = k % m + 1
+    local x1, y1, x2, y2 = a[2 * k - 1], a[2 * k], a[2 * j - 1], a[2 * j]
+    mx, my = (x1 + x2) / 2, (y1 + y2) / 2
+    list[#list + 1] = { a, { x2, y2, x1, y1, 2 * mx - ccx, 2 * my - ccy } }
+    -- B sharing only the vertex k, pointing away from A's centre
+    local vx, vy = x1 - ccx, y1 - ccy
+    list[#list + 1] = { a, { x1, y1, x1 + vx - 0.3 * vy, y1 + vy + 0.3 * vx,
+      x1 + vx + 0.3 * vy, y1 + vy - 0.3 * vx } }
+  end
+  return list
+end
+
+local function checkPair(t, a, b, counts)
+  local tol = magnitude(a, b) * 2 ^ -50
+  local slack = 32 * tol
+  for _, order in ipairs({ { a, b }, { b, a } }) do
+    local p, q = order[1], order[2]
+    local both, oneSided = oracle.collides(p, q, true), oracle.collides(p, q, false)
+    t:check(polygon.polygonsCollide(p, q) == both, "polygonsCollide", p, q, "expected", both)
+    t:check(polygon.polygonCollidesWith(p, q) == oneSided, "polygonCollidesWith", p, q, "expected", oneSided)
+    local o, dx, dy = polygon.polygonsCollideV(p, q)
+    t:check((o ~= false) == both, "polygonsCollideV false iff polygonsCollide is", p, q)
+    if both and o then
+      counts.colliding = counts.colliding + 1
+      local depth = oracle.depth(p, q, true)
+      t:check(math.abs(o - depth) <= slack, "depth", p, q, o, "exact", depth)
+      counts.excess = math.max(counts.excess, math.abs(o - depth) / tol)
+      t:check(math.abs(math.sqrt(dx * dx + dy * dy) - o) <= tol, "|(dx, dy)| == overlap", p, q, o, dx, dy)
+      local after = oracle.depth(p, moved(q, dx, dy), true)
+      t:check(after <= tol, "no overlap after the move", p, q, dx, dy, "depth after", after)
+      t:check(after >= -slack, "touching after the move", p, q, dx, dy, "depth after", after)
+    elseif not both then
+      local depth = oracle.depth(p, q, true)
+      if depth == 0 then counts.touching = counts.touching + 1 end
+    end
+    local o1, dx1, dy1 = polygon.polygonCollidesWithV(p, q)
+    t:check((o1 ~= false) == oneSided, "polygonCollidesWithV false iff polygonCollidesWith is", p, q)
+    if oneSided and o1 then
+      local depth = oracle.depth(p, q, false)
+      t:check(math.abs(o1 - depth) <= slack, "one-sided depth", p, q, o1, "exact", depth)
+      local after = oracle.depth(p, moved(q, dx1, dy1), false)
+      t:check(after <= tol, "no overlap on p's axes after the move", p, q, dx1, dy1, "depth after", after)
+    end
+  end
+end
+
+describe("convex pairs around touching", function()
+  for _, offset in ipairs({ 0, 1e3, 1e6 }) do
+    it(("agree with the exact SAT, with depth and displacement, at offset %g"):format(offset), function()
+      local t = tally.new("pairs at " .. offset)
+      local counts = { colliding = 0, touching = 0, excess = 0 }
+      for _, pair in ipairs(pairsAround(500 + offset % 997, 40, offset)) do
+        assert.are.equal("convex", oracle.polygonType(pair[1]), "the generator should make convex polygons")
+        assert.are.equal("convex", oracle.polygonType(pair[2]), "the generator should make convex polygons")
+        checkPair(t, pair[1], pair[2], counts)
+      end
+      t:report((" (colliding %d, exactly touching %d, largest |overlap - exact| %.1f M 2^-50)")
+        :format(counts.colliding, counts.touching, counts.excess))
+      assert.are.equal(0, t.count, t:message())
+      assert.is_true(counts.colliding > 10, "colliding cases: " .. counts.colliding)
+      assert.is_true(counts.touching > 20, "exactly touching cases: " .. counts.touching)
+    end)
+  end
+end)
+
+describe("circles around touching a convex polygon", function()
+  for _, offset in ipairs({ 0, 1e3, 1e6 }) do
+    it(("have the contract's depth and a displacement leaving them touching, at offset %g"):format(offset),
+      function()
+        local r = prng.new(700 + offset % 991)
+        local t = tally.new("circles at " .. offset)
+        local colliding, apart = 0, 0
+        for _ = 1, 40 do
+          local size = r:range(1, 10)
+          local a = convex(r, offset + r:range(-5, 5), offset + r:range(-5, 5), size)
+          local radius = size * r:range(0.05, 3)
+          local ccx, ccy = oracle.center(a)
+          local centres = {}
+          -- around touching in a random direction, at the vertices, at the centre
+          for _ = 1, 4 do
+            local angle = r:range(0, 2 * math.pi)
+            local ux, uy = math.cos(angle), math.sin(angle)
+            local s = support(a, ux, uy, 1) - (ccx * ux + ccy * uy) + radius + r:pick(GAPS) * size
+            centres[#centres + 1] = { ccx + s * ux, ccy + s * uy }
+          end
+          local k = r:int(1, #a / 2)
+          centres[#centres + 1] = { a[2 * k - 1], a[2 * k] }
+          centres[#centres + 1] = { ccx, ccy }
+          for _, c in ipairs(centres) do
+            local cx, cy = c[1], c[2]
+            local tol = 2 ^ -46 * (magnitude(a, { cx, cy }) + radius)
+            local depth = oracle.circleDepth(a, cx, cy, radius)
+            local o, dx, dy = polygon.polygonCircleCollideV(a, cx, cy, radius)
+            if depth > tol then
+              colliding = colliding + 1
+              t:check(o ~= false, "should collide", a, cx, cy, radius, "depth", depth)
+              if o then
+                t:check(math.abs(o - depth) <= tol, "depth", a, cx, cy, radius, o, "exact", depth)
+                t:check(math.abs(math.sqrt(dx * dx + dy * dy) - o) <= tol, "|(dx, dy)| == overlap", o, dx, dy)
+                local after = oracle.circleDepth(a, cx + dx, cy + dy, radius)
+                t:check(math.abs(after) <= tol, "touching after the move", a, cx, cy, radius, dx, dy, after)
+              end
+            elseif depth < -tol then
+              apart = apart + 1
+              t:check(o == false, "should not collide", a, cx, cy, radius, "depth", depth)
+            else
+              t:check(o == false or o <= 2 * tol, "within rounding of touching", a, cx, cy, radius, o)
+            end
+          end
+        end
+        t:report((" (colliding %d, apart %d)"):format(colliding, apart))
+        assert.are.equal(0, t.count, t:message())
+        assert.is_true(colliding > 50 and apart > 20, ("colliding %d, apart %d"):format(colliding, apart))
+      end)
+  end
+end)
