@@ -107,9 +107,9 @@ local function expSign()
   return top > 0 and 1 or -1
 end
 
--- The expansion's value rounded to within one ulp (Shewchuk's Compress: the largest component
--- of the compressed expansion is within one ulp of the exact sum).
-local function expApprox()
+-- Compresses the expansion in place to an equal one with fewer components (Shewchuk's
+-- Compress) and returns its largest component, which is within one ulp of the exact sum.
+local function expCompress()
   if expLen == 0 then return 0.0 end
   local bottom, q = expLen, EXP[expLen]
   for i = expLen - 1, 1, -1 do
@@ -233,12 +233,18 @@ local function shoelaceExact(points, n)
   for i = 1, n do m = max(m, abs(points[i] + 0.0)) end
   local s = exactScale(m)
   expLen = 0
+  local limit = 32
   local xi, yi = points[n - 1] * s, points[n] * s
   for i = 1, n - 1, 2 do
     local xj, yj = points[i] * s, points[i + 1] * s
     expAddProduct(xi, yj)
     expAddProduct(-xj, yi)
     xi, yi = xj, yj
+    -- every addition walks the whole expansion: compress it whenever it has grown by 32
+    if expLen > limit then
+      expCompress()
+      limit = expLen + 32
+    end
   end
   return s
 end
@@ -314,7 +320,7 @@ function polygon.polygonArea(points)
   sum = sum + px * (y1 - py)
   if sum ~= sum then   -- terms overflowed to infinities of both signs: take the exact area
     local s = shoelaceExact(points, n)
-    sum = expApprox() / s / s
+    sum = expCompress() / s / s
   end
   return (sum < 0 and -sum or sum) * 0.5
 end
@@ -325,7 +331,7 @@ function polygon.polygonAreaAccurate(points)
   local n = checkPoints(points, "polygonAreaAccurate")
   if n < 6 then return nil end
   local s = shoelaceExact(points, n)
-  return abs(expApprox()) * 0.5 / s / s
+  return abs(expCompress()) * 0.5 / s / s
 end
 
 --- Whether the polygon is convex.
@@ -389,18 +395,26 @@ function polygon.polygonType(points)
 end
 
 --- The centre as the tutorial defines it: the mean of the vertices.
--- @return cx, cy; nil for fewer than 3 points. Summed relative to the first vertex.
+-- @return cx, cy; nil for fewer than 3 points.
 function polygon.polygonCenter(points)
   local n = checkPoints(points, "polygonCenter")
   if n < 6 then return nil end
-  local x0, y0 = points[1] + 0.0, points[2] + 0.0
-  local sx, sy = 0.0, 0.0
-  for i = 3, n - 1, 2 do
-    sx = sx + (points[i] - x0)
-    sy = sy + (points[i + 1] - y0)
+  -- Compensated sums (TwoSum carries each addition's rounding error into ex, ey), so the mean is
+  -- within an ulp or two of exact wherever the polygon is and whatever its size.
+  local sx, sy, ex, ey = 0.0, 0.0, 0.0, 0.0
+  for i = 1, n - 1, 2 do
+    local x, y = points[i] + 0.0, points[i + 1] + 0.0
+    local t = sx + x
+    local v = t - sx
+    ex = ex + ((sx - (t - v)) + (x - v))
+    sx = t
+    t = sy + y
+    v = t - sy
+    ey = ey + ((sy - (t - v)) + (y - v))
+    sy = t
   end
   local m = n / 2
-  return x0 + sx / m, y0 + sy / m
+  return (sx + ex) / m, (sy + ey) / m
 end
 
 --- The area centroid, the point a physics step rotates a uniform polygon about.
@@ -428,7 +442,7 @@ function polygon.polygonCentroid(points)
   end
   if a2 == 0 then   -- the rounded sum lost everything: take the exact area
     local s = shoelaceExact(points, n)
-    a2 = expApprox() / s / s * k * k
+    a2 = expCompress() / s / s * k * k
   end
   return x0 + sx / (3 * a2) / k, y0 + sy / (3 * a2) / k
 end
@@ -766,7 +780,10 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
   checkNumber(cy, fname, "cy")
   checkNumber(radius, fname, "radius")
   if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
-  if n < 6 or areaSign(points, n) == 0 then return false end
+  if n < 6 then return false end
+  local turn = areaSign(points, n)
+  if turn == 0 then return false end
+  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
   cx, cy = cx + 0.0, cy + 0.0
   -- The projections' rounding error is a few eps times the polygon's extent plus the centre's
   -- distance from it plus the radius; an overlap below 8 eps times that counts as touching.
@@ -778,20 +795,43 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
     if y < ymin then ymin = y end
     if y > ymax then ymax = y end
   end
-  local far = max(abs(cx - xmin), abs(cx - xmax)) + max(abs(cy - ymin), abs(cy - ymax))
-  local tol = 8 * EPS * ((xmax - xmin) + (ymax - ymin) + far + radius)
+  local reach = max(abs(cx - xmin), abs(cx - xmax)) + max(abs(cy - ymin), abs(cy - ymax))
+  local tol = 8 * EPS * ((xmax - xmin) + (ymax - ymin) + reach + radius)
   local best, bux, buy = huge, 0.0, 0.0
   local nearX, nearY, nearD = 0.0, 0.0, huge
+  -- On an edge's outward normal a convex polygon spans [-width, 0]: its edge is the near end.
+  -- The vertex at the far end moves forward around the polygon as the edges do (rotating
+  -- calipers), so each edge walks on from the previous one's far vertex instead of projecting
+  -- every vertex. The walk goes on through steps within the rounding and stops at the first
+  -- certain rise, past which a convex polygon's projections only rise.
+  local far = 0   -- index of the far vertex, 0 until the first edge has scanned them all
   local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
   for i = 1, n - 1, 2 do
     local bx, by = points[i] + 0.0, points[i + 1] + 0.0
     local d = (bx - cx) * (bx - cx) + (by - cy) * (by - cy)
     if d < nearD then nearX, nearY, nearD = bx, by, d end
     if bx ~= ax or by ~= ay then
-      local nx, ny = unit(by - ay, ax - bx)
-      local min1, max1 = projectRange(points, n, ax, ay, nx, ny)
+      local nx, ny = unit((by - ay) * sign, (ax - bx) * sign)
+      local lo
+      if far == 0 then
+        lo = huge
+        for j = 1, n - 1, 2 do
+          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
+          if s < lo then lo, far = s, j end
+        end
+      else
+        lo = nx * (points[far] - ax) + ny * (points[far + 1] - ay)
+        local j = far
+        for _ = 1, n / 2 do
+          j = j + 2
+          if j > n then j = 1 end
+          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
+          if s > lo + tol then break end
+          if s < lo then lo, far = s, j end
+        end
+      end
       local s = nx * (cx - ax) + ny * (cy - ay)
-      local up, down = max1 - (s - radius), (s + radius) - min1
+      local up, down = radius - s, (s + radius) - lo
       if up <= tol or down <= tol then return false end
       if up < best then best, bux, buy = up, nx, ny end
       if down < best then best, bux, buy = down, -nx, -ny end
