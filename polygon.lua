@@ -278,9 +278,9 @@ local function checkPoints(points, fname, argname, level)
   return n
 end
 
-local function checkNumber(v, fname, argname)
+local function checkNumber(v, fname, argname, level)
   if type(v) ~= "number" then
-    error(("%s: %s must be a number, got %s"):format(fname, argname, type(v)), 3)
+    error(("%s: %s must be a number, got %s"):format(fname, argname, type(v)), level or 3)
   end
 end
 
@@ -478,15 +478,22 @@ local function contains(points, n, x, y)
   return inside
 end
 
+-- contains with the argument checks of polygonContains and Polygon:contains, whose callers'
+-- lines the errors point at (level 4).
+local function checkedContains(fname, points, x, y)
+  local n = checkPoints(points, fname, "points", 4)
+  checkNumber(x, fname, "x", 4)
+  checkNumber(y, fname, "y", 4)
+  if n < 6 then return false end
+  return contains(points, n, x, y)
+end
+
 --- Whether (x, y) lies inside the polygon, by the crossing rule with the tutorial's half-open
 -- boundary. Works for concave and self-intersecting polygons (even-odd). Exact.
 -- @return true or false; false for fewer than 3 points.
 function polygon.polygonContains(points, x, y)
-  local n = checkPoints(points, "polygonContains")
-  checkNumber(x, "polygonContains", "x")
-  checkNumber(y, "polygonContains", "y")
-  if n < 6 then return false end
-  return contains(points, n, x, y)
+  local inside = checkedContains("polygonContains", points, x, y)
+  return inside   -- not a tail call: the argument errors point at the caller's line
 end
 
 --------------------------------------------------------------------------------------------------
@@ -897,12 +904,8 @@ end
 
 --- Whether (x, y) lies inside, as polygonContains.
 function Polygon:contains(x, y)
-  local points = self.points
-  local n = checkPoints(points, "Polygon:contains")
-  checkNumber(x, "Polygon:contains", "x")
-  checkNumber(y, "Polygon:contains", "y")
-  if n < 6 then return false end
-  return contains(points, n, x, y)
+  local inside = checkedContains("Polygon:contains", self.points, x, y)
+  return inside
 end
 
 setmetatable(Polygon, { __call = function(_, points)

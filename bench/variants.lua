@@ -177,89 +177,6 @@ local function typePeeled(points)
 end
 
 ---------------------------------------------------------------------------------------------
--- polygonCircleCollideV with rotating calipers: on an edge's outward normal a convex polygon
--- spans [-width, 0], and the vertex that sets the width moves forward monotonically as the
--- edges do, so all widths cost O(n) together instead of one O(n) projection per edge.
--- Same axes, tolerance and results as polygon.lua's (the area sign here is a float one).
----------------------------------------------------------------------------------------------
-local function unit(nx, ny)
-  local m = abs(nx) > abs(ny) and abs(nx) or abs(ny)
-  nx, ny = nx / m, ny / m
-  local len = sqrt(nx * nx + ny * ny)
-  return nx / len, ny / len, len * m
-end
-
-local function circleCalipers(points, cx, cy, radius)
-  local n = #points
-  if n < 6 then return false end
-  local m = n / 2
-  local x0, y0 = points[1], points[2]
-  local area, sx, sd = 0.0, 0.0, 0.0
-  local px, py = 0.0, y0
-  for i = 3, n - 1, 2 do
-    local x, y = points[i] - x0, points[i + 1]
-    local d = y - py
-    area = area + (px + x) * d
-    sx, sd = sx + x * x, sd + d * d
-    px, py = x, y
-  end
-  area = area + px * (y0 - py)
-  if area == 0 then return false end
-  local sgn = area > 0 and 1.0 or -1.0        -- makes (by - ay, ax - bx) point outwards
-  local size = 2 * (sqrt(sx) + sqrt(m * (sd + (y0 - py) ^ 2)))
-  local tol = 8 * EPS * (2 * size + abs(cx - x0) + abs(cy - y0) + radius)
-  local best, bux, buy = huge, 0.0, 0.0
-  local nearX, nearY, nearD = 0.0, 0.0, huge
-  local k = -1                                  -- index of the deepest vertex, found at the first edge
-  local ax, ay = points[n - 1], points[n]
-  for i = 1, n - 1, 2 do
-    local bx, by = points[i], points[i + 1]
-    local ex, ey = bx - cx, by - cy
-    local d = ex * ex + ey * ey
-    if d < nearD then nearX, nearY, nearD = bx, by, d end
-    if bx ~= ax or by ~= ay then
-      local nx, ny = unit(sgn * (by - ay), sgn * (ax - bx))
-      local lo
-      if k < 0 then
-        lo, k = huge, 1
-        for j = 1, n - 1, 2 do
-          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
-          if s < lo then lo, k = s, j end
-        end
-      else
-        lo = nx * (points[k] - ax) + ny * (points[k + 1] - ay)
-        for _ = 1, m do
-          local j = k + 2 <= n and k + 2 or 1
-          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
-          if s > lo then break end
-          lo, k = s, j
-        end
-      end
-      local s = nx * (cx - ax) + ny * (cy - ay)
-      local up, down = radius - s, (s + radius) - lo
-      if up <= tol or down <= tol then return false end
-      if up < best then best, bux, buy = up, nx, ny end
-      if down < best then best, bux, buy = down, -nx, -ny end
-    end
-    ax, ay = bx, by
-  end
-  if nearD > 0 then
-    local nx, ny, len = unit(cx - nearX, cy - nearY)
-    local lo, hi = huge, -huge
-    for j = 1, n - 1, 2 do
-      local s = nx * (points[j] - nearX) + ny * (points[j + 1] - nearY)
-      if s < lo then lo = s end
-      if s > hi then hi = s end
-    end
-    local up, down = hi - (len - radius), (len + radius) - lo
-    if up <= tol or down <= tol then return false end
-    if up < best then best, bux, buy = up, nx, ny end
-    if down < best then best, bux, buy = down, -nx, -ny end
-  end
-  return best, bux * best + 0.0, buy * best + 0.0
-end
-
----------------------------------------------------------------------------------------------
 -- Parts of a call, to see what the set-up costs
 ---------------------------------------------------------------------------------------------
 local winding = polygon.polygonWindingOrder
@@ -377,9 +294,8 @@ end
 report("polygonCircleCollideV, circles: edge, corner, miss, inside", {
   ["polygon.lua"] = polygon.polygonCircleCollideV,
   ["baseline"] = baseline.polygonCircleCollideV,
-  ["rotating calipers"] = circleCalipers,
   ["polygonWindingOrder (its area-sign pass)"] = winding,
-}, circles, #circles[1], { "polygon.lua", "baseline", "rotating calipers",
+}, circles, #circles[1], { "polygon.lua", "baseline",
   "polygonWindingOrder (its area-sign pass)" }, circleCheck)
 
 local pairsMix = W.pairs(300, { W.pairOverlap, W.pairTouch, W.pairMiss })
