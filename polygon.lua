@@ -220,10 +220,11 @@ end
 -- (X_i + X_j) d is off by at most 4 eps (|X_i| + |X_j|) |d| and summing m terms adds (m - 1) eps
 -- times their magnitudes, so the error is below (m + 3) eps T, where by Cauchy-Schwarz
 -- T = sum (|X_i| + |X_j|) |d| <= 2 sqrt(sx sd). The test compares squares against a bound four
--- times that (no square root); an overflow only sends the decision to the exact path.
+-- times that (no square root); an overflow (an infinite or NaN sum) only sends the decision to
+-- the exact path.
 local function areaUncertain(m, sum, sx, sd)
   local k = (m + 8) * 2^-50
-  return sum * sum <= k * k * sx * sd
+  return not (sum * sum > k * k * sx * sd)
 end
 
 -- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges,
