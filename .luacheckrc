@@ -3,7 +3,7 @@ std = "min"
 max_line_length = 110
 
 files["spec"] = { std = "+busted" }
-files["examples/love"] = { std = "+love" }
+files["examples/love"] = { std = "luajit+love" }   -- LÖVE runs on LuaJIT
 files["bench"] = { std = "min" }
 
 exclude_files = { ".luarocks", "lua_modules", ".install" }

@@ -224,7 +224,7 @@ end
 -- the exact path.
 local function areaUncertain(m, sum, sx, sd)
   local k = (m + 8) * 2^-50
-  return not (sum * sum > k * k * sx * sd)
+  return not (sum * sum > k * k * sx * sd)   -- luacheck: ignore 581 (NaN must be uncertain)
 end
 
 -- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges,
