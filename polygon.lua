@@ -671,7 +671,8 @@ end
 -- The shared body of the four polygon collision functions: false, or the least penetration as
 -- leastPenetration returns it and a size that bounds the coordinates' magnitudes.
 -- both: the axes of both polygons, else those of p1 only.
-local function collide(fname, p1, p2, both)
+local collide
+function collide(fname, p1, p2, both)
   local n1 = checkPoints(p1, fname, "points1", 4)
   local n2 = checkPoints(p2, fname, "points2", 4)
   if n1 < 6 or n2 < 6 then return false end
@@ -686,6 +687,22 @@ local function collide(fname, p1, p2, both)
   -- between the two first vertices covers a vertex of one polygon seen from one of the other.
   local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
   local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
+  if not (w + h <= EXACT_TOP) then   -- luacheck: ignore 581 (true for inf and NaN too)
+    -- Far beyond the exact range the projections (products of two sizes) would overflow into
+    -- infinities and NaN. Collide copies scaled by a power of two k instead, to coordinates
+    -- below 2^464, so sizes below 2^500 (this rare path allocates the copies). A projection o
+    -- scales by k^2 and a normal by k, so the normal times k again gives back the depth o / |n|.
+    local m = 0.0
+    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
+    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
+    local k = powerScale(m, 2^400, 2^464)
+    local s1, s2 = {}, {}
+    for i = 1, n1 do s1[i] = p1[i] * k end
+    for i = 1, n2 do s2[i] = p2[i] * k end
+    local q, o, nx, ny, size = collide(fname, s1, s2, both)
+    if not q then return false end
+    return q, o, nx * k, ny * k, size / k, p1, n1, p2, n2
+  end
   local q, o, nx, ny
   if both then
     q, o, nx, ny = deepestReach(p1, n1, turn1, p2, n2, 1, w, h, huge, 0, 0, 0)
