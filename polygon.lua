@@ -425,27 +425,36 @@ function polygon.polygonCentroid(points)
   if n < 6 then return nil end
   if areaSign(points, n) == 0 then return nil end
   local x0, y0 = points[1] + 0.0, points[2] + 0.0
-  -- The sums below are cubic in the coordinates (relative to vertex 1): scale those by a power
-  -- of two to near 1 so that they neither overflow nor underflow, and scale back at the end.
-  local m = 0.0
-  for i = 3, n - 1 do m = max(m, abs(points[i] - (i % 2 == 1 and x0 or y0))) end
-  local k = powerScale(m, 2^-32, 2^32)
+  -- The sums below are cubic in the coordinates (relative to vertex 1): scale x and y each by a
+  -- power of two to near 1 so that they neither overflow nor underflow, and scale back at the
+  -- end (x by kx: the area scales by kx ky, the x moment by kx^2 ky).
+  local mx, my = 0.0, 0.0
+  for i = 3, n - 1, 2 do
+    mx, my = max(mx, abs(points[i] - x0)), max(my, abs(points[i + 1] - y0))
+  end
+  local kx, ky = powerScale(mx, 2^-32, 2^32), powerScale(my, 2^-32, 2^32)
   local a2, sx, sy = 0.0, 0.0, 0.0
   -- relative to vertex 1, the edges from and to it add nothing: start at edge 2 -> 3
   local xi, yi = 0.0, 0.0
   for i = 3, n - 1, 2 do
-    local xj, yj = (points[i] - x0) * k, (points[i + 1] - y0) * k
+    local xj, yj = (points[i] - x0) * kx, (points[i + 1] - y0) * ky
     local c = xi * yj - xj * yi
     a2 = a2 + c
     sx = sx + (xi + xj) * c
     sy = sy + (yi + yj) * c
     xi, yi = xj, yj
   end
-  if a2 == 0 then   -- the rounded sum lost everything: take the exact area
-    local s = shoelaceExact(points, n)
-    a2 = expCompress() / s / s * k * k
+  if a2 == 0 then   -- the rounded sum lost everything: take the exact area, scaled by kx ky
+    local s = shoelaceExact(points, n)   -- the expansion holds it scaled by s^2
+    a2 = expCompress() * (kx / s) * (ky / s)
   end
-  return x0 + sx / (3 * a2) / k, y0 + sy / (3 * a2) / k
+  local cx, cy = x0 + sx / (3 * a2) / kx, y0 + sy / (3 * a2) / ky
+  if cx ~= cx or cy ~= cy then
+    -- Only outside the exact range: a sliver far thinner than it is long, or coordinates of
+    -- magnitudes too far apart for one scale each. Its vertex mean is finite and nearby.
+    cx, cy = polygon.polygonCenter(points)
+  end
+  return cx, cy
 end
 
 --------------------------------------------------------------------------------------------------
@@ -731,6 +740,8 @@ end
 -- that resolves until nothing collides ends, instead of being told forever to move by zero.
 local function displacement(q, o, nx, ny, size, p1, n1, p2, n2)
   if not q then return false end
+  -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
+  if nx == 0 and ny == 0 then return 0.0, 0.0, 0.0 end
   local ux, uy, len = unit(nx, ny)
   local depth = o / len
   if depth < 2 * EPS * size then   -- size >= M: only then is M worth finding
