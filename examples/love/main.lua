@@ -54,7 +54,14 @@ local function whereIsPolygon()
     return "polygon.lua from the game folder"
   end
   local path = package.searchpath and package.searchpath("polygon", package.path)
-  return path and ("polygon.lua from " .. path) or "polygon from package.loaders"
+  if not path then
+    return "polygon from package.loaders"
+  end
+  local shorter
+  repeat -- ".../examples/love/../../polygon.lua" reads better as ".../polygon.lua"
+    path, shorter = path:gsub("/[^/]+/%.%./", "/", 1)
+  until shorter == 0
+  return "polygon.lua from " .. path
 end
 local origin = whereIsPolygon()
 

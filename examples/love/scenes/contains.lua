@@ -18,7 +18,7 @@ return function(polygon, ui)
 
   -- A comb opening downwards: a horizontal line can cross it many times.
   local START = {
-    180, 140, 780, 140, 780, 520, 660, 520, 660, 260, 560, 260, 560, 470, 420, 470,
+    180, 180, 780, 180, 780, 520, 660, 520, 660, 260, 560, 260, 560, 470, 420, 470,
     420, 260, 320, 260, 320, 520, 180, 520,
   }
 

@@ -17,7 +17,7 @@ return function(polygon, ui)
   }
 
   -- A clockwise (on screen) hexagon: every vertex starts green.
-  local START = { 300, 200, 520, 150, 700, 260, 680, 460, 470, 540, 280, 420 }
+  local START = { 480, 220, 700, 170, 880, 280, 860, 480, 650, 560, 460, 440 }
 
   function scene.reset()
     scene.points = ui.copy(START)
@@ -37,6 +37,10 @@ return function(polygon, ui)
       return 1, 2 * polygon.polygonArea(triangle)
     end
     return 0, 0
+  end
+
+  local function vertices(count)
+    return count == 1 and "1 vertex" or count .. " vertices"
   end
 
   function scene.draw()
@@ -61,8 +65,8 @@ return function(polygon, ui)
       ("polygonType(points) = %s"):format(ui.show(polygon.polygonType(points))),
       "",
       "At each vertex v: (prev - v) x (next - v)",
-      { colors.green, ("  green: negative (%d vertices)"):format(negative) },
-      { colors.red, ("  red: positive (%d vertices)"):format(positive) },
+      { colors.green, ("  green: negative (%s)"):format(vertices(negative)) },
+      { colors.red, ("  red: positive (%s)"):format(vertices(positive)) },
       { colors.dim, "sign from polygonWindingOrder, size from polygonArea" },
       { colors.dim, "of the triangle (prev, v, next)" },
     }, 24, 60)
@@ -85,10 +89,10 @@ return function(polygon, ui)
     scene.grab = nil
   end
 
-  -- Screenshot: pull the top vertex (520, 150) down into the hexagon, making it concave.
+  -- Screenshot: pull the top vertex (700, 170) down into the hexagon, making it concave.
   scene.script = {
-    { "press", 520, 150 },
-    { "move", 505, 330 },
+    { "press", 700, 170 },
+    { "move", 685, 350 },
     { "release" },
   }
 

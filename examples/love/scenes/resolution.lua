@@ -12,8 +12,8 @@ return function(polygon, ui)
   }
 
   local START = {
-    { 220, 200, 420, 170, 500, 330, 380, 470, 200, 390 },
-    { 620, 200, 780, 240, 750, 400, 600, 370 },
+    { 220, 250, 420, 220, 500, 380, 380, 520, 200, 440 },
+    { 620, 250, 780, 290, 750, 450, 600, 420 },
   }
   local NAMES = { "A", "B" }
   local RESIDUE = 1e-9 -- pixels of overlap left after resolving that count as rounding, not overlap
@@ -46,8 +46,6 @@ return function(polygon, ui)
     if last then
       -- Where the polygon was dropped, and the displacement that was applied on release.
       ui.outlinePolygon(last.dropped, COLORS[last.moving], 0.45, 1)
-      local fx, fy = polygon.polygonCenter(last.dropped)
-      ui.arrow(fx, fy, fx + last.dx, fy + last.dy, colors.red, 2)
     end
 
     ui.drawPolygon(static, COLORS[s])
@@ -65,6 +63,10 @@ return function(polygon, ui)
     local mx, my = polygon.polygonCenter(moving)
     if sx and mx then
       ui.arrow(sx, sy, mx, my, colors.green, 2)
+      if last then
+        local fx, fy = polygon.polygonCenter(last.dropped)
+        ui.arrow(fx, fy, fx + last.dx, fy + last.dy, colors.red, 3)
+      end
       if overlap then
         ui.arrow(mx, my, mx + dx, my + dy, colors.red, 3)
       end
@@ -136,8 +138,8 @@ return function(polygon, ui)
 
   -- Screenshot: drag B by its body deep into A and release.
   scene.script = {
-    { "press", 690, 300 },
-    { "move", 480, 330 },
+    { "press", 690, 350 },
+    { "move", 480, 380 },
     { "release" },
   }
 
