@@ -209,6 +209,15 @@ function ui.pick(polygon, points, x, y)
 end
 
 --- Moves the grabbed part of points (in place) by (dx, dy).
+-- What a press at (x, y) grabs among several shapes, the last drawn (topmost) first:
+-- the grab and the shape's index, or nil.
+function ui.pickTopmost(polygon, shapes, x, y)
+  for index = #shapes, 1, -1 do
+    local grab = ui.pick(polygon, shapes[index], x, y)
+    if grab then return grab, index end
+  end
+end
+
 function ui.drag(points, grab, dx, dy)
   if grab.kind == "vertex" then
     points[grab.index] = points[grab.index] + dx

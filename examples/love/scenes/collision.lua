@@ -42,13 +42,7 @@ return function(polygon, ui)
 
   function scene.pressed(x, y)
     -- The shape drawn on top (B) gets the first chance.
-    for index = #scene.shapes, 1, -1 do
-      local grab = ui.pick(polygon, scene.shapes[index], x, y)
-      if grab then
-        scene.grab, scene.grabbed = grab, index
-        return
-      end
-    end
+    scene.grab, scene.grabbed = ui.pickTopmost(polygon, scene.shapes, x, y)
   end
 
   function scene.moved(_, _, dx, dy)

@@ -100,13 +100,9 @@ return function(polygon, ui)
   end
 
   function scene.pressed(x, y)
-    for index = #scene.shapes, 1, -1 do
-      local grab = ui.pick(polygon, scene.shapes[index], x, y)
-      if grab then
-        scene.grab, scene.moving = grab, index
-        return
-      end
-    end
+    -- The shape drawn on top (B) gets the first chance.
+    local grab, index = ui.pickTopmost(polygon, scene.shapes, x, y)
+    if grab then scene.grab, scene.moving = grab, index end   -- a miss keeps the moving shape
   end
 
   function scene.moved(_, _, dx, dy)
