@@ -10,9 +10,11 @@ SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 all: test
 
-# Installs whatever of $(PACKAGES) is missing (dpkg -s tells; apt-get update only when needed).
+# Installs whatever of $(PACKAGES) is missing: a package counts as there only when dpkg-query says
+# "install ok installed" (dpkg -s also answers for one removed but not purged). apt-get update
+# runs only when something is missing.
 setup:
-	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	@missing=""; for p in $(PACKAGES); do [ "$$(dpkg-query -W -f='$${Status}' $$p 2>/dev/null)" = "install ok installed" ] || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
 	  echo "installing:$$missing"; \
 	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
@@ -20,7 +22,7 @@ setup:
 
 # The LÖVE demos need love, a virtual X server and software OpenGL.
 setup-love:
-	@missing=""; for p in love xvfb xauth libgl1-mesa-dri; do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	@missing=""; for p in love xvfb xauth libgl1-mesa-dri; do [ "$$(dpkg-query -W -f='$${Status}' $$p 2>/dev/null)" = "install ok installed" ] || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
 	  echo "installing:$$missing"; \
 	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing; \
