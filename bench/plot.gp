@@ -1,14 +1,11 @@
-# bench/plot.gp: time per call against error, polygon.lua beside the tutorial baseline.
-# Usage (from the repository root, after bench/run.lua wrote the data files):
-#   gnuplot bench/plot.gp
-#   gnuplot -e "out='other.png'" bench/plot.gp
+# bench/plot.gp: time per call against error, polygon.lua beside the tutorial baseline. From the
+# repository root, after bench/run.lua wrote the data: gnuplot [-e "out='other.png'"] bench/plot.gp
 # Filled marks: LuaJIT; open marks: Lua 5.4 (its errors are the same, only its times differ).
 if (!exists("out")) out = 'bench/speed-vs-error.png'
 if (!exists("jitdata")) jitdata = 'bench/data/luajit.dat'
 if (!exists("pucdata")) pucdata = 'bench/data/lua5.4.dat'
 have(f) = system('[ -f "' . f . '" ] && echo 1 || echo 0') + 0
-hasjit = have(jitdata)
-haspuc = have(pucdata)
+hasjit = have(jitdata); haspuc = have(pucdata)
 if (!hasjit && !haspuc) { print "bench/plot.gp: no data files"; exit status 1 }
 
 set terminal pngcairo size 1650,560 font ",10"
@@ -21,7 +18,7 @@ set grid
 set key top left font ",9"
 set offsets graph 0.15, graph 0.15, graph 0.2, graph 0.2
 
-titles = "'Areas and centres, polygons at 1e6: max error (ulp, floor 0.01)' 'Near-degenerate input: wrong answers (%, floor 0.01)' 'Collision response: max relative error of (dx, dy) (floor 1e-17)'"
+titles = "'Areas and centres, polygons at 1e9: max error (ulp, floor 0.01)' 'Near-degenerate input: wrong answers (%, floor 0.01)' 'Collision response: max relative error of (dx, dy) (floor 1e-17)'"
 ylabels = "'max error (ulp)' 'wrong answers (%)' 'max relative error'"
 
 # labels are spread vertically by the 4th column (the row's place in its panel), in decades

@@ -5,7 +5,7 @@ local polygon = require "polygon"
 local shapes = require "shapes"
 
 local circleV = polygon.polygonCircleCollideV
-local isnumber = shapes.isnumber
+local isnumber = shapes.isNumber
 
 local A = { 0, 0, 10, 0, 10, 10, 0, 10 } -- clockwise on screen
 local WINDINGS = { A, shapes.reverse(A) }

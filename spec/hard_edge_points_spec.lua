@@ -12,23 +12,9 @@ local oracle = require "oracle"
 local prng = require "prng"
 local probe = require "probe"
 local tally = require "tally"
+local shapes = require "shapes"
 
-local function reversed(points)
-  local out = {}
-  local m = #points / 2
-  for i = 1, m do
-    out[2 * i - 1], out[2 * i] = points[2 * (m - i + 1) - 1], points[2 * (m - i + 1)]
-  end
-  return out
-end
-
-local function shifted(points, dx, dy)
-  local out = {}
-  for i = 1, #points - 1, 2 do
-    out[i], out[i + 1] = points[i] + dx, points[i + 1] + dy
-  end
-  return out
-end
+local reversed, shifted = shapes.reverse, shapes.translate
 
 -- The naive crossing test, dividing for the edge's x at height y as the tutorial does.
 local function naiveContains(points, x, y)

@@ -18,27 +18,12 @@ local polygon = require "polygon"
 local oracle = require "oracle"
 local prng = require "prng"
 local tally = require "tally"
+local shapes = require "shapes"
 
--- A convex polygon of m vertices on an ellipse around (cx, cy), in either winding.
+-- A convex polygon of 3 to 8 vertices on an ellipse around (cx, cy), in either winding.
 local function convex(r, cx, cy, size)
-  local m = r:int(3, 8)
-  local angles = {}
-  for i = 1, m do
-    angles[i] = (i - 1 + r:range(-0.35, 0.35)) * 2 * math.pi / m
-  end
-  local ax, ay = size * r:range(0.5, 1.5), size * r:range(0.5, 1.5)
-  local points = {}
-  for i = 1, m do
-    points[2 * i - 1] = cx + ax * math.cos(angles[i])
-    points[2 * i] = cy + ay * math.sin(angles[i])
-  end
-  if r:int(0, 1) == 1 then
-    local reversed = {}
-    for i = 1, m do
-      reversed[2 * i - 1], reversed[2 * i] = points[2 * (m - i + 1) - 1], points[2 * (m - i + 1)]
-    end
-    points = reversed
-  end
+  local points = shapes.convex(r, r:int(3, 8), cx, cy, size, 0.35)
+  if r:int(0, 1) == 1 then points = shapes.reverse(points) end
   return points
 end
 

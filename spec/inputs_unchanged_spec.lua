@@ -3,7 +3,7 @@
 local polygon = require "polygon"
 local shapes = require "shapes"
 
-local deepcopy = shapes.deepcopy
+local deepcopy = shapes.deepCopy
 
 local SQUARE = { 0, 0, 10, 0, 10, 10, 0, 10 }
 local SQUARE_CCW = { 0, 0, 0, 10, 10, 10, 10, 0 }

@@ -355,18 +355,6 @@ function exact.compare(a, b)
   return a.s * c
 end
 
-function exact.equal(a, b)
-  return exact.compare(a, b) == 0
-end
-
-function exact.min(a, b)
-  return exact.compare(a, b) <= 0 and a or b
-end
-
-function exact.max(a, b)
-  return exact.compare(a, b) >= 0 and a or b
-end
-
 --- Sum of an array of values (fewer than 2^28 of them). Positive and negative terms are added
 -- limb by limb into two arrays over the smallest exponent, without carrying: each addition is
 -- below 2^24, so a limb stays below 2^52 and exact. One carry pass at the end, one subtraction.
@@ -572,6 +560,19 @@ end
 function exact.withinUlps(x, a, k)
   local err = exact.abs(exact.sub(exact.new(x), a))
   return exact.compare(err, exact.mul(exact.new(k), exact.ulp(x))) <= 0
+end
+
+--- |x - a| in ulps of a (a exact, x a number): 0 when equal, infinity for x not finite or a = 0 != x.
+function exact.ulpsOff(a, x)
+  if type(x) ~= "number" or x ~= x or x == math.huge or x == -math.huge then
+    return math.huge
+  end
+  local err = exact.tonumber(exact.abs(exact.sub(exact.new(x), a)))
+  local v = exact.tonumber(a)
+  if err == 0 or v == 0 then
+    return err == 0 and 0 or math.huge
+  end
+  return err / exact.tonumber(exact.ulp(v))
 end
 
 --- A readable form: the nearest double, then the exact value as hexadecimal limbs times 2^e.

@@ -389,4 +389,24 @@ function oracle.circleDepth(points, cx, cy, r)
   return best, bux, buy
 end
 
+--- The exact SAT's answer with its push: collides (as oracle.collides), then the depth (as
+-- oracle.depth) and a flat list dx1, dy1, dx2, dy2, ... of the displacements of p2 out of p1 along
+-- each axis whose depth ties with the least to within 1e-12 (all rounded a few times).
+function oracle.push(p1, p2, both)
+  if not oracle.collides(p1, p2, both) then
+    return false
+  end
+  local depth = oracle.depth(p1, p2, both)
+  local moves = {}
+  for _, o in ipairs(oracle.axisOverlaps(p1, p2, both)) do
+    local length = math.sqrt(exact.tonumber(add(mul(o.nx, o.nx), mul(o.ny, o.ny))))
+    local d = exact.tonumber(o.overlap) / length
+    if d <= depth * (1 + 1e-12) then
+      local s = (o.side == "+" and d or -d) / length
+      moves[#moves + 1], moves[#moves + 2] = exact.tonumber(o.nx) * s, exact.tonumber(o.ny) * s
+    end
+  end
+  return true, depth, moves
+end
+
 return oracle

@@ -1,4 +1,4 @@
--- Small table helpers shared by the per-concept specs. They build new tables from
+-- Shape helpers shared by the specs, the benchmark and the examples. They build new tables of
 -- flat point arrays {x1, y1, x2, y2, ...} and share no code with polygon.lua.
 local shapes = {}
 
@@ -20,21 +20,38 @@ function shapes.reverse(points)
   return out
 end
 
+--- A random convex polygon of m vertices around (cx, cy), clockwise on screen, drawn from rng
+-- (spec/support/prng.lua): vertex i at angle (i - 1 + u_i) * 2 pi / m, u_i in -jitter .. jitter
+-- (below 0.5 the angles keep increasing, so it stays convex), on an ellipse whose radii are size
+-- times 0.5 .. 1.5 (drawn after the angles).
+function shapes.convex(rng, m, cx, cy, size, jitter)
+  local angles = {}
+  for i = 1, m do
+    angles[i] = (i - 1 + rng:range(-jitter, jitter)) * 2 * math.pi / m
+  end
+  local rx, ry = size * rng:range(0.5, 1.5), size * rng:range(0.5, 1.5)
+  local out = {}
+  for i = 1, m do
+    out[2 * i - 1], out[2 * i] = cx + rx * math.cos(angles[i]), cy + ry * math.sin(angles[i])
+  end
+  return out
+end
+
 --- A deep copy of any value (tables copied recursively, keys and values, metatable kept).
-function shapes.deepcopy(value, seen)
+function shapes.deepCopy(value, seen)
   if type(value) ~= "table" then return value end
   seen = seen or {}
   if seen[value] then return seen[value] end
   local out = {}
   seen[value] = out
   for k, v in pairs(value) do
-    out[shapes.deepcopy(k, seen)] = shapes.deepcopy(v, seen)
+    out[shapes.deepCopy(k, seen)] = shapes.deepCopy(v, seen)
   end
   return setmetatable(out, getmetatable(value))
 end
 
 --- True when x is not NaN (NaN is the only value not equal to itself).
-function shapes.isnumber(x)
+function shapes.isNumber(x)
   return type(x) == "number" and x == x
 end
 
