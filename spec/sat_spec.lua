@@ -212,7 +212,7 @@ describe("polygonsCollide and polygonsCollideV", function()
     local W = { 0, 15, 15, 0, 20, 20 }
 
     it("moves the second polygon to touching, up to a rounding overlap one more push clears", function()
-      -- The issue's contract: moving by (dx, dy) leaves the shapes touching, "not overlapping by
+      -- The contract: moving by (dx, dy) leaves the shapes touching, "not overlapping by
       -- more than rounding". The rounded push here is 2.4999999999999996, an ulp short, so the
       -- exact test may still see a collision; its depth must then be rounding-sized and the next
       -- push must clear it.
