@@ -49,6 +49,17 @@ for i, name in ipairs(SCENES) do
 end
 local current = 1
 
+-- ".../examples/love/../../polygon.lua" reads better as ".../polygon.lua"
+local function withoutDotDot(path)
+  local shorter
+  repeat
+    path, shorter = path:gsub("/[^/]+/%.%./", "/", 1)
+  until shorter == 0
+  return path
+end
+
+-- Where polygon.lua came from, relative to the repository when it is the repository's own (the
+-- footer of the committed screenshots must not carry the machine's directories).
 local function whereIsPolygon()
   if love.filesystem.getInfo("polygon.lua") then
     return "polygon.lua from the game folder"
@@ -57,10 +68,11 @@ local function whereIsPolygon()
   if not path then
     return "polygon from package.loaders"
   end
-  local shorter
-  repeat -- ".../examples/love/../../polygon.lua" reads better as ".../polygon.lua"
-    path, shorter = path:gsub("/[^/]+/%.%./", "/", 1)
-  until shorter == 0
+  path = withoutDotDot(path)
+  local root = withoutDotDot(love.filesystem.getSource() .. "/../../")
+  if path:sub(1, #root) == root then
+    return "polygon.lua from the repository: " .. path:sub(#root + 1)
+  end
   return "polygon.lua from " .. path
 end
 local origin = whereIsPolygon()
