@@ -355,6 +355,20 @@ function exact.compare(a, b)
   return a.s * c
 end
 
+-- The value digits * 2^low of an accumulator whose limbs may exceed the base (below 2^53): one
+-- carry pass, in place.
+local function carried(digits, low)
+  local carry, k = 0, 1
+  while k <= #digits or carry > 0 do
+    local t = (digits[k] or 0) + carry
+    local limb = t % BASE
+    digits[k] = limb
+    carry = (t - limb) / BASE
+    k = k + 1
+  end
+  return make(1, low, digits)
+end
+
 --- Sum of an array of values (fewer than 2^28 of them). Positive and negative terms are added
 -- limb by limb into two arrays over the smallest exponent, without carrying: each addition is
 -- below 2^24, so a limb stays below 2^52 and exact. One carry pass at the end, one subtraction.
@@ -389,18 +403,7 @@ function exact.sum(list)
       end
     end
   end
-  local function carried(a)
-    local carry, k = 0, 1
-    while k <= #a or carry > 0 do
-      local t = (a[k] or 0) + carry
-      local limb = t % BASE
-      a[k] = limb
-      carry = (t - limb) / BASE
-      k = k + 1
-    end
-    return make(1, low, a)
-  end
-  return exact.sub(carried(acc[1]), carried(acc[-1]))
+  return exact.sub(carried(acc[1], low), carried(acc[-1], low))
 end
 
 --- The exact sum of signs[i] * as[i] * bs[i] over i (doubles; signs are 1 or -1), for long sums
@@ -466,18 +469,7 @@ function exact.sumOfProducts(as, bs, signs)
     deposit(target, whole + 5, a3 * b3 + a4 * b2)
     deposit(target, whole + 6, a4 * b3)
   end
-  local function carried(digits)
-    local carry, k = 0, 1
-    while k <= #digits or carry > 0 do
-      local t = (digits[k] or 0) + carry
-      local limb = t % BASE
-      digits[k] = limb
-      carry = (t - limb) / BASE
-      k = k + 1
-    end
-    return make(1, low, digits)
-  end
-  return exact.sub(carried(acc[1]), carried(acc[-1]))
+  return exact.sub(carried(acc[1], low), carried(acc[-1], low))
 end
 
 -- x * 2^k for a double x and an integer k, by steps that never round: the caller guarantees that
