@@ -5,10 +5,11 @@
 -- the Lua pattern. Prints a markdown section (also to --out), writes gnuplot points to --data, and
 -- exits non-zero if a row raised an error, a function is missing or a checksum is NaN.
 -- BENCH_QUICK=1 in the environment is --quick: small inputs and few rounds, a smoke test.
--- Every row runs in rounds. Each round loads both sides afresh (new function prototypes; on LuaJIT
--- all traces flushed), warms each kernel once, then times polygon.lua and its reference back to
--- back, alternating which goes first (ABBAAB...). The row reports the median of the per-round
--- ratios and their interquartile range: drift of the shared machine hits both sides of a ratio.
+-- Each row loads both sides afresh (new function prototypes; on LuaJIT all traces flushed first),
+-- then runs in rounds, each timing polygon.lua and its reference back to back, alternating which
+-- goes first (ABBAAB...). The row reports the median of the per-round ratios and their
+-- interquartile range: drift of the shared machine hits both sides of a ratio alike. (Reloading
+-- and flushing in every round left LuaJIT interpreting after a few rows: 20 times slower.)
 -- Errors are counted against spec/support/oracle.lua (exact big-integer arithmetic sharing no code
 -- with polygon.lua), computed once per input outside every timing.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
@@ -61,7 +62,7 @@ local function cpuName()
 end
 
 ---------------------------------------------------------------------------------------------
--- Kernels: one freshly loaded chunk per side and round; every result is folded into acc, which
+-- Kernels: one freshly loaded chunk per side and row; every result is folded into acc, which
 -- the caller adds to a printed checksum, so no call can be optimised away.
 ---------------------------------------------------------------------------------------------
 local FOLDS = {
@@ -356,6 +357,7 @@ local function measureRow(r)
   r.missing = not sideOf(loadFresh("polygon"), r.fname, wl)
   if r.missing then failures[#failures + 1] = r.fname .. " is missing from polygon.lua"; return end
   collectgarbage("collect")
+  if jit then jit.flush() end
   local s = sides(r)
   -- calibrated twice: the first pass pays for compiling traces (LuaJIT) and would leave too few
   local reps = {}
@@ -367,9 +369,6 @@ local function measureRow(r)
   end
   local ns, ratios = { {}, {} }, {}
   for round = 1, ROUNDS do
-    if round > 1 then s = sides(r) end
-    if jit then jit.flush() end
-    for k = 1, 2 do s[k].kernel(wl.n, reps[k]) end           -- warm up (and record traces)
     local t = {}
     for j = 1, 2 do
       local k = (round + j) % 2 + 1                           -- module first in odd rounds
