@@ -127,7 +127,7 @@ local function quantile(list, q)
   if #s == 0 then return nil end
   local h = 1 + (#s - 1) * q
   local lo = math.floor(h)
-  return s[lo] + (h - lo) * ((s[lo + 1] or s[lo]) - s[lo])
+  return h == lo and s[lo] or s[lo] + (h - lo) * (s[lo + 1] - s[lo])
 end
 
 ---------------------------------------------------------------------------------------------
