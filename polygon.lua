@@ -289,6 +289,24 @@ end
 -- Measures: winding, area, type, centre
 --------------------------------------------------------------------------------------------------
 
+-- shared helper: lead moves it to the kernels
+-- Raises fname's error when points holds a NaN or an infinite coordinate (x - x is 0 exactly
+-- for every finite x, NaN otherwise). O(n): only for the rare paths that a non-finite value
+-- always reaches (a NaN or infinite sum, a failed filter). level as in checkPoints.
+local function checkFinite(points, n, fname, argname, level)
+  for i = 1, n do
+    local v = points[i]
+    if v - v ~= 0 then
+      error(("%s: %s holds a non-finite coordinate, got %s at [%d]")
+        :format(fname, argname, tostring(v), i), level)
+    end
+  end
+end
+
+-- The PUC polygonType filter's bound on a turn's rounding error, squared: CROSS_BOUND^2 times
+-- 2 (Cauchy-Schwarz on (|l| + |r|)^2) times 2 (room for the rounding of the sum of squares).
+local TURN_BOUND_SQ = 4 * CROSS_BOUND * CROSS_BOUND
+
 --- The winding order as seen on screen (y down).
 -- @param points flat array {x1, y1, ...}
 -- @return "cw" or "ccw"; nil for fewer than 3 points or zero signed area. Exact.
@@ -335,20 +353,15 @@ function polygon.polygonAreaAccurate(points)
   return abs(expCompress()) * 0.5 / s / s
 end
 
---- Whether the polygon is convex.
--- Checks every vertex (the tutorial skips the last one). Repeated consecutive vertices and
--- collinear vertices that go on forward are allowed; a zero turn that doubles back (a spike) is
--- concave, and so is a polygon whose turns all agree but which winds around more than once
--- (a pentagram): its edges' x directions change sign more than twice.
--- @return "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
-function polygon.polygonType(points)
-  local n = checkPoints(points, "polygonType")
-  if n < 6 then return nil end
-  -- Walk the turns at every vertex, starting at the last one: the previous vertex is the last
-  -- one before it that differs from it, and a next vertex equal to the current one is skipped.
+-- The careful walk for polygonType: every turn through cross's exact fallback, repeated vertices
+-- skipped, collinear vertices told apart from spikes. Taken only when the one-pass filter below
+-- cannot decide (a turn within rounding of zero, a repeated vertex, an overflow or a non-finite
+-- coordinate, which it checks for first). Every coordinate is converted before it is compared.
+local function typeCareful(points, n)
+  checkFinite(points, n, "polygonType", "points", 4)
   local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
   local j = n - 3
-  while j > 0 and points[j] == cx and points[j + 1] == cy do j = j - 2 end
+  while j > 0 and points[j] + 0.0 == cx and points[j + 1] + 0.0 == cy do j = j - 2 end
   if j < 0 then return nil end   -- all points are one point
   local px, py = points[j] + 0.0, points[j + 1] + 0.0
   local turn, spike = 0, false
@@ -356,15 +369,7 @@ function polygon.polygonType(points)
   for i = 1, n - 1, 2 do
     local qx, qy = points[i] + 0.0, points[i + 1] + 0.0
     if qx ~= cx or qy ~= cy then
-      -- cross(p, c, c, q) with its filter written out, as the per-vertex call would cost the
-      -- PUC interpreters half the loop: when l and r differ in sign |l + r| <= |l - r| always
-      -- passes; when they agree |l + r| = |l| + |r|, Shewchuk's bound.
-      local l = (cx - px) * (qy - cy)
-      local r = (cy - py) * (qx - cx)
-      local s, e = l - r, l + r
-      if e < 0 then e = -e end
-      e = CROSS_BOUND * e
-      if not (s >= e or -s >= e) then s = crossExact(px, py, cx, cy, cx, cy, qx, qy) end
+      local s = cross(px, py, cx, cy, cx, cy, qx, qy)
       if s > 0 then
         if turn < 0 then return "concave" end
         turn = 1
@@ -393,6 +398,121 @@ function polygon.polygonType(points)
   if turn == 0 then return nil end   -- no turn at all: every point on one line
   if spike or flips > 2 then return "concave" end
   return "convex"
+end
+
+-- The one-pass filter of polygonType: "convex" or "concave" when every turn's sign is certain
+-- from floating point, false when typeCareful must decide. The turn at vertex c (edge e into it,
+-- f out of it) is e x f = l - r, l = ex fy, r = ey fx: cross's arithmetic written out, as a call
+-- per vertex costs the PUC interpreters half the loop and LuaJIT a side trace per branch.
+-- Its error is below CROSS_BOUND (|l| + |r|) (Shewchuk's bound); a semi-static filter bounds
+-- it for all turns at once. Convex means all turns certainly one sign and the edges' x
+-- direction changing sign exactly twice around the polygon (once more per extra winding, as in
+-- a pentagram): with every turn below a half turn, the signs of dx run + (0) - (0) + once per
+-- winding.
+local typeFiltered
+if rawget(_G, "jit") then
+  -- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
+  -- math.abs compile to single instructions; data-dependent branches became side traces and
+  -- made this loop over twice the baseline's time (bench/run.lua --only 'polygonType ord').
+  -- dirSign is sign(dx) in {-1, 0, 1} without a branch (2^1123 |dx| >= 1 for every nonzero
+  -- double). Around m edges whose turns are all certain, no two consecutive dx are 0 and each
+  -- winding changes the sign twice (directly, or through one 0 which zeroes two products), so
+  -- the sum of the products of consecutive signs is m - 4 per winding.
+  -- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
+  -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
+  -- NaN or infinite, so nothing is certain.
+  typeFiltered = function(points, n)
+    local cx, cy = points[n - 1], points[n]
+    local ex, ey = cx - points[n - 3], cy - points[n - 2]
+    local dirPrev = min(1, max(-1, ex * 2^1023 * 2^100))
+    local lo, hi, errSum, dirAgree = huge, -huge, 0, 0
+    for i = 1, n - 1, 2 do
+      local qx, qy = points[i], points[i + 1]
+      local fx, fy = qx - cx, qy - cy
+      local l, r = ex * fy, ey * fx
+      local s = l - r
+      lo, hi = min(lo, s), max(hi, s)
+      errSum = errSum + abs(l + r)
+      local dirSign = min(1, max(-1, fx * 2^1023 * 2^100))
+      dirAgree = dirAgree + dirSign * dirPrev
+      dirPrev = dirSign
+      cx, cy, ex, ey = qx, qy, fx, fy
+    end
+    local bound = CROSS_BOUND * errSum
+    if lo > bound or hi < -bound then
+      if dirAgree == n / 2 - 4 then return "convex" end
+      return "concave"
+    end
+    if lo < -bound and hi > bound then return "concave" end
+    return false
+  end
+else
+  -- PUC Lua: math.min/max/abs are C calls (about 16 ns each), so a branchy loop with one
+  -- comparison per vertex in the common case. The first turn's sign picks ySign, which flips y
+  -- so that every turn of a convex polygon is positive; the filter bounds (|l| + |r|)^2 by
+  -- 2 (l^2 + r^2) and compares squares (4 for the sum's rounding; NaN, overflow or underflow
+  -- of the squares only make it fail).
+  typeFiltered = function(points, n)
+    local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
+    local ex, ey = cx - points[n - 3], cy - points[n - 2]
+    local fx, fy = points[1] - cx, points[2] - cy
+    local l, r = ex * fy, ey * fx
+    local firstTurn = l - r
+    local ySign = 1.0
+    if firstTurn < 0 then
+      ySign, firstTurn, ey, cy = -1.0, -firstTurn, -ey, -cy
+    elseif not (firstTurn > 0) then   -- luacheck: ignore 581 (NaN too)
+      return false   -- zero or NaN
+    end
+    local firstBound = l + r
+    if firstBound < 0 then firstBound = -firstBound end
+    firstBound = CROSS_BOUND * firstBound
+    -- the x direction of the last edge with a nonzero one before the first vertex
+    local dir = ex
+    if dir == 0 then dir = (points[n - 3] + 0.0) - points[n - 5] end
+    if dir > 0 then dir = 1.0 elseif dir < 0 then dir = -1.0 else return false end
+    local lo, errSq, flips = huge, 0.0, 0
+    for i = 1, n - 1, 2 do
+      local qx, qy = points[i] + 0.0, points[i + 1] * ySign
+      fx, fy = qx - cx, qy - cy
+      l, r = ex * fy, ey * fx
+      local s = l - r
+      if s < lo then
+        if not (s > 0) then   -- luacheck: ignore 581 (NaN too)
+          -- a turn against the first: concave if both are certain, else the careful walk
+          local bound = l + r
+          if bound < 0 then bound = -bound end
+          if -s > CROSS_BOUND * bound and firstTurn > firstBound then return "concave" end
+          return false
+        end
+        lo = s
+      end
+      errSq = errSq + l * l + r * r
+      if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
+      cx, cy, ex, ey = qx, qy, fx, fy
+    end
+    if lo * lo > TURN_BOUND_SQ * errSq then
+      if flips == 2 then return "convex" end
+      return "concave"
+    end
+    return false
+  end
+end
+
+--- Whether the polygon is convex.
+-- Checks every vertex (the tutorial skips the last one). Repeated consecutive vertices and
+-- collinear vertices that go on forward are allowed; a zero turn that doubles back (a spike) is
+-- concave, and so is a polygon whose turns all agree but which winds around more than once
+-- (a pentagram): its edges' x directions change sign more than twice.
+-- Raises an error for a non-finite coordinate (checked on the careful path, which every
+-- NaN or infinity reaches; on PUC Lua a polygon found concave before it is read is concave).
+-- @return "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
+function polygon.polygonType(points)
+  local n = checkPoints(points, "polygonType")
+  if n < 6 then return nil end
+  local kind = typeFiltered(points, n)
+  if kind == false then kind = typeCareful(points, n) end
+  return kind
 end
 
 --- The centre as the tutorial defines it: the mean of the vertices.
