@@ -304,8 +304,8 @@ local function checkFinite(points, n, fname, argname, level)
 end
 
 -- The PUC polygonType filter's bound on a turn's rounding error, squared: CROSS_BOUND^2 times
--- 2 (Cauchy-Schwarz on (|l| + |r|)^2) times 2 (room for the rounding of the sum of squares).
-local TURN_BOUND_SQ = 4 * CROSS_BOUND * CROSS_BOUND
+-- 2, room for the rounding of the sum of squares and of the squares.
+local TURN_BOUND_SQ = 2 * CROSS_BOUND * CROSS_BOUND
 
 --- The winding order as seen on screen (y down).
 -- @param points flat array {x1, y1, ...}
@@ -409,7 +409,7 @@ end
 -- direction changing sign exactly twice around the polygon (once more per extra winding, as in
 -- a pentagram): with every turn below a half turn, the signs of dx run + (0) - (0) + once per
 -- winding.
-local typeFiltered
+local polygonType
 if rawget(_G, "jit") then
   -- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
   -- math.abs compile to single instructions; data-dependent branches became side traces and
@@ -417,11 +417,11 @@ if rawget(_G, "jit") then
   -- dirSign is sign(dx) in {-1, 0, 1} without a branch (2^1123 |dx| >= 1 for every nonzero
   -- double). Around m edges whose turns are all certain, no two consecutive dx are 0 and each
   -- winding changes the sign twice (directly, or through one 0 which zeroes two products), so
-  -- the sum of the products of consecutive signs is m - 4 per winding.
+  -- the sum of the products of consecutive signs is m - 4k for k windings.
   -- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
   -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
   -- NaN or infinite, so nothing is certain.
-  typeFiltered = function(points, n)
+  local function typeFiltered(points, n)
     local cx, cy = points[n - 1], points[n]
     local ex, ey = cx - points[n - 3], cy - points[n - 2]
     local dirPrev = min(1, max(-1, ex * 2^1023 * 2^100))
@@ -437,6 +437,7 @@ if rawget(_G, "jit") then
       dirAgree = dirAgree + dirSign * dirPrev
       dirPrev = dirSign
       cx, cy, ex, ey = qx, qy, fx, fy
+      if lo * hi < 0 then break end   -- turns of both signs seen: concave if certain
     end
     local bound = CROSS_BOUND * errSum
     if lo > bound or hi < -bound then
@@ -446,56 +447,92 @@ if rawget(_G, "jit") then
     if lo < -bound and hi > bound then return "concave" end
     return false
   end
+  polygonType = function(points)
+    local n = checkPoints(points, "polygonType")
+    if n < 6 then return nil end
+    local kind = typeFiltered(points, n)
+    if kind == false then kind = typeCareful(points, n) end
+    return kind
+  end
 else
-  -- PUC Lua: math.min/max/abs are C calls (about 16 ns each), so a branchy loop with one
-  -- comparison per vertex in the common case. The first turn's sign picks ySign, which flips y
-  -- so that every turn of a convex polygon is positive; the filter bounds (|l| + |r|)^2 by
-  -- 2 (l^2 + r^2) and compares squares (4 for the sum's rounding; NaN, overflow or underflow
-  -- of the squares only make it fail).
-  typeFiltered = function(points, n)
+  -- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
+  -- function with a branchy loop, one comparison per vertex in the common case, unrolled by
+  -- two so that no multiple assignment moves the vertex and edge along. The first turn's sign
+  -- picks ySign, which flips y so that every turn of a convex polygon is positive. The filter
+  -- bounds every |l + r| by the square root of the sum of their squares and compares squares
+  -- (NaN or overflow only make it fail; squares that underflow come with an lo that does too).
+  polygonType = function(points)
+    if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonType") end
+    local n = #points
+    if n < 6 then return nil end
     local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
     local ex, ey = cx - points[n - 3], cy - points[n - 2]
-    local fx, fy = points[1] - cx, points[2] - cy
+    local qx, qy = points[1] + 0.0, points[2] + 0.0
+    local fx, fy = qx - cx, qy - cy
     local l, r = ex * fy, ey * fx
-    local firstTurn = l - r
+    local s = l - r
     local ySign = 1.0
-    if firstTurn < 0 then
-      ySign, firstTurn, ey, cy = -1.0, -firstTurn, -ey, -cy
-    elseif not (firstTurn > 0) then   -- luacheck: ignore 581 (NaN too)
-      return false   -- zero or NaN
+    if s < 0 then
+      ySign, s, l, r = -1.0, -s, -l, -r
+      cy, ey, qy, fy = -cy, -ey, -qy, -fy
     end
-    local firstBound = l + r
-    if firstBound < 0 then firstBound = -firstBound end
-    firstBound = CROSS_BOUND * firstBound
-    -- the x direction of the last edge with a nonzero one before the first vertex
+    local e = l + r
+    local firstCertain = s > CROSS_BOUND * (e < 0 and -e or e)
+    -- the x direction (+-1) of the last edge before vertex 1 that has one
     local dir = ex
     if dir == 0 then dir = (points[n - 3] + 0.0) - points[n - 5] end
-    if dir > 0 then dir = 1.0 elseif dir < 0 then dir = -1.0 else return false end
-    local lo, errSq, flips = huge, 0.0, 0
-    for i = 1, n - 1, 2 do
-      local qx, qy = points[i] + 0.0, points[i + 1] * ySign
-      fx, fy = qx - cx, qy - cy
-      l, r = ex * fy, ey * fx
-      local s = l - r
-      if s < lo then
-        if not (s > 0) then   -- luacheck: ignore 581 (NaN too)
-          -- a turn against the first: concave if both are certain, else the careful walk
-          local bound = l + r
-          if bound < 0 then bound = -bound end
-          if -s > CROSS_BOUND * bound and firstTurn > firstBound then return "concave" end
-          return false
-        end
-        lo = s
-      end
-      errSq = errSq + l * l + r * r
-      if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
+    if dir > 0 then dir = 1.0 elseif dir < 0 then dir = -1.0 else firstCertain = false end
+    local lo, errSq, flips, start = huge, 0.0, 0, 1
+    if n % 4 == 2 then   -- an odd number of vertices: keep the first turn, go on from vertex 1
+      lo, errSq, start = s, e * e, 3
+      if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
       cx, cy, ex, ey = qx, qy, fx, fy
     end
-    if lo * lo > TURN_BOUND_SQ * errSq then
-      if flips == 2 then return "convex" end
-      return "concave"
+    -- A turn s <= 0 leaves the loop (so does a first turn of 0 or NaN), as does any turn
+    -- against the first one: concave when both are certain.
+    if firstCertain then
+      for i = start, n - 3, 4 do
+        qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
+        qy = points[i + 1] * ySign
+        fx = qx - cx
+        fy = qy - cy
+        l = ex * fy
+        r = ey * fx
+        s = l - r
+        if s < lo then
+          if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
+          lo = s
+        end
+        e = l + r
+        errSq = errSq + e * e
+        if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
+        cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
+        cy = points[i + 3] * ySign
+        ex = cx - qx
+        ey = cy - qy
+        l = fx * ey
+        r = fy * ex
+        s = l - r
+        if s < lo then
+          if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
+          lo = s
+        end
+        e = l + r
+        errSq = errSq + e * e
+        if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
+      end
+      if s > 0 then
+        if lo * lo > TURN_BOUND_SQ * errSq then
+          if flips == 2 then return "convex" end
+          return "concave"
+        end
+      else
+        e = l + r
+        if -s > CROSS_BOUND * (e < 0 and -e or e) then return "concave" end
+      end
     end
-    return false
+    local kind = typeCareful(points, n)
+    return kind
   end
 end
 
@@ -504,16 +541,10 @@ end
 -- collinear vertices that go on forward are allowed; a zero turn that doubles back (a spike) is
 -- concave, and so is a polygon whose turns all agree but which winds around more than once
 -- (a pentagram): its edges' x directions change sign more than twice.
--- Raises an error for a non-finite coordinate (checked on the careful path, which every
--- NaN or infinity reaches; on PUC Lua a polygon found concave before it is read is concave).
+-- A non-finite coordinate raises an error once read (every NaN or infinity sends the filter
+-- to the careful walk, which checks); a polygon found concave before one is read is concave.
 -- @return "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
-function polygon.polygonType(points)
-  local n = checkPoints(points, "polygonType")
-  if n < 6 then return nil end
-  local kind = typeFiltered(points, n)
-  if kind == false then kind = typeCareful(points, n) end
-  return kind
-end
+polygon.polygonType = polygonType
 
 --- The centre as the tutorial defines it: the mean of the vertices.
 -- @return cx, cy; nil for fewer than 3 points.
