@@ -617,43 +617,76 @@ end
 -- y. That half-open rule puts a point on an edge shared by two polygons in exactly one of them.
 -- The tutorial divides to find the edge's x; here the comparison is the exact side test
 -- x <= x'  <=>  (p2 - p1) x (q - p1) >= 0 when the edge goes down (y2 > y1), <= 0 when it goes up.
+-- The walk carries whether the last vertex was at or below the ray's height (y >= the ray's y,
+-- screen down) and reads an edge's x coordinates only where it crosses: per vertex one read and
+-- one comparison (on Lua 5.4 the two-sided test per edge cost about a third more; on LuaJIT
+-- its branches grew a tree of side traces). x and y are converted, and so is every coordinate
+-- before it is compared, so that Lua 5.3+ integers count as the doubles they convert to.
 local function contains(points, n, x, y)
-  local inside = false
-  local x1, y1 = points[n - 1], points[n]
-  for i = 1, n - 1, 2 do
-    local x2, y2 = points[i], points[i + 1]
-    if (y1 >= y) ~= (y2 >= y) then
-      if x <= x1 and x <= x2 then
-        inside = not inside
-      elseif x <= x1 or x <= x2 then
-        local s = cross(x1, y1, x2, y2, x1, y1, x, y)
-        if y2 > y1 then
-          if s >= 0 then inside = not inside end
-        elseif s <= 0 then
-          inside = not inside
+  -- numbers, not booleans: LuaJIT types true and false apart, and a loop-carried boolean that
+  -- flips aborted its traces ("persistent type instability")
+  local crossings, below = 0, 0
+  if points[n] + 0.0 >= y then below = 1 end
+  for i = 2, n, 2 do
+    local y2 = points[i] + 0.0
+    if below == 1 then
+      if y2 < y then   -- the edge from vertex i - 2 goes up across the ray's height
+        below = 0
+        local j = i == 2 and n or i - 2
+        local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
+        if x <= x1 and x <= x2 then
+          crossings = crossings + 1
+        elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) <= 0 then
+          crossings = crossings + 1
         end
       end
+    elseif y2 >= y then   -- it goes down across
+      below = 1
+      local j = i == 2 and n or i - 2
+      local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
+      if x <= x1 and x <= x2 then
+        crossings = crossings + 1
+      elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) >= 0 then
+        crossings = crossings + 1
+      end
     end
-    x1, y1 = x2, y2
   end
-  return inside
+  return crossings % 2 == 1
 end
 
--- contains with the argument checks of polygonContains and Polygon:contains, whose callers'
--- lines the errors point at (level 4).
+-- The O(1) checks of polygonContains and Polygon:contains, raised at their callers' lines
+-- (level counted from checkQuery). A NaN or infinite x or y would make the crossing rule
+-- meaningless.
+local function checkQuery(fname, points, x, y, level)
+  local n = checkPoints(points, fname, "points", level + 1)
+  checkNumber(x, fname, "x", level + 1)
+  checkNumber(y, fname, "y", level + 1)
+  if x - x ~= 0 or y - y ~= 0 then
+    error(("%s: x and y must be finite, got %s, %s"):format(fname, tostring(x), tostring(y)),
+      level)
+  end
+  return n
+end
+
+-- contains with the argument checks of Polygon:contains.
 local function checkedContains(fname, points, x, y)
-  local n = checkPoints(points, fname, "points", 4)
-  checkNumber(x, fname, "x", 4)
-  checkNumber(y, fname, "y", 4)
+  local n = checkQuery(fname, points, x, y, 4)
   if n < 6 then return false end
-  return contains(points, n, x, y)
+  return contains(points, n, x + 0.0, y + 0.0)
 end
 
 --- Whether (x, y) lies inside the polygon, by the crossing rule with the tutorial's half-open
--- boundary. Works for concave and self-intersecting polygons (even-odd). Exact.
+-- boundary. Works for concave and self-intersecting polygons (even-odd). Exact. x and y must be
+-- finite (an error otherwise); the polygon's coordinates are not checked (validate does that).
 -- @return true or false; false for fewer than 3 points.
 function polygon.polygonContains(points, x, y)
-  local inside = checkedContains("polygonContains", points, x, y)
+  -- the checks written out where they pass (a Lua call costs about 13 ns on Lua 5.4)
+  local n = type(points) == "table" and #points or -1
+  if n % 2 ~= 0 or type(x) ~= "number" or type(y) ~= "number" or x - x ~= 0 or y - y ~= 0 then
+    checkQuery("polygonContains", points, x, y, 3)
+  end
+  if n < 6 then return false end
+  local inside = contains(points, n, x + 0.0, y + 0.0)
   return inside   -- not a tail call: the argument errors point at the caller's line
 end
 
