@@ -640,64 +640,144 @@ end
 -- @return "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
 polygon.polygonType = polygonType
 
+-- The vertex sums of polygonCenter, each coordinate times scale (a power of two), compensated:
+-- TwoSum carries each addition's rounding error into errX, errY.
+local function vertexSums(points, n, scale)
+  local sumX, sumY, errX, errY = 0.0, 0.0, 0.0, 0.0
+  for i = 1, n - 1, 2 do
+    local x, y = points[i] * scale, points[i + 1] * scale
+    local t = sumX + x
+    local v = t - sumX
+    errX = errX + ((sumX - (t - v)) + (x - v))
+    sumX = t
+    t = sumY + y
+    v = t - sumY
+    errY = errY + ((sumY - (t - v)) + (y - v))
+    sumY = t
+  end
+  return sumX + errX, sumY + errY
+end
+
 --- The centre as the tutorial defines it: the mean of the vertices.
--- @return cx, cy; nil for fewer than 3 points.
+-- Within an ulp or two of exact wherever the polygon is and whatever its size (compensated
+-- sums; sums that overflow are redone on coordinates scaled down by a power of two).
+-- @return cx, cy; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function polygon.polygonCenter(points)
   local n = checkPoints(points, "polygonCenter")
   if n < 6 then return nil end
-  -- Compensated sums (TwoSum carries each addition's rounding error into ex, ey), so the mean is
-  -- within an ulp or two of exact wherever the polygon is and whatever its size.
-  local sx, sy, ex, ey = 0.0, 0.0, 0.0, 0.0
-  for i = 1, n - 1, 2 do
-    local x, y = points[i] + 0.0, points[i + 1] + 0.0
-    local t = sx + x
-    local v = t - sx
-    ex = ex + ((sx - (t - v)) + (x - v))
-    sx = t
-    t = sy + y
-    v = t - sy
-    ey = ey + ((sy - (t - v)) + (y - v))
-    sy = t
-  end
   local m = n / 2
-  return (sx + ex) / m, (sy + ey) / m
+  local sumX, sumY = vertexSums(points, n, 1.0)
+  if sumX - sumX ~= 0 or sumY - sumY ~= 0 then   -- NaN or infinite: rare, so check here
+    checkFinite(points, n, "polygonCenter", "points", 3)
+    local scale = 1.0   -- finite coordinates whose sum overflowed: scale by 2^-k, 2^k >= m
+    while scale * m > 1 do scale = scale * 0.5 end
+    sumX, sumY = vertexSums(points, n, scale)
+    return sumX / m / scale, sumY / m / scale
+  end
+  return sumX / m, sumY / m
 end
 
+-- Adds a * b * c to the scratch expansion exactly (products below 2^996, none underflowing).
+-- shared helper: lead moves it to the kernels
+local function expAddTriple(a, b, c)
+  local hi, lo = twoProduct(a, b)
+  expAddProduct(hi, c)
+  expAddProduct(lo, c)
+end
+
+-- The moment sum (u_i + u_j)(u_i v_j - u_j v_i) over the edges i -> j, as an exact expansion in
+-- EXP of the coordinates times s; u at offset du, v at dv of each vertex (x moment: 0, 1).
+local function momentExact(points, n, s, du, dv)
+  expLen = 0
+  local limit = 32   -- as in shoelaceExact: compress whenever the expansion has grown by 32
+  local ui, vi = points[n - 1 + du] * s, points[n - 1 + dv] * s
+  for k = 1, n - 1, 2 do
+    local uj, vj = points[k + du] * s, points[k + dv] * s
+    -- (u_i + u_j)(u_i v_j - u_j v_i) = u_i^2 v_j + u_i u_j v_j - u_i u_j v_i - u_j^2 v_i
+    expAddTriple(ui, ui, vj)
+    expAddTriple(ui, uj, vj)
+    expAddTriple(-ui, uj, vi)
+    expAddTriple(-uj, uj, vi)
+    ui, vi = uj, vj
+    if expLen > limit then
+      expCompress()
+      limit = expLen + 32
+    end
+  end
+  return expCompress()
+end
+
+-- The centroid from exact sums (the rare path of polygonCentroid): twice the area and the two
+-- moments as expansions, each rounded once, then divided: a few ulps of the centroid. The
+-- coordinates are scaled by a power of two so that every product of three stays below 2^900;
+-- exact unless some product of three coordinates underflows. nil for an exact area of zero.
+local function centroidExact(points, n)
+  local big = 0.0
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v < 0 then v = -v end
+    if v > big then big = v end
+  end
+  local s = powerScale(big, 2^236, 2^300)   -- 2^300 cubed is 2^900; the range must span 2^64
+  local sScaled = shoelaceExact(points, n)   -- twice the area, of the coordinates times sScaled
+  local area2 = expCompress() * (s / sScaled) * (s / sScaled)
+  if area2 == 0 then return nil end
+  local momentX = momentExact(points, n, s, 0, 1)
+  local momentY = -momentExact(points, n, s, 1, 0)   -- (y_i + y_j)(x_i y_j - x_j y_i), swapped
+  return momentX / (3 * area2) / s, momentY / (3 * area2) / s
+end
+
+-- The fast path of polygonCentroid trusts its float sums while the fan's products have not
+-- cancelled by more than this factor times m: a fat polygon's products add up to about m / pi
+-- times twice its area, a sliver's (or a cancelling, self-intersecting one's) to far more.
+local CANCELLATION_LIMIT = 64
+
 --- The area centroid, the point a physics step rotates a uniform polygon about.
--- @return cx, cy; nil for fewer than 3 points or zero (exact) signed area.
+-- Float sums relative to vertex 1 for ordinary polygons; where they cancel (slivers, nearly
+-- degenerate or self-cancelling polygons) exact sums instead: within a few ulps of the
+-- coordinates' magnitude of the exact centroid either way.
+-- @return cx, cy; nil for fewer than 3 points or zero (exact) signed area. A non-finite
+-- coordinate raises an error.
 function polygon.polygonCentroid(points)
   local n = checkPoints(points, "polygonCentroid")
   if n < 6 then return nil end
-  if areaSign(points, n) == 0 then return nil end
   local x0, y0 = points[1] + 0.0, points[2] + 0.0
   -- The sums below are cubic in the coordinates (relative to vertex 1): scale x and y each by a
   -- power of two to near 1 so that they neither overflow nor underflow, and scale back at the
-  -- end (x by kx: the area scales by kx ky, the x moment by kx^2 ky).
-  local mx, my = 0.0, 0.0
+  -- end (x by kx: the area scales by kx ky, the x moment by kx^2 ky). 2^-32 and 2^32 leave
+  -- cubes between 2^-96 and 2^96 whatever the polygon's extent.
+  local extentX, extentY = 0.0, 0.0
   for i = 3, n - 1, 2 do
-    mx, my = max(mx, abs(points[i] - x0)), max(my, abs(points[i + 1] - y0))
+    extentX, extentY = max(extentX, abs(points[i] - x0)), max(extentY, abs(points[i + 1] - y0))
   end
-  local kx, ky = powerScale(mx, 2^-32, 2^32), powerScale(my, 2^-32, 2^32)
-  local a2, sx, sy = 0.0, 0.0, 0.0
+  local kx, ky = powerScale(extentX, 2^-32, 2^32), powerScale(extentY, 2^-32, 2^32)
+  local area2, momentX, momentY, magnitude = 0.0, 0.0, 0.0, 0.0
   -- relative to vertex 1, the edges from and to it add nothing: start at edge 2 -> 3
   local xi, yi = 0.0, 0.0
   for i = 3, n - 1, 2 do
     local xj, yj = (points[i] - x0) * kx, (points[i + 1] - y0) * ky
-    local c = xi * yj - xj * yi
-    a2 = a2 + c
-    sx = sx + (xi + xj) * c
-    sy = sy + (yi + yj) * c
+    local l, r = xi * yj, xj * yi
+    local c = l - r
+    area2 = area2 + c
+    momentX = momentX + (xi + xj) * c
+    momentY = momentY + (yi + yj) * c
+    magnitude = magnitude + (l < 0 and -l or l) + (r < 0 and -r or r)
     xi, yi = xj, yj
   end
-  if a2 == 0 then   -- the rounded sum lost everything: take the exact area, scaled by kx ky
-    local s = shoelaceExact(points, n)   -- the expansion holds it scaled by s^2
-    a2 = expCompress() * (kx / s) * (ky / s)
+  local cx, cy
+  -- NaN and infinite sums fail the test too
+  if (area2 < 0 and -area2 or area2) * (CANCELLATION_LIMIT * n / 2) > magnitude then
+    cx, cy = x0 + momentX / (3 * area2) / kx, y0 + momentY / (3 * area2) / ky
+  else
+    checkFinite(points, n, "polygonCentroid", "points", 3)
+    cx, cy = centroidExact(points, n)
+    if cx == nil then return nil end
   end
-  local cx, cy = x0 + sx / (3 * a2) / kx, y0 + sy / (3 * a2) / ky
-  if cx ~= cx or cy ~= cy then
-    -- Only outside the exact range: a sliver far thinner than it is long, or coordinates of
-    -- magnitudes too far apart for one scale each. Its vertex mean is finite and nearby.
-    cx, cy = polygon.polygonCenter(points)
+  if cx - cx ~= 0 or cy - cy ~= 0 then
+    -- Only outside the exact range: coordinates so small that products of three underflow, or
+    -- of magnitudes too far apart for one scale each. Its vertex mean is finite and nearby.
+    cx, cy = vertexSums(points, n, 1.0)
+    cx, cy = cx / (n / 2), cy / (n / 2)
   end
   return cx, cy
 end
