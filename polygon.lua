@@ -556,8 +556,8 @@ else
   -- bounds every |l + r| by the square root of the sum of their squares and compares squares
   -- (NaN or overflow only make it fail; squares that underflow come with an lo that does too).
   polygonType = function(points)
-    if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonType") end
-    local n = #points
+    local n = type(points) == "table" and #points or -1
+    if n % 2 ~= 0 then checkPoints(points, "polygonType") end
     if n < 6 then return nil end
     local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
     local ex, ey = cx - points[n - 3], cy - points[n - 2]
@@ -566,25 +566,35 @@ else
     local l, r = ex * fy, ey * fx
     local s = l - r
     local ySign = 1.0
-    if s < 0 then
-      ySign, s, l, r = -1.0, -s, -l, -r
-      cy, ey, qy, fy = -cy, -ey, -qy, -fy
+    if s < 0 then   -- (one statement each: a multiple assignment costs a move per value)
+      ySign = -1.0
+      s = -s
+      cy = -cy
+      ey = -ey
+      qy = -qy
+      fy = -fy
     end
-    local e = l + r
-    local firstCertain = s > CROSS_BOUND * (e < 0 and -e or e)
+    local firstTurn = s
+    local e = l + r   -- the first turn's error bound is CROSS_BOUND |e|
+    local firstBound = e * e
     -- the x direction (+-1) of the last edge before vertex 1 that has one
     local dir = ex
     if dir == 0 then dir = (points[n - 3] + 0.0) - points[n - 5] end
-    if dir > 0 then dir = 1.0 elseif dir < 0 then dir = -1.0 else firstCertain = false end
+    if dir > 0 then dir = 1.0 elseif dir < 0 then dir = -1.0 else s = 0 end
     local lo, errSq, flips, start = huge, 0.0, 0, 1
     if n % 4 == 2 then   -- an odd number of vertices: keep the first turn, go on from vertex 1
-      lo, errSq, start = s, e * e, 3
+      lo = s
+      errSq = firstBound
+      start = 3
       if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
-      cx, cy, ex, ey = qx, qy, fx, fy
+      cx = qx
+      cy = qy
+      ex = fx
+      ey = fy
     end
-    -- A turn s <= 0 leaves the loop (so does a first turn of 0 or NaN), as does any turn
-    -- against the first one: concave when both are certain.
-    if firstCertain then
+    -- A turn s <= 0 leaves the loop (so does a first turn of 0 or NaN, or no x direction), as
+    -- does any turn against the first one: concave when both are certain.
+    if s > 0 then
       for i = start, n - 3, 4 do
         qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
         qy = points[i + 1] * ySign
@@ -621,8 +631,12 @@ else
           return "concave"
         end
       else
+        -- both turns certain (compared squared: underflow or overflow only fails the test)
         e = l + r
-        if -s > CROSS_BOUND * (e < 0 and -e or e) then return "concave" end
+        local boundSq = CROSS_BOUND * CROSS_BOUND
+        if s * s > boundSq * (e * e) and firstTurn * firstTurn > boundSq * firstBound then
+          return "concave"
+        end
       end
     end
     local kind = typeCareful(points, n)
