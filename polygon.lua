@@ -766,18 +766,34 @@ function polygon.polygonCentroid(points)
   end
   local kx, ky = powerScale(extentX, 2^-32, 2^32), powerScale(extentY, 2^-32, 2^32)
   local area2, momentX, momentY, magnitude = 0.0, 0.0, 0.0, 0.0
+  -- The three sums are compensated (TwoSum carries their rounding into errA, errX, errY):
+  -- the plain running sums, mostly the area's, were the error at 1,000 vertices (up to 35 eps
+  -- relative against the oracle, 3.3 with the compensation).
+  local errA, errX, errY = 0.0, 0.0, 0.0
   -- relative to vertex 1, the edges from and to it add nothing: start at edge 2 -> 3
   local xi, yi = 0.0, 0.0
   for i = 3, n - 1, 2 do
     local xj, yj = (points[i] - x0) * kx, (points[i + 1] - y0) * ky
     local l, r = xi * yj, xj * yi
     local c = l - r
-    area2 = area2 + c
-    momentX = momentX + (xi + xj) * c
-    momentY = momentY + (yi + yj) * c
+    local sum = area2 + c
+    local v = sum - area2
+    errA = errA + ((area2 - (sum - v)) + (c - v))
+    area2 = sum
+    local term = (xi + xj) * c
+    sum = momentX + term
+    v = sum - momentX
+    errX = errX + ((momentX - (sum - v)) + (term - v))
+    momentX = sum
+    term = (yi + yj) * c
+    sum = momentY + term
+    v = sum - momentY
+    errY = errY + ((momentY - (sum - v)) + (term - v))
+    momentY = sum
     magnitude = magnitude + (l < 0 and -l or l) + (r < 0 and -r or r)
     xi, yi = xj, yj
   end
+  area2, momentX, momentY = area2 + errA, momentX + errX, momentY + errY
   local cx, cy
   -- NaN and infinite sums fail the test too
   if (area2 < 0 and -area2 or area2) * (CANCELLATION_LIMIT * n / 2) > magnitude then
