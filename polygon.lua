@@ -508,17 +508,17 @@ if rawget(_G, "jit") then
   -- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
   -- math.abs compile to single instructions; data-dependent branches became side traces and
   -- made this loop over twice the baseline's time (bench/run.lua --only 'polygonType ord').
-  -- dirSign is sign(dx) in {-1, 0, 1} without a branch (2^1123 |dx| >= 1 for every nonzero
-  -- double). Around m edges whose turns are all certain, no two consecutive dx are 0 and each
-  -- winding changes the sign twice (directly, or through one 0 which zeroes two products), so
-  -- the sum of the products of consecutive signs is m - 4k for k windings.
+  -- The sign of the product of consecutive edges' dx is taken without a branch: in the exact
+  -- range a nonzero product of coordinate differences is at least 2^-998, so 2^1000 times it
+  -- clamps to +-1. Around m edges whose turns are all certain, no two consecutive dx are 0 and
+  -- each winding changes the sign twice (directly, or through one 0 which zeroes two products),
+  -- so the sum of those signs is m - 4k for k windings.
   -- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
   -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
   -- NaN or infinite, so nothing is certain.
   local function typeFiltered(points, n)
     local cx, cy = points[n - 1], points[n]
     local ex, ey = cx - points[n - 3], cy - points[n - 2]
-    local dirPrev = min(1, max(-1, ex * 2^1023 * 2^100))
     local lo, hi, errSum, dirAgree = huge, -huge, 0, 0
     for i = 1, n - 1, 2 do
       local qx, qy = points[i], points[i + 1]
@@ -527,9 +527,7 @@ if rawget(_G, "jit") then
       local s = l - r
       lo, hi = min(lo, s), max(hi, s)
       errSum = errSum + abs(l + r)
-      local dirSign = min(1, max(-1, fx * 2^1023 * 2^100))
-      dirAgree = dirAgree + dirSign * dirPrev
-      dirPrev = dirSign
+      dirAgree = dirAgree + min(1, max(-1, ex * fx * 2^1000))
       cx, cy, ex, ey = qx, qy, fx, fy
       if lo * hi < 0 then break end   -- turns of both signs seen: concave if certain
     end
