@@ -312,9 +312,10 @@ local TURN_BOUND_SQ = 2 * CROSS_BOUND * CROSS_BOUND
 -- @return "cw" or "ccw"; nil for fewer than 3 points or zero signed area. Exact. A non-finite
 -- coordinate raises an error (it makes the sum NaN or infinite, which takes the exact path).
 function polygon.polygonWindingOrder(points)
-  -- The checks written out where they pass, and shoelace and areaUncertain inlined, unrolled
-  -- by two (no multiple assignment): each Lua call costs about 13 ns on Lua 5.4, and this came
-  -- to 1.6 times the baseline with them (bench/run.lua --only 'polygonWindingOrder ord').
+  -- The checks written out where they pass, and shoelace's loop copied here, unrolled by two
+  -- (no multiple assignment): each Lua call costs about 13 ns on Lua 5.4, and this came to 1.6
+  -- times the baseline with them (bench/run.lua --only 'polygonWindingOrder ord'), 1.3 now.
+  -- A change to shoelace or to areaUncertain's bound must be made here too.
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
   local n = #points
   if n < 6 then return nil end
@@ -500,9 +501,9 @@ end
 -- per vertex costs the PUC interpreters half the loop and LuaJIT a side trace per branch.
 -- Its error is below CROSS_BOUND (|l| + |r|) (Shewchuk's bound); a semi-static filter bounds
 -- it for all turns at once. Convex means all turns certainly one sign and the edges' x
--- direction changing sign exactly twice around the polygon (once more per extra winding, as in
--- a pentagram): with every turn below a half turn, the signs of dx run + (0) - (0) + once per
--- winding.
+-- direction changing sign exactly twice around the polygon (twice per winding, so four times
+-- or more for a pentagram): with every turn below a half turn, the signs of dx run
+-- + (0) - (0) + once per winding.
 local polygonType
 if rawget(_G, "jit") then
   -- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
