@@ -1166,10 +1166,16 @@ if rawget(_G, "jit") then
     return near, nearSq, farSq, best
   end
 else
-  edgeWalk = function(points, n, cx, cy, sign)
+  -- The PUC loop also stops at the first edge whose line the circle (radius r) is certainly
+  -- beyond, returning best = -1: an edge's squared signed distance is off by less than
+  -- 32 eps (r^2 + the squared distances of its ends), so a key past r^2 by that much means
+  -- the circle is apart, as the full pass would decide too (LuaJIT's loop stays branch-free).
+  edgeWalk = function(points, n, cx, cy, sign, r)
     local nearSq, farSq, near = huge, 0.0, 1
     local bestKey, best = -huge, 0
     local ax, ay = points[n - 1] - cx, points[n] - cy
+    local radiusSq = r * r
+    local prevSq = ax * ax + ay * ay
     for i = 1, n - 1, 2 do
       local bx, by = points[i] - cx, points[i + 1] - cy
       local distSq = bx * bx + by * by
@@ -1180,9 +1186,14 @@ else
       if lengthSq > 0 then   -- a repeated vertex gives no edge
         local outside = (ex * ay - ey * ax) * sign
         local key = outside * (abs(outside) / lengthSq)
-        if key > bestKey then bestKey, best = key, i end
+        if key > bestKey then
+          bestKey, best = key, i
+          if key - radiusSq > 32 * EPS * (radiusSq + prevSq + distSq) then
+            return near, nearSq, farSq, -1
+          end
+        end
       end
-      ax, ay = bx, by
+      ax, ay, prevSq = bx, by, distSq
     end
     return near, nearSq, farSq, best
   end
@@ -1242,7 +1253,8 @@ function circleCollision(points, n, cx, cy, r)
   local turn = areaSignOf(points, n, area, sumX2, sumD2)
   if turn == 0 then return false end
   local sign = turn > 0 and 1.0 or -1.0   -- makes the signed distances positive outside
-  local near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, sign)
+  local near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, sign, r)
+  if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
   -- luacheck: ignore 581 (NaN too)
   if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
