@@ -407,6 +407,8 @@ function oracle.push(p1, p2, both)
     end
   end
   return true, depth, moves
+end
+
 ---------------------------------------------------------------------------------------------------
 -- Circles, exactly: the open disc against another disc or against a convex polygon's interior.
 
