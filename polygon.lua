@@ -598,17 +598,17 @@ local function largestMagnitude(points, n, m)
   return m
 end
 
--- The SAT engine's one exact fallback: whether no vertex of points, each moved by (dx, dy) and
--- rounded as a caller's `p[i] + dx` rounds, lies strictly on the side `inside` (1 or -1, the
--- sign of the cross product) of the line through c parallel to a -> b. Signs are multiplied by
--- the sign +-1, never by an area, so nothing underflows.
-local function clearOfLine(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
+-- The SAT engine's one exact fallback: the index of a vertex of points that, moved by (dx, dy)
+-- and rounded as a caller's `p[i] + dx` rounds, lies strictly on the side `inside` (1 or -1, the
+-- sign of the cross product) of the line through c parallel to a -> b; false when none does.
+-- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
+local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
   for i = 1, n - 1, 2 do
     if cross(ax, ay, bx, by, cx, cy, points[i] + dx, points[i + 1] + dy) * inside > 0 then
-      return false
+      return i
     end
   end
-  return true
+  return false
 end
 
 -- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
@@ -655,15 +655,15 @@ local function reachPast(edges, ne, turn, other, no, w, h, farEnds)
         -- deepest vertex of edges
         local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
         if face <= tol then
-          if face < -tol or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+          if face < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
             return false
           end
           if face < 0 then face = 0.0 end
         end
         if far <= tol then
           local ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
-          if far < -tol or clearOfLine(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
-                                        other, no, 0.0, 0.0) then
+          if far < -tol or not vertexInside(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
+                                            other, no, 0.0, 0.0) then
             return false
           end
           if far < 0 then far = 0.0 end
@@ -677,7 +677,7 @@ local function reachPast(edges, ne, turn, other, no, w, h, farEnds)
       else
         depth = -minProjection(other, no, ax, ay, nx, ny)
         if depth <= tol then
-          if depth < -tol or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+          if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
             return false
           end
           if depth < 0 then depth = 0.0 end
@@ -769,44 +769,46 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   return o / len, ux, uy, owner, edgeEnd, base, inside
 end
 
--- How many times separatingPush may lengthen a push before it gives up (each round doubles the
--- lengthening, which starts at an ulp of the coordinates: 64 rounds outgrow any double).
+-- How many times separatingPush may lengthen a push before it gives up: the rounding allowance
+-- doubles each round, and 64 doublings of eps |x| outgrow any coordinate.
 local PUSH_ROUNDS = 64
 
---- The push that separates, from convexPenetration's least penetration: the smallest push found
+--- The push that separates, from convexPenetration's least penetration: the shortest push found
 -- of length >= depth along (ux, uy) after which, with p2's coordinates moved by (dx, dy) and
 -- rounded the way a game moves them, the chosen line separates the polygons exactly (touching
--- allowed). A rounded move can fall short of the exact depth by the rounding of the moved
--- coordinates (up to eps times their magnitude along the normal) and of the depth itself; the
--- exact check sees that, and the push grows by an ulp of the coordinates involved, doubling,
--- until it clears. Returns push length, dx, dy.
+-- allowed). A rounded move falls short of the exact depth by the rounding of the moved
+-- coordinates (eps times their magnitude, along the normal) and of the depth itself. The exact
+-- check finds a vertex still inside; the push then grows by that vertex's shortfall plus the
+-- rounding at it and at the line, doubling the growth if that is still not enough.
+-- Returns push length, dx, dy.
 local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
   if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
-  local lines, nl, others, no = p1, n1, p2, n2
-  if owner == 2 then lines, nl, others, no = p2, n2, p1, n1 end
+  local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
+  if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
   local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
   local ax, ay, bx, by = lines[ia] + 0.0, lines[ia + 1] + 0.0, lines[edgeEnd] + 0.0,
     lines[edgeEnd + 1] + 0.0
   local cx, cy = lines[base] + 0.0, lines[base + 1] + 0.0
-  local push, grow = depth, nil
+  local push, scale = depth, 1.0
   for _ = 1, PUSH_ROUNDS do
     local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
-    local clear
-    if owner == 2 then   -- the line belongs to p2 and moves with it
-      clear = clearOfLine(ax + dx, ay + dy, bx + dx, by + dy, cx + dx, cy + dy, inside,
-        others, no, 0.0, 0.0)
-    else
-      clear = clearOfLine(ax, ay, bx, by, cx, cy, inside, others, no, dx, dy)
-    end
-    if clear then return push, dx, dy end
-    if not grow then
-      -- an ulp of the largest coordinate the check read, at least
-      local m = largestMagnitude(others, no, largestMagnitude(lines, nl, 0.0))
-      grow = EPS * (m + abs(dx) + abs(dy))
-    else
-      grow = grow * 2
-    end
-    push = push + grow
+    -- the polygon that moves is p2: its line when owner is 2, else its vertices
+    local lx, ly = dx * lineMoves, dy * lineMoves
+    local vx, vy = dx - lx, dy - ly
+    local i = vertexInside(ax + lx, ay + ly, bx + lx, by + ly, cx + lx, cy + ly, inside,
+      others, no, vx, vy)
+    if not i then return push, dx, dy end
+    local px, py = others[i] + vx, others[i + 1] + vy
+    local qx, qy = cx + lx, cy + ly
+    -- how far the vertex p lies short of the line through q, along the push, to rounding
+    local short = (qx - px) * ux + (qy - py) * uy
+    if owner == 2 then short = -short end
+    if short < 0 then short = 0.0 end
+    -- and the most the moving point's coordinates can round against the push (eps |x| each);
+    -- should that not do (the shortfall's own rounding), the allowance doubles
+    local mx, my = owner == 2 and qx or px, owner == 2 and qy or py
+    push = push + short + scale * EPS * (abs(mx * ux) + abs(my * uy))
+    scale = scale * 2
   end
   return push, ux * push + 0.0, uy * push + 0.0
 end
