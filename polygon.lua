@@ -568,6 +568,44 @@ else
   end
 end
 
+-- The least projection nx (vx - ax) + ny (vy - ay) over the vertices of a convex polygon, with
+-- the index of a vertex where it is found, for the edges of another convex polygon in turn.
+-- Rotating calipers: as the edges' outward normals turn, the deepest vertex moves on around
+-- `points`, `step` (2 or -2) at a time; so the first edge (deepest == 0) scans every vertex and
+-- each next one walks on from the last deepest vertex while the projection does not rise. A walk
+-- stopped early by rounding misses the least by less than the projections' tolerance, and
+-- the SAT engine decides every depth within that of zero again over all vertices, exactly.
+-- On LuaJIT the walk's data-dependent exits become side traces that cost more than they save
+-- (measured: compiling them took most of the time of a mixed collision workload), so there the
+-- scan is whole, branch-free, every time.
+local deepestPast
+if rawget(_G, "jit") then
+  deepestPast = function(points, n, ax, ay, nx, ny, deepest)
+    return deepest, minProjection(points, n, ax, ay, nx, ny)
+  end
+else
+  deepestPast = function(points, n, ax, ay, nx, ny, deepest, step)
+    local lo
+    if deepest == 0 then
+      deepest, lo = 1, nx * (points[1] - ax) + ny * (points[2] - ay)
+      for i = 3, n - 1, 2 do
+        local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
+        if s < lo then deepest, lo = i, s end
+      end
+      return deepest, lo
+    end
+    lo = nx * (points[deepest] - ax) + ny * (points[deepest + 1] - ay)
+    for _ = 3, n, 2 do   -- at most m - 1 steps around a polygon of m vertices
+      local k = deepest + step
+      if k > n then k = 1 elseif k < 1 then k = n - 1 end
+      local s = nx * (points[k] - ax) + ny * (points[k + 1] - ay)
+      if s > lo then break end
+      deepest, lo = k, s
+    end
+    return deepest, lo
+  end
+end
+
 -- The projections above are taken relative to a vertex a of one polygon so that far from the
 -- origin they stay as accurate as near it. Their rounding error is at most 4 eps (w |nx| + h |ny|)
 -- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that (16 eps: the
@@ -623,76 +661,90 @@ local function deepestVertex(ax, ay, bx, by, inside, points, n)
 end
 
 -- The separating axis test of two convex polygons, face by face: for each edge a -> b of
--- `edges` (turn: the sign of its area, 1 or -1), how deep `other` reaches past it along its
--- outward normal n. Two convex polygons overlap exactly when every edge of both is reached past,
--- and the least such depth is the least penetration over all the tutorial's axes and both ends
--- of their ranges (the overlap of the far ends is never smaller: it is the support of the
--- Minkowski difference in a direction that is not a face of it). So one polygon is projected
--- per axis where the tutorial projects both; the edge itself is the other's range end, at 0.
--- farEnds (the one-sided functions, which test the axes of one polygon only): the far end of
--- the ranges too, other reaching beyond the vertex of `edges` deepest inside.
--- Returns false on a separating or touching axis. Otherwise the least penetration: its squared
--- depth q = o (o / |n|^2) (neither overflows nor underflows in the exact range), the overlap
--- o >= 0 along (nx, ny), the normal turned the way `other` must move, and the line the move
--- must clear: the edge ending at vertex index edgeEnd, moved to pass through vertex index base,
--- with `inside` the sign of the cross product on the side where `other` must not stay.
+-- `edges` (turn: the sign of its area, 1 or -1), how deep `other` (turnOther likewise) reaches
+-- past it along its outward normal n. Two convex polygons overlap exactly when every edge of
+-- both is reached past, and the least such depth is the least penetration over all the
+-- tutorial's axes and both ends of their ranges (the overlap of the far ends is never smaller:
+-- it is the support of the Minkowski difference in a direction that is not a face of it). So
+-- one polygon is projected per axis where the tutorial projects both; the edge itself is the
+-- other's range end, at 0.
+-- Returns false on a separating or touching axis; otherwise the least penetration's squared
+-- depth q = o (o / |n|^2) (neither overflows nor underflows in the exact range), its overlap
+-- o >= 0 along n (the depth is o / |n|), and the index of its edge's end b.
 -- w, h: see projectionTolerance.
-local function reachPast(edges, ne, turn, other, no, w, h, farEnds)
-  local leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside =
-    huge, 0.0, 0.0, 0.0, 1, 1, turn
-  local ia = ne - 1
-  local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+local function reachPast(edges, ne, turn, other, no, turnOther, w, h)
+  local leastQ, leastO, leastEnd = huge, 0.0, 1
+  -- the calipers' state for deepestPast: the last deepest vertex of other (0: none yet) and the
+  -- way it moves as the normals turn: forward if other winds like edges
+  local deepest, step = 0, turnOther == turn and 2 or -2
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  for ib = 1, ne - 1, 2 do
+    local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
+      local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
+      local lo
+      deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
+      local depth = -lo
+      local tol = projectionTolerance(w, h, nx, ny)
+      if depth <= tol then
+        if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+          return false
+        end
+        if depth < 0 then depth = 0.0 end
+      end
+      local q = depth * (depth / (nx * nx + ny * ny))
+      if q < leastQ then leastQ, leastO, leastEnd = q, depth, ib end   -- keep the least
+    end
+    ax, ay = bx, by
+  end
+  return leastQ, leastO, leastEnd
+end
+
+-- reachPast for the one-sided functions, which test the axes of `edges` only: both ends of each
+-- range, so also how far `other` reaches beyond the vertex of `edges` deepest inside, along -n.
+-- Returns false, or q, o, the edge's end and, for the far end, the index of that deepest vertex
+-- (else false).
+local function reachPastBothEnds(edges, ne, turn, other, no, w, h)
+  local leastQ, leastO, leastEnd, leastFar = huge, 0.0, 1, false
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for ib = 1, ne - 1, 2 do
     local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
       local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
       local tol = projectionTolerance(w, h, nx, ny)
-      local depth   -- set on both paths below
-      local base, inside = ia, turn
-      if farEnds then
-        local lo, hi = projectRange(other, no, ax, ay, nx, ny)
-        -- face: how far other must move along n to clear the edge; far: against n, past the
-        -- deepest vertex of edges
-        local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
-        if face <= tol then
-          if face < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
-            return false
-          end
-          if face < 0 then face = 0.0 end
+      local lo, hi = projectRange(other, no, ax, ay, nx, ny)
+      -- face: how far other must move along n to clear the edge; far: against n, past the
+      -- deepest vertex of edges
+      local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+      if face <= tol then
+        if face < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+          return false
         end
-        if far <= tol then
-          local ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
-          if far < -tol or not vertexInside(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
-                                            other, no, 0.0, 0.0) then
-            return false
-          end
-          if far < 0 then far = 0.0 end
-        end
-        if far < face then
-          depth, nx, ny, inside = far, -nx, -ny, -turn
-          base = deepestVertex(ax, ay, bx, by, turn, edges, ne)
-        else
-          depth = face
-        end
-      else
-        depth = -minProjection(other, no, ax, ay, nx, ny)
-        if depth <= tol then
-          if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
-            return false
-          end
-          if depth < 0 then depth = 0.0 end
-        end
+        if face < 0 then face = 0.0 end
       end
-      -- keep the least penetration
+      local ic = false
+      if far <= tol then
+        ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
+        if far < -tol or not vertexInside(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
+                                          other, no, 0.0, 0.0) then
+          return false
+        end
+        if far < 0 then far = 0.0 end
+      end
+      local depth = face < far and face or far
       local q = depth * (depth / (nx * nx + ny * ny))
-      if q < leastQ then
-        leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside =
-          q, depth, nx, ny, ib, base, inside
+      if q < leastQ then   -- keep the least
+        if far < face then
+          leastFar = ic or deepestVertex(ax, ay, bx, by, turn, edges, ne)
+        else
+          leastFar = false
+        end
+        leastQ, leastO, leastEnd = q, depth, ib
       end
     end
-    ia, ax, ay = ib, bx, by
+    ax, ay = bx, by
   end
-  return leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside
+  return leastQ, leastO, leastEnd, leastFar
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -753,18 +805,33 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     if not depth then return false end
     return depth / k, ux, uy, owner, edgeEnd, base, inside
   end
-  local q, o, nx, ny, edgeEnd, base, inside = reachPast(p1, n1, turn1, p2, n2, w, h, not both)
-  if not q then return false end
-  local owner = 1
+  local q, o, edgeEnd, far, owner, turn, lines, nl
   if both then
-    local q2, o2, nx2, ny2, edgeEnd2, base2, inside2 = reachPast(p2, n2, turn2, p1, n1, w, h, false)
+    q, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, w, h)
+    if not q then return false end
+    local q2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, w, h)
     if not q2 then return false end
-    if q2 < q then   -- keep the least penetration; p2's normals point the way p1 must move
-      q, o, nx, ny, edgeEnd, base, inside, owner = q2, o2, -nx2, -ny2, edgeEnd2, base2, inside2, 2
+    owner, turn, lines, nl = 1, turn1, p1, n1
+    if q2 < q then   -- keep the least penetration
+      q, o, edgeEnd, owner, turn, lines, nl = q2, o2, edgeEnd2, 2, turn2, p2, n2
     end
+  else
+    q, o, edgeEnd, far = reachPastBothEnds(p1, n1, turn1, p2, n2, w, h)
+    if not q then return false end
+    owner, turn, lines, nl = 1, turn1, p1, n1
   end
   -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
-  if q == huge then return 0.0, 0.0, 0.0, owner, edgeEnd, base, inside end
+  if q == huge then return 0.0, 0.0, 0.0, owner, edgeEnd, edgeEnd, turn end
+  -- the chosen edge's outward normal, turned the way p2 must move, and the line to clear
+  local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+  local nx = ((lines[edgeEnd + 1] + 0.0) - lines[ia + 1]) * turn
+  local ny = ((lines[ia] + 0.0) - lines[edgeEnd]) * turn
+  local base, inside = ia, turn
+  if owner == 2 then
+    nx, ny = -nx, -ny
+  elseif far then
+    nx, ny, base, inside = -nx, -ny, far, -turn
+  end
   local ux, uy, len = unit(nx, ny)
   return o / len, ux, uy, owner, edgeEnd, base, inside
 end
@@ -773,13 +840,16 @@ end
 -- doubles each round, and 64 doublings of eps |x| outgrow any coordinate.
 local PUSH_ROUNDS = 64
 
---- The push that separates, from convexPenetration's least penetration: the shortest push found
--- of length >= depth along (ux, uy) after which, with p2's coordinates moved by (dx, dy) and
--- rounded the way a game moves them, the chosen line separates the polygons exactly (touching
--- allowed). A rounded move falls short of the exact depth by the rounding of the moved
--- coordinates (eps times their magnitude, along the normal) and of the depth itself. The exact
--- check finds a vertex still inside; the push then grows by that vertex's shortfall plus the
--- rounding at it and at the line, doubling the growth if that is still not enough.
+--- The push that separates, from convexPenetration's least penetration: a push of length >=
+-- depth along (ux, uy) after which, with p2's coordinates moved by (dx, dy) and rounded the way
+-- a game moves them (p[i] = p[i] + dx), the chosen line separates the polygons for sure. A
+-- rounded move falls short of the exact depth by the rounding of the moved coordinates (eps
+-- times their magnitude, along the push) and of the depth itself, so the push is checked on the
+-- rounded coordinates: every vertex that must have left must lie on the far side of the line
+-- or on it, which cross's filter proves (the same sign the exact kernel would find: touching
+-- counts as apart). A vertex the filter cannot place lengthens the push by its shortfall plus
+-- the bound and the rounding allowance at it, and the check runs again. Deciding such vertices
+-- exactly instead would cost an expansion at nearly every push: its vertex ends on the line.
 -- Returns push length, dx, dy.
 local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
   if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
@@ -789,28 +859,52 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
   local ax, ay, bx, by = lines[ia] + 0.0, lines[ia + 1] + 0.0, lines[edgeEnd] + 0.0,
     lines[edgeEnd + 1] + 0.0
   local cx, cy = lines[base] + 0.0, lines[base + 1] + 0.0
-  local push, scale = depth, 1.0
+  local face = base == ia   -- the line is the edge, through a and b
+  local ulx, uly = abs(ux), abs(uy)
+  -- the moved vertex rounds by up to eps |x| against the push, |x| about the line's
+  local allowance = EPS * (abs(cx) * ulx + abs(cy) * uly)
+  local push, exactly = depth, true
   for _ = 1, PUSH_ROUNDS do
     local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
     -- the polygon that moves is p2: its line when owner is 2, else its vertices
     local lx, ly = dx * lineMoves, dy * lineMoves
     local vx, vy = dx - lx, dy - ly
-    local i = vertexInside(ax + lx, ay + ly, bx + lx, by + ly, cx + lx, cy + ly, inside,
-      others, no, vx, vy)
-    if not i then return push, dx, dy end
-    local px, py = others[i] + vx, others[i + 1] + vy
     local qx, qy = cx + lx, cy + ly
-    -- how far the vertex p lies short of the line through q, along the push, to rounding
-    local short = (qx - px) * ux + (qy - py) * uy
-    if owner == 2 then short = -short end
-    if short < 0 then short = 0.0 end
-    -- and the most the moving point's coordinates can round against the push (eps |x| each);
-    -- should that not do (the shortfall's own rounding), the allowance doubles
-    local mx, my = owner == 2 and qx or px, owner == 2 and qy or py
-    push = push + short + scale * EPS * (abs(mx * ux) + abs(my * uy))
-    scale = scale * 2
+    local qbx, qby = bx + lx, by + ly   -- the line's other point, when it is the edge
+    local ex, ey = qbx - (ax + lx), qby - (ay + ly)
+    -- the largest of det + bound over the vertices: none is inside unless it is > 0, where
+    -- det is (b - a) x (p - q) turned to be > 0 inside, and bound is cross's filter's; the
+    -- bound grows with |p - q|, so a vertex near the line is tried from the edge's other end too
+    local worst, wx, wy = 0.0, 0.0, 0.0
+    for i = 1, no - 1, 2 do
+      local px, py = others[i] + vx, others[i + 1] + vy
+      local l, r = ex * (py - qy), ey * (px - qx)
+      local reach = (l - r) * inside + CROSS_BOUND * (abs(l) + abs(r))
+      if reach > worst then
+        if face then
+          l, r = ex * (py - qby), ey * (px - qbx)
+          local fromB = (l - r) * inside + CROSS_BOUND * (abs(l) + abs(r))
+          if fromB < reach then reach = fromB end
+        end
+        -- the first check places such a vertex exactly: a push of exactly the depth that
+        -- leaves it touching is kept (exact input gets exact answers)
+        if reach > worst and (not exactly or
+            cross(ax + lx, ay + ly, qbx, qby, qx, qy, px, py) * inside > 0) then
+          worst, wx, wy = reach, px, py
+        end
+      end
+    end
+    exactly = false
+    if worst == 0 then return push, dx, dy end
+    -- lengthen by the shortfall and the rounding allowance at the moving point (the vertex, or
+    -- the line when it is p2's), doubled every round
+    if owner == 2 then wx, wy = qx, qy end
+    allowance = 2 * allowance + EPS * (abs(wx) * ulx + abs(wy) * uly)
+    push = push + worst / sqrt(ex * ex + ey * ey) + allowance
+    -- only far outside the exact range can the check's products overflow: keep the depth
+    if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
   end
-  return push, ux * push + 0.0, uy * push + 0.0
+  return depth, ux * depth + 0.0, uy * depth + 0.0
 end
 
 --- convexPush(p1, n1, p2, n2, both): convexPenetration, then separatingPush. Returns false, or
