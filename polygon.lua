@@ -756,6 +756,20 @@ local function unit(nx, ny)
   return nx / len, ny / len, len * m
 end
 
+-- The bounding box of points[1..n] (n >= 2) and the sum of all coordinates, which is NaN or
+-- infinite when a coordinate is (or when it overflows).
+local function boundsOf(points, n)
+  local x, y = points[1] + 0.0, points[2] + 0.0
+  local xmin, xmax, ymin, ymax, sum = x, x, y, y, x + y
+  for i = 3, n - 1, 2 do
+    x, y = points[i] + 0.0, points[i + 1] + 0.0
+    sum = sum + x + y
+    if x < xmin then xmin = x elseif x > xmax then xmax = x end
+    if y < ymin then ymin = y elseif y > ymax then ymax = y end
+  end
+  return xmin, xmax, ymin, ymax, sum
+end
+
 -- Below 2^464 the products of two coordinate differences (each below 2^466 after scaling)
 -- cannot overflow; from 2^400 up the scaled copies keep 64 binades of headroom below it.
 local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
@@ -775,23 +789,26 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 --     index base, with `inside` the cross product's sign on the side the other must leave.
 local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if n1 < 6 or n2 < 6 then return false end
-  local area1, sx1, sd1 = shoelace(p1, n1)
-  -- a NaN or infinity makes these sums non-finite; so does overflow, which is not an error
+  local xmin1, xmax1, ymin1, ymax1, sum1 = boundsOf(p1, n1)
+  local xmin2, xmax2, ymin2, ymax2, sum2 = boundsOf(p2, n2)
+  -- a NaN or infinity makes a sum non-finite; so does overflow, which is not an error
   -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
-  local area2, sx2, sd2 = shoelace(p2, n2)
+  if not (sum1 - sum1 == 0) and holdsNonFinite(p1, n1) then return nil, "points1" end
   -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
-  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
+  if not (sum2 - sum2 == 0) and holdsNonFinite(p2, n2) then return nil, "points2" end
+  -- boxes apart or touching: so are the polygons (the one-sided test may still see overlap)
+  if both and (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) then
+    return false
+  end
+  -- zero area never collides, so the turn is the area's sign, not a turn at a vertex
+  local turn1 = areaSign(p1, n1)
   if turn1 == 0 then return false end
-  local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
+  local turn2 = areaSign(p2, n2)
   if turn2 == 0 then return false end
   turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0   -- signs, not magnitudes
-  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
-  -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
-  -- between the two first vertices covers a vertex of one polygon seen from one of the other.
-  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
-  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
+  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: the box around both
+  local w = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
+  local h = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
   if not (w + h <= EXACT_TOP) and not rescaled then   -- luacheck: ignore 581 (inf is too big)
     -- Far beyond the exact range the projections (products of two sizes) would overflow into
     -- infinities and NaN. Collide copies scaled by a power of two k instead (this rare path
