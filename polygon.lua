@@ -216,6 +216,26 @@ local function shoelace(points, n)
   return sum + px * d, sx, sd + d * d
 end
 
+-- shoelace and the bounding box in one pass, for the collision functions: returns shoelace's
+-- three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes sx + sd non-finite.
+local function shoelaceBounds(points, n)
+  local x0, y1 = points[1] + 0.0, points[2] + 0.0
+  local px, py = 0.0, y1
+  local sum, sx, sd = 0.0, 0.0, 0.0
+  local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+  for i = 3, n - 1, 2 do
+    local vx, y = points[i] + 0.0, points[i + 1] + 0.0
+    local x, d = vx - x0, y - py
+    sum = sum + (px + x) * d
+    sx, sd = sx + x * x, sd + d * d
+    if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+    if y < ymin then ymin = y elseif y > ymax then ymax = y end
+    px, py = x, y
+  end
+  local d = y1 - py
+  return sum + px * d, sx, sd + d * d, xmin, xmax, ymin, ymax
+end
+
 -- Whether shoelace's sum is too close to zero for its sign to be trusted. Each term
 -- (X_i + X_j) d is off by at most 4 eps (|X_i| + |X_j|) |d| and summing m terms adds (m - 1) eps
 -- times their magnitudes, so the error is below (m + 3) eps T, where by Cauchy-Schwarz
@@ -641,8 +661,17 @@ end
 -- sign of the cross product) of the line through c parallel to a -> b; false when none does.
 -- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
 local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
+  local ex, ey = (bx + 0.0) - ax, (by + 0.0) - ay
   for i = 1, n - 1, 2 do
-    if cross(ax, ay, bx, by, cx, cy, points[i] + dx, points[i + 1] + dy) * inside > 0 then
+    local px, py = points[i] + dx, points[i + 1] + dy
+    -- cross's filter inlined (a call per vertex is most of this loop's time on PUC Lua): the
+    -- vertex is certainly not inside when -inside det >= bound, certainly inside when
+    -- inside det >= bound; only between does cross decide, exactly
+    local l, r = ex * (py - cy), ey * (px - cx)
+    local det = (l - r) * inside
+    local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+    if -det < bound and (det >= bound and det > 0 or
+                         cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0) then
       return i
     end
   end
@@ -685,7 +714,8 @@ local function reachPast(edges, ne, turn, other, no, turnOther, w, h)
       local lo
       deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
       local depth = -lo
-      local tol = projectionTolerance(w, h, nx, ny)
+      -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
+      local tol = 16 * EPS * (w * (nx < 0 and -nx or nx) + h * (ny < 0 and -ny or ny))
       if depth <= tol then
         if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
           return false
@@ -756,20 +786,6 @@ local function unit(nx, ny)
   return nx / len, ny / len, len * m
 end
 
--- The bounding box of points[1..n] (n >= 2) and the sum of all coordinates, which is NaN or
--- infinite when a coordinate is (or when it overflows).
-local function boundsOf(points, n)
-  local x, y = points[1] + 0.0, points[2] + 0.0
-  local xmin, xmax, ymin, ymax, sum = x, x, y, y, x + y
-  for i = 3, n - 1, 2 do
-    x, y = points[i] + 0.0, points[i + 1] + 0.0
-    sum = sum + x + y
-    if x < xmin then xmin = x elseif x > xmax then xmax = x end
-    if y < ymin then ymin = y elseif y > ymax then ymax = y end
-  end
-  return xmin, xmax, ymin, ymax, sum
-end
-
 -- Below 2^464 the products of two coordinate differences (each below 2^466 after scaling)
 -- cannot overflow; from 2^400 up the scaled copies keep 64 binades of headroom below it.
 local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
@@ -789,21 +805,21 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 --     index base, with `inside` the cross product's sign on the side the other must leave.
 local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if n1 < 6 or n2 < 6 then return false end
-  local xmin1, xmax1, ymin1, ymax1, sum1 = boundsOf(p1, n1)
-  local xmin2, xmax2, ymin2, ymax2, sum2 = boundsOf(p2, n2)
-  -- a NaN or infinity makes a sum non-finite; so does overflow, which is not an error
+  local area1, sx1, sd1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
+  local area2, sx2, sd2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
+  -- a NaN or infinity makes these sums non-finite; so does overflow, which is not an error
   -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (sum1 - sum1 == 0) and holdsNonFinite(p1, n1) then return nil, "points1" end
+  if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
   -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (sum2 - sum2 == 0) and holdsNonFinite(p2, n2) then return nil, "points2" end
+  if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
   -- boxes apart or touching: so are the polygons (the one-sided test may still see overlap)
   if both and (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) then
     return false
   end
-  -- zero area never collides, so the turn is the area's sign, not a turn at a vertex
-  local turn1 = areaSign(p1, n1)
+  -- zero area never collides: the turn is the sign of the area, decided exactly
+  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
   if turn1 == 0 then return false end
-  local turn2 = areaSign(p2, n2)
+  local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
   if turn2 == 0 then return false end
   turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0   -- signs, not magnitudes
   -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: the box around both
@@ -896,11 +912,11 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
     for i = 1, no - 1, 2 do
       local px, py = others[i] + vx, others[i + 1] + vy
       local l, r = ex * (py - qy), ey * (px - qx)
-      local reach = (l - r) * inside + CROSS_BOUND * (abs(l) + abs(r))
+      local reach = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
       if reach > worst then
         if face then
           l, r = ex * (py - qby), ey * (px - qbx)
-          local fromB = (l - r) * inside + CROSS_BOUND * (abs(l) + abs(r))
+          local fromB = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
           if fromB < reach then reach = fromB end
         end
         -- the first check places such a vertex exactly: a push of exactly the depth that
