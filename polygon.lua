@@ -896,7 +896,7 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
   local ulx, uly = abs(ux), abs(uy)
   -- the moved vertex rounds by up to eps |x| against the push, |x| about the line's
   local allowance = EPS * (abs(cx) * ulx + abs(cy) * uly)
-  local push, exactly = depth, true
+  local push = depth   -- first as it is: an exact move along an axis keeps it exact
   for _ = 1, PUSH_ROUNDS do
     local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
     -- the polygon that moves is p2: its line when owner is 2, else its vertices
@@ -919,15 +919,9 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
           local fromB = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
           if fromB < reach then reach = fromB end
         end
-        -- the first check places such a vertex exactly: a push of exactly the depth that
-        -- leaves it touching is kept (exact input gets exact answers)
-        if reach > worst and (not exactly or
-            cross(ax + lx, ay + ly, qbx, qby, qx, qy, px, py) * inside > 0) then
-          worst, wx, wy = reach, px, py
-        end
+        if reach > worst then worst, wx, wy = reach, px, py end
       end
     end
-    exactly = false
     if worst == 0 then return push, dx, dy end
     -- lengthen by the shortfall and the rounding allowance at the moving point (the vertex, or
     -- the line when it is p2's), doubled every round
