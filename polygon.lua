@@ -35,13 +35,18 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- Arithmetic kernels: the only place that decides a sign
 --------------------------------------------------------------------------------------------------
 -- Every sign the library decides (winding, convexity, which side of an edge a point lies on,
--- whether projected ranges overlap) comes from one of two predicates:
---   cross(u0, u1, v0, v1)  the sign of the 2x2 determinant (u1 - u0) x (v1 - v0)
---   shoelace(points)       the sign of twice the signed area
--- Each first computes in ordinary floating point with an error bound (Shewchuk's filter). Only
--- when the bound cannot vouch for the sign does it redo the sum exactly, as a floating-point
--- expansion: a sum of doubles whose bits do not overlap, built from TwoSum and TwoProduct
--- (Dekker's split). The exact path allocates nothing: it reuses one scratch array.
+-- whether projected ranges overlap) comes from one of these predicates:
+--   cross(u0, u1, v0, v1)        the sign of the 2x2 determinant (u1 - u0) x (v1 - v0)
+--   areaSign(points, n)          the sign of twice the signed area; areaSignOf(points, n, ...)
+--                                is the same from shoelace's (or shoelaceBounds') sums, for
+--                                callers that use those sums too
+-- Each first computes in ordinary floating point with an error bound (Shewchuk's filter):
+-- cross's is CROSS_BOUND, the area's is areaUncertain. Only when the bound cannot vouch for the
+-- sign does it redo the sum exactly, as a floating-point expansion: a sum of doubles whose bits
+-- do not overlap, built from TwoSum and TwoProduct (Dekker's split). The exact path allocates
+-- nothing: it reuses one scratch array. Hot loops that inline cross's filter say so where they
+-- do it, with the measured reason (vertexInside, separatingPush); they call cross where the
+-- filter cannot decide, or, in separatingPush, lengthen the push until it can.
 --
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
 -- 2^-447 and 2^500 in magnitude (then all coordinates are multiples of 2^-499, all products of
@@ -73,22 +78,23 @@ local function twoDiff(a, b)
   return x, (a - av) + (bv - b)
 end
 
--- The scratch expansion: EXP[1..expLen], nonoverlapping, increasing in magnitude, no zeros.
-local EXP, expLen = {}, 0
+-- The scratch expansion: expansion[1..expLen], nonoverlapping, increasing in magnitude, no
+-- zeros (expAdd drops them).
+local expansion, expLen = {}, 0
 
 -- Adds the double b to the expansion exactly (Shewchuk's Grow-Expansion, zeros eliminated).
 local function expAdd(b)
   if b == 0 then return end
   local q, k = b, 0
   for i = 1, expLen do
-    local e = EXP[i]
+    local e = expansion[i]
     local s = q + e
     local bv = s - q
     local h = (q - (s - bv)) + (e - bv)
     q = s
-    if h ~= 0 then k = k + 1; EXP[k] = h end
+    if h ~= 0 then k = k + 1; expansion[k] = h end
   end
-  if q ~= 0 then k = k + 1; EXP[k] = q end
+  if q ~= 0 then k = k + 1; expansion[k] = q end
   expLen = k
 end
 
@@ -102,36 +108,35 @@ end
 
 -- The sign of the expansion is the sign of its largest component.
 local function expSign()
-  local top = EXP[expLen]
-  if expLen == 0 or top == 0 then return 0 end
-  return top > 0 and 1 or -1
+  if expLen == 0 then return 0 end
+  return expansion[expLen] > 0 and 1 or -1
 end
 
 -- Compresses the expansion in place to an equal one with fewer components (Shewchuk's
 -- Compress) and returns its largest component, which is within one ulp of the exact sum.
 local function expCompress()
   if expLen == 0 then return 0.0 end
-  local bottom, q = expLen, EXP[expLen]
+  local bottom, q = expLen, expansion[expLen]
   for i = expLen - 1, 1, -1 do
-    local e = EXP[i]
+    local e = expansion[i]
     local s = q + e
     local small = e - (s - q)
     if small ~= 0 then
-      EXP[bottom] = s; bottom = bottom - 1; q = small
+      expansion[bottom] = s; bottom = bottom - 1; q = small
     else
       q = s
     end
   end
-  EXP[bottom] = q
+  expansion[bottom] = q
   local top = 0
   for i = bottom + 1, expLen do
-    local g = EXP[i]
+    local g = expansion[i]
     local s = g + q
     local small = q - (s - g)
-    if small ~= 0 then top = top + 1; EXP[top] = small end
+    if small ~= 0 then top = top + 1; expansion[top] = small end
     q = s
   end
-  top = top + 1; EXP[top] = q
+  top = top + 1; expansion[top] = q
   expLen = top
   return q
 end
@@ -243,17 +248,21 @@ end
 -- times that (no square root); an overflow (an infinite or NaN sum) only sends the decision to
 -- the exact path.
 local function areaUncertain(m, sum, sx, sd)
+  -- 2^-50 = 8 eps: (m + 8) 8 eps is four times the derived 2 (m + 3) eps, and the + 5 more
+  -- than covers the rounding of this bound's own products
   local k = (m + 8) * 2^-50
   return not (sum * sum > k * k * sx * sd)   -- luacheck: ignore 581 (NaN must be uncertain)
 end
 
--- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges,
--- of the coordinates scaled by s (returned; 1 unless they pass 2^500).
+-- Twice the signed area as an exact expansion in `expansion`: sum of x_i y_j - x_j y_i over all
+-- edges, of the coordinates scaled by s (returned; 1 unless they pass 2^500).
 local function shoelaceExact(points, n)
   local m = 0.0
   for i = 1, n do m = max(m, abs(points[i] + 0.0)) end
   local s = exactScale(m)
   expLen = 0
+  -- compress when 32 components have been added: often enough that each addition walks a short
+  -- expansion, rarely enough that compressing costs little next to the additions
   local limit = 32
   local xi, yi = points[n - 1] * s, points[n] * s
   for i = 1, n - 1, 2 do
@@ -261,7 +270,6 @@ local function shoelaceExact(points, n)
     expAddProduct(xi, yj)
     expAddProduct(-xj, yi)
     xi, yi = xj, yj
-    -- every addition walks the whole expansion: compress it whenever it has grown by 32
     if expLen > limit then
       expCompress()
       limit = expLen + 32
@@ -627,12 +635,12 @@ else
 end
 
 -- The projections above are taken relative to a vertex a of one polygon so that far from the
--- origin they stay as accurate as near it. Their rounding error is at most 4 eps (w |nx| + h |ny|)
--- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that (16 eps: the
--- bound of two projections subtracted, doubled for the rounding of the bound itself) is decided
--- again exactly, with the cross kernel.
-local function projectionTolerance(w, h, nx, ny)
-  return 16 * EPS * (w * abs(nx) + h * abs(ny))
+-- origin they stay as accurate as near it. Their rounding error is at most
+-- 4 eps (spanX |nx| + spanY |ny|), where spanX and spanY bound every |vx - ax| and |vy - ay|;
+-- a gap within four times that (16 eps: the bound of two projections subtracted, doubled for
+-- the rounding of the bound itself) is decided again exactly, with the cross kernel.
+local function projectionTolerance(spanX, spanY, nx, ny)
+  return 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))
 end
 
 -- shared helper: lead moves it to the kernels
@@ -698,11 +706,11 @@ end
 -- one polygon is projected per axis where the tutorial projects both; the edge itself is the
 -- other's range end, at 0.
 -- Returns false on a separating or touching axis; otherwise the least penetration's squared
--- depth q = o (o / |n|^2) (neither overflows nor underflows in the exact range), its overlap
+-- depth o (o / |n|^2) (neither overflows nor underflows in the exact range), its overlap
 -- o >= 0 along n (the depth is o / |n|), and the index of its edge's end b.
--- w, h: see projectionTolerance.
-local function reachPast(edges, ne, turn, other, no, turnOther, w, h)
-  local leastQ, leastO, leastEnd = huge, 0.0, 1
+-- spanX, spanY: see projectionTolerance.
+local function reachPast(edges, ne, turn, other, no, turnOther, spanX, spanY)
+  local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
   -- the calipers' state for deepestPast: the last deepest vertex of other (0: none yet) and the
   -- way it moves as the normals turn: forward if other winds like edges
   local deepest, step = 0, turnOther == turn and 2 or -2
@@ -715,33 +723,36 @@ local function reachPast(edges, ne, turn, other, no, turnOther, w, h)
       deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
       local depth = -lo
       -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
-      local tol = 16 * EPS * (w * (nx < 0 and -nx or nx) + h * (ny < 0 and -ny or ny))
+      local tol = 16 * EPS * (spanX * (nx < 0 and -nx or nx) + spanY * (ny < 0 and -ny or ny))
       if depth <= tol then
         if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
           return false
         end
         if depth < 0 then depth = 0.0 end
       end
-      local q = depth * (depth / (nx * nx + ny * ny))
-      if q < leastQ then leastQ, leastO, leastEnd = q, depth, ib end   -- keep the least
+      local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+      if squaredDepth < leastSquared then   -- keep the least
+        leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+      end
     end
     ax, ay = bx, by
   end
-  return leastQ, leastO, leastEnd
+  return leastSquared, leastOverlap, leastEnd
 end
 
 -- reachPast for the one-sided functions, which test the axes of `edges` only: both ends of each
 -- range, so also how far `other` reaches beyond the vertex of `edges` deepest inside, along -n.
--- Returns false, or q, o, the edge's end and, for the far end, the index of that deepest vertex
+-- Returns false, or the squared depth, o, the edge's end and, for the far end, the index of
+-- that deepest vertex
 -- (else false).
-local function reachPastBothEnds(edges, ne, turn, other, no, w, h)
-  local leastQ, leastO, leastEnd, leastFar = huge, 0.0, 1, false
+local function reachPastBothEnds(edges, ne, turn, other, no, spanX, spanY)
+  local leastSquared, leastOverlap, leastEnd, leastFar = huge, 0.0, 1, false
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for ib = 1, ne - 1, 2 do
     local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
       local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
-      local tol = projectionTolerance(w, h, nx, ny)
+      local tol = projectionTolerance(spanX, spanY, nx, ny)
       local lo, hi = projectRange(other, no, ax, ay, nx, ny)
       -- face: how far other must move along n to clear the edge; far: against n, past the
       -- deepest vertex of edges
@@ -762,19 +773,19 @@ local function reachPastBothEnds(edges, ne, turn, other, no, w, h)
         if far < 0 then far = 0.0 end
       end
       local depth = face < far and face or far
-      local q = depth * (depth / (nx * nx + ny * ny))
-      if q < leastQ then   -- keep the least
+      local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+      if squaredDepth < leastSquared then   -- keep the least
         if far < face then
           leastFar = ic or deepestVertex(ax, ay, bx, by, turn, edges, ne)
         else
           leastFar = false
         end
-        leastQ, leastO, leastEnd = q, depth, ib
+        leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
       end
     end
     ax, ay = bx, by
   end
-  return leastQ, leastO, leastEnd, leastFar
+  return leastSquared, leastOverlap, leastEnd, leastFar
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -823,9 +834,10 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if turn2 == 0 then return false end
   turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0   -- signs, not magnitudes
   -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: the box around both
-  local w = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
-  local h = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
-  if not (w + h <= EXACT_TOP) and not rescaled then   -- luacheck: ignore 581 (inf is too big)
+  local spanX = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
+  local spanY = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
+  -- luacheck: ignore 581 (inf and NaN are too big)
+  if not (spanX + spanY <= EXACT_TOP) and not rescaled then
     -- Far beyond the exact range the projections (products of two sizes) would overflow into
     -- infinities and NaN. Collide copies scaled by a power of two k instead (this rare path
     -- allocates them); the scaled engine does not rescale again, so this recurses once.
@@ -834,27 +846,29 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     local s1, s2 = {}, {}
     for i = 1, n1 do s1[i] = p1[i] * k end
     for i = 1, n2 do s2[i] = p2[i] * k end
-    local depth, ux, uy, owner, edgeEnd, base, inside = convexPenetration(s1, n1, s2, n2, both, true)
+    local depth, ux, uy, owner, edgeEnd, base, inside =
+      convexPenetration(s1, n1, s2, n2, both, true)
     if not depth then return false end
     return depth / k, ux, uy, owner, edgeEnd, base, inside
   end
-  local q, o, edgeEnd, far, owner, turn, lines, nl
+  local squaredDepth, o, edgeEnd, far, owner, turn, lines, nl
   if both then
-    q, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, w, h)
-    if not q then return false end
-    local q2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, w, h)
-    if not q2 then return false end
+    squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, spanX, spanY)
+    if not squaredDepth then return false end
+    local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, spanX, spanY)
+    if not squaredDepth2 then return false end
     owner, turn, lines, nl = 1, turn1, p1, n1
-    if q2 < q then   -- keep the least penetration
-      q, o, edgeEnd, owner, turn, lines, nl = q2, o2, edgeEnd2, 2, turn2, p2, n2
+    if squaredDepth2 < squaredDepth then   -- keep the least penetration
+      squaredDepth, o, edgeEnd, owner, turn, lines, nl =
+        squaredDepth2, o2, edgeEnd2, 2, turn2, p2, n2
     end
   else
-    q, o, edgeEnd, far = reachPastBothEnds(p1, n1, turn1, p2, n2, w, h)
-    if not q then return false end
+    squaredDepth, o, edgeEnd, far = reachPastBothEnds(p1, n1, turn1, p2, n2, spanX, spanY)
+    if not squaredDepth then return false end
     owner, turn, lines, nl = 1, turn1, p1, n1
   end
   -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
-  if q == huge then return 0.0, 0.0, 0.0, owner, edgeEnd, edgeEnd, turn end
+  if squaredDepth == huge then return 0.0, 0.0, 0.0, owner, edgeEnd, edgeEnd, turn end
   -- the chosen edge's outward normal, turned the way p2 must move, and the line to clear
   local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
   local nx = ((lines[edgeEnd + 1] + 0.0) - lines[ia + 1]) * turn

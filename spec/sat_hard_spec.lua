@@ -34,7 +34,8 @@ describe("polygons about 1e-77 in size", function()
   it("decide touching and one-ulp overlaps as at size 1, in both orders and windings", function()
     for _, case in ipairs(cases) do
       local b = translate(UNIT, case.dx, case.dy or 0)
-      for _, pair in ipairs({ { UNIT, b }, { b, UNIT }, { reverse(UNIT), b }, { UNIT, reverse(b) } }) do
+      local orders = { { UNIT, b }, { b, UNIT }, { reverse(UNIT), b }, { UNIT, reverse(b) } }
+      for _, pair in ipairs(orders) do
         local p, q = scaled(pair[1], K), scaled(pair[2], K)
         assert.are.equal(case.collides, polygon.polygonsCollide(p, q))
         assert.are.equal(case.collides, polygon.polygonCollidesWith(p, q))
@@ -88,12 +89,16 @@ describe("non-finite coordinates", function()
           for argument = 1, 2 do
             local ok, message = pcall(function()
               local result   -- not a tail call, so the error has this line to point at
-              if argument == 1 then result = polygon[fname](b, UNIT) else result = polygon[fname](UNIT, b) end
+              if argument == 1 then
+                result = polygon[fname](b, UNIT)
+              else
+                result = polygon[fname](UNIT, b)
+              end
               return result
             end)
             assert.is_false(ok)
-            local expected = ("sat_hard_spec%%.lua:%%d+: %s: points%d holds a non%%-finite coordinate")
-              :format(fname, argument)
+            local expected = ("sat_hard_spec%%.lua:%%d+: %s: points%d holds a non%%-finite "
+              .. "coordinate"):format(fname, argument)
             assert.is_truthy(tostring(message):find(expected), tostring(message))
           end
         end
