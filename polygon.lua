@@ -883,6 +883,44 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   return o / len, ux, uy, owner, edgeEnd, base, inside
 end
 
+-- separatingPush's check of one push, cross's filter inlined (a call per vertex is most of
+-- the loop's time on PUC Lua): the largest det + bound over the vertices p of points moved by
+-- (dx, dy), where det is (b - a) x (p - q) turned to be > 0 on the side `inside` and bound is
+-- cross's error bound. No vertex is inside when it is 0. The bound grows with |p - q|, so each
+-- vertex is tried from a second point qb of the line too (the edge's other end; q itself when
+-- the line has no second vertex), and the better of the two kept. On LuaJIT, branch-free (with
+-- branches its side traces aborted, "register coalescing too complex", on every push).
+local lineShortfall
+if rawget(_G, "jit") then
+  lineShortfall = function(ex, ey, qx, qy, qbx, qby, inside, points, n, dx, dy)
+    local worst = 0.0
+    for i = 1, n - 1, 2 do
+      local px, py = points[i] + dx, points[i + 1] + dy
+      local l, r = ex * (py - qy), ey * (px - qx)
+      local lb, rb = ex * (py - qby), ey * (px - qbx)
+      worst = max(worst, min((l - r) * inside + CROSS_BOUND * (abs(l) + abs(r)),
+        (lb - rb) * inside + CROSS_BOUND * (abs(lb) + abs(rb))))
+    end
+    return worst
+  end
+else
+  lineShortfall = function(ex, ey, qx, qy, qbx, qby, inside, points, n, dx, dy)
+    local worst = 0.0
+    for i = 1, n - 1, 2 do
+      local px, py = points[i] + dx, points[i + 1] + dy
+      local l, r = ex * (py - qy), ey * (px - qx)
+      local reach = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+      if reach > worst then
+        l, r = ex * (py - qby), ey * (px - qbx)
+        local fromB = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+        if fromB < reach then reach = fromB end
+        if reach > worst then worst = reach end
+      end
+    end
+    return worst
+  end
+end
+
 -- How many times separatingPush may lengthen a push before it gives up: the rounding allowance
 -- doubles each round, and 64 doublings of eps |x| outgrow any coordinate.
 local PUSH_ROUNDS = 64
@@ -908,8 +946,9 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
   local cx, cy = lines[base] + 0.0, lines[base + 1] + 0.0
   local face = base == ia   -- the line is the edge, through a and b
   local ulx, uly = abs(ux), abs(uy)
-  -- the moved vertex rounds by up to eps |x| against the push, |x| about the line's
-  local allowance = EPS * (abs(cx) * ulx + abs(cy) * uly)
+  -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
+  -- allowance for it, none on the first check, then that, doubling every further round
+  local allowance = 0.0
   local push = depth   -- first as it is: an exact move along an axis keeps it exact
   for _ = 1, PUSH_ROUNDS do
     local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
@@ -919,28 +958,16 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
     local qx, qy = cx + lx, cy + ly
     local qbx, qby = bx + lx, by + ly   -- the line's other point, when it is the edge
     local ex, ey = qbx - (ax + lx), qby - (ay + ly)
-    -- the largest of det + bound over the vertices: none is inside unless it is > 0, where
-    -- det is (b - a) x (p - q) turned to be > 0 inside, and bound is cross's filter's; the
-    -- bound grows with |p - q|, so a vertex near the line is tried from the edge's other end too
-    local worst, wx, wy = 0.0, 0.0, 0.0
-    for i = 1, no - 1, 2 do
-      local px, py = others[i] + vx, others[i + 1] + vy
-      local l, r = ex * (py - qy), ey * (px - qx)
-      local reach = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-      if reach > worst then
-        if face then
-          l, r = ex * (py - qby), ey * (px - qbx)
-          local fromB = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-          if fromB < reach then reach = fromB end
-        end
-        if reach > worst then worst, wx, wy = reach, px, py end
-      end
+    local worst
+    if face then
+      worst = lineShortfall(ex, ey, qx, qy, qbx, qby, inside, others, no, vx, vy)
+    else
+      worst = lineShortfall(ex, ey, qx, qy, qx, qy, inside, others, no, vx, vy)
     end
     if worst == 0 then return push, dx, dy end
-    -- lengthen by the shortfall and the rounding allowance at the moving point (the vertex, or
-    -- the line when it is p2's), doubled every round
-    if owner == 2 then wx, wy = qx, qy end
-    allowance = 2 * allowance + EPS * (abs(wx) * ulx + abs(wy) * uly)
+    -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
+    -- fell short lies, to within the polygons' size), doubled every round
+    allowance = allowance == 0 and EPS * (abs(qx) * ulx + abs(qy) * uly) or 2 * allowance
     push = push + worst / sqrt(ex * ex + ey * ey) + allowance
     -- only far outside the exact range can the check's products overflow: keep the depth
     if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
