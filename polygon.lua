@@ -805,7 +805,8 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 -- convex polygons p1[1..n1] and p2[1..n2] (flat arrays, either winding) overlap: touching is not
 -- overlapping; fewer than 3 points or zero area never overlaps. both: the axes of both
 -- polygons (polygonsCollide); false: the axes of p1 only, both ends of each range
--- (polygonCollidesWith). Allocates nothing (except on the rare path beyond 2^500).
+-- (polygonCollidesWith). Allocates nothing (except on the rare path beyond 2^500); rescaled
+-- is for that path only (callers leave it nil). Call separatingPush (or convexPush) for a push.
 -- Returns
 --   false                                  no overlap (exact);
 --   nil, "points1" or "points2"            that polygon holds a NaN or infinite coordinate;
