@@ -35,13 +35,18 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- Arithmetic kernels: the only place that decides a sign
 --------------------------------------------------------------------------------------------------
 -- Every sign the library decides (winding, convexity, which side of an edge a point lies on,
--- whether projected ranges overlap) comes from one of two predicates:
---   cross(u0, u1, v0, v1)  the sign of the 2x2 determinant (u1 - u0) x (v1 - v0)
---   shoelace(points)       the sign of twice the signed area
--- Each first computes in ordinary floating point with an error bound (Shewchuk's filter). Only
--- when the bound cannot vouch for the sign does it redo the sum exactly, as a floating-point
--- expansion: a sum of doubles whose bits do not overlap, built from TwoSum and TwoProduct
--- (Dekker's split). The exact path allocates nothing: it reuses one scratch array.
+-- whether projected ranges overlap) comes from one of these predicates:
+--   cross(u0, u1, v0, v1)        the sign of the 2x2 determinant (u1 - u0) x (v1 - v0)
+--   areaSign(points, n)          the sign of twice the signed area; areaSignOf(points, n, ...)
+--                                is the same from shoelace's (or shoelaceBounds') sums, for
+--                                callers that use those sums too
+-- Each first computes in ordinary floating point with an error bound (Shewchuk's filter):
+-- cross's is CROSS_BOUND, the area's is areaUncertain. Only when the bound cannot vouch for the
+-- sign does it redo the sum exactly, as a floating-point expansion: a sum of doubles whose bits
+-- do not overlap, built from TwoSum and TwoProduct (Dekker's split). The exact path allocates
+-- nothing: it reuses one scratch array. Hot loops that inline cross's filter say so where they
+-- do it, with the measured reason (vertexInside, separatingPush); they call cross where the
+-- filter cannot decide, or, in separatingPush, lengthen the push until it can.
 --
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
 -- 2^-447 and 2^500 in magnitude (then all coordinates are multiples of 2^-499, all products of
@@ -73,22 +78,23 @@ local function twoDiff(a, b)
   return x, (a - av) + (bv - b)
 end
 
--- The scratch expansion: EXP[1..expLen], nonoverlapping, increasing in magnitude, no zeros.
-local EXP, expLen = {}, 0
+-- The scratch expansion: expansion[1..expLen], nonoverlapping, increasing in magnitude, no
+-- zeros (expAdd drops them).
+local expansion, expLen = {}, 0
 
 -- Adds the double b to the expansion exactly (Shewchuk's Grow-Expansion, zeros eliminated).
 local function expAdd(b)
   if b == 0 then return end
   local q, k = b, 0
   for i = 1, expLen do
-    local e = EXP[i]
+    local e = expansion[i]
     local s = q + e
     local bv = s - q
     local h = (q - (s - bv)) + (e - bv)
     q = s
-    if h ~= 0 then k = k + 1; EXP[k] = h end
+    if h ~= 0 then k = k + 1; expansion[k] = h end
   end
-  if q ~= 0 then k = k + 1; EXP[k] = q end
+  if q ~= 0 then k = k + 1; expansion[k] = q end
   expLen = k
 end
 
@@ -102,36 +108,35 @@ end
 
 -- The sign of the expansion is the sign of its largest component.
 local function expSign()
-  local top = EXP[expLen]
-  if expLen == 0 or top == 0 then return 0 end
-  return top > 0 and 1 or -1
+  if expLen == 0 then return 0 end
+  return expansion[expLen] > 0 and 1 or -1
 end
 
 -- Compresses the expansion in place to an equal one with fewer components (Shewchuk's
 -- Compress) and returns its largest component, which is within one ulp of the exact sum.
 local function expCompress()
   if expLen == 0 then return 0.0 end
-  local bottom, q = expLen, EXP[expLen]
+  local bottom, q = expLen, expansion[expLen]
   for i = expLen - 1, 1, -1 do
-    local e = EXP[i]
+    local e = expansion[i]
     local s = q + e
     local small = e - (s - q)
     if small ~= 0 then
-      EXP[bottom] = s; bottom = bottom - 1; q = small
+      expansion[bottom] = s; bottom = bottom - 1; q = small
     else
       q = s
     end
   end
-  EXP[bottom] = q
+  expansion[bottom] = q
   local top = 0
   for i = bottom + 1, expLen do
-    local g = EXP[i]
+    local g = expansion[i]
     local s = g + q
     local small = q - (s - g)
-    if small ~= 0 then top = top + 1; EXP[top] = small end
+    if small ~= 0 then top = top + 1; expansion[top] = small end
     q = s
   end
-  top = top + 1; EXP[top] = q
+  top = top + 1; expansion[top] = q
   expLen = top
   return q
 end
@@ -216,6 +221,26 @@ local function shoelace(points, n)
   return sum + px * d, sx, sd + d * d
 end
 
+-- shoelace and the bounding box in one pass, for the collision functions: returns shoelace's
+-- three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes sx + sd non-finite.
+local function shoelaceBounds(points, n)
+  local x0, y1 = points[1] + 0.0, points[2] + 0.0
+  local px, py = 0.0, y1
+  local sum, sx, sd = 0.0, 0.0, 0.0
+  local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+  for i = 3, n - 1, 2 do
+    local vx, y = points[i] + 0.0, points[i + 1] + 0.0
+    local x, d = vx - x0, y - py
+    sum = sum + (px + x) * d
+    sx, sd = sx + x * x, sd + d * d
+    if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+    if y < ymin then ymin = y elseif y > ymax then ymax = y end
+    px, py = x, y
+  end
+  local d = y1 - py
+  return sum + px * d, sx, sd + d * d, xmin, xmax, ymin, ymax
+end
+
 -- Whether shoelace's sum is too close to zero for its sign to be trusted. Each term
 -- (X_i + X_j) d is off by at most 4 eps (|X_i| + |X_j|) |d| and summing m terms adds (m - 1) eps
 -- times their magnitudes, so the error is below (m + 3) eps T, where by Cauchy-Schwarz
@@ -223,17 +248,21 @@ end
 -- times that (no square root); an overflow (an infinite or NaN sum) only sends the decision to
 -- the exact path.
 local function areaUncertain(m, sum, sx, sd)
+  -- 2^-50 = 8 eps: (m + 8) 8 eps is four times the derived 2 (m + 3) eps, and the + 5 more
+  -- than covers the rounding of this bound's own products
   local k = (m + 8) * 2^-50
   return not (sum * sum > k * k * sx * sd)   -- luacheck: ignore 581 (NaN must be uncertain)
 end
 
--- Twice the signed area as an exact expansion in EXP: sum of x_i y_j - x_j y_i over all edges,
--- of the coordinates scaled by s (returned; 1 unless they pass 2^500).
+-- Twice the signed area as an exact expansion in `expansion`: sum of x_i y_j - x_j y_i over all
+-- edges, of the coordinates scaled by s (returned; 1 unless they pass 2^500).
 local function shoelaceExact(points, n)
   local m = 0.0
   for i = 1, n do m = max(m, abs(points[i] + 0.0)) end
   local s = exactScale(m)
   expLen = 0
+  -- compress when 32 components have been added: often enough that each addition walks a short
+  -- expansion, rarely enough that compressing costs little next to the additions
   local limit = 32
   local xi, yi = points[n - 1] * s, points[n] * s
   for i = 1, n - 1, 2 do
@@ -241,7 +270,6 @@ local function shoelaceExact(points, n)
     expAddProduct(xi, yj)
     expAddProduct(-xj, yi)
     xi, yi = xj, yj
-    -- every addition walks the whole expansion: compress it whenever it has grown by 32
     if expLen > limit then
       expCompress()
       limit = expLen + 32
@@ -699,7 +727,7 @@ local function expAddTriple(a, b, c)
 end
 
 -- The moment sum (u_i + u_j)(u_i v_j - u_j v_i) over the edges i -> j, as an exact expansion in
--- EXP of the coordinates times s; u at offset du, v at dv of each vertex (x moment: 0, 1).
+-- expansion of the coordinates times s; u at offset du, v at dv of each vertex (x moment: 0, 1).
 local function momentExact(points, n, s, du, dv)
   expLen = 0
   local limit = 32   -- as in shoelaceExact: compress whenever the expansion has grown by 32
@@ -955,160 +983,196 @@ else
   end
 end
 
--- The projections above are taken relative to a vertex a of one polygon so that far from the
--- origin they stay as accurate as near it. Their rounding error is at most 4 eps (w |nx| + h |ny|)
--- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that is decided
--- again exactly, with the cross kernel.
-local function projectionTolerance(w, h, nx, ny)
-  return 16 * EPS * (w * abs(nx) + h * abs(ny))
+-- The least projection nx (vx - ax) + ny (vy - ay) over the vertices of a convex polygon, with
+-- the index of a vertex where it is found, for the edges of another convex polygon in turn.
+-- Rotating calipers: as the edges' outward normals turn, the deepest vertex moves on around
+-- `points`, `step` (2 or -2) at a time; so the first edge (deepest == 0) scans every vertex and
+-- each next one walks on from the last deepest vertex while the projection does not rise. A walk
+-- stopped early by rounding misses the least by less than the projections' tolerance, and
+-- the SAT engine decides every depth within that of zero again over all vertices, exactly.
+-- On LuaJIT the walk's data-dependent exits become side traces that cost more than they save
+-- (measured: compiling them took most of the time of a mixed collision workload), so there the
+-- scan is whole, branch-free, every time.
+local deepestPast
+if rawget(_G, "jit") then
+  deepestPast = function(points, n, ax, ay, nx, ny, deepest)
+    return deepest, minProjection(points, n, ax, ay, nx, ny)
+  end
+else
+  deepestPast = function(points, n, ax, ay, nx, ny, deepest, step)
+    local lo
+    if deepest == 0 then
+      deepest, lo = 1, nx * (points[1] - ax) + ny * (points[2] - ay)
+      for i = 3, n - 1, 2 do
+        local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
+        if s < lo then deepest, lo = i, s end
+      end
+      return deepest, lo
+    end
+    lo = nx * (points[deepest] - ax) + ny * (points[deepest + 1] - ay)
+    for _ = 3, n, 2 do   -- at most m - 1 steps around a polygon of m vertices
+      local k = deepest + step
+      if k > n then k = 1 elseif k < 1 then k = n - 1 end
+      local s = nx * (points[k] - ax) + ny * (points[k + 1] - ay)
+      if s > lo then break end
+      deepest, lo = k, s
+    end
+    return deepest, lo
+  end
 end
 
--- The vertex of points extreme along the normal of edge a -> b: the largest projection when
--- want is -1, the smallest when it is 1. Compared exactly: n.(w - v) has the sign of
--- -(b - a) x (w - v).
-local function extreme(ax, ay, bx, by, points, n, want)
-  local ex, ey = points[1], points[2]
+-- The projections above are taken relative to a vertex a of one polygon so that far from the
+-- origin they stay as accurate as near it. Their rounding error is at most
+-- 4 eps (spanX |nx| + spanY |ny|), where spanX and spanY bound every |vx - ax| and |vy - ay|;
+-- a gap within four times that (16 eps: the bound of two projections subtracted, doubled for
+-- the rounding of the bound itself) is decided again exactly, with the cross kernel.
+local function projectionTolerance(spanX, spanY, nx, ny)
+  return 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))
+end
+
+-- shared helper: lead moves it to the kernels
+-- Whether points[1..n] holds a NaN or an infinity. Called only where a sum came out non-finite.
+local function holdsNonFinite(points, n)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v ~= v or v == huge or v == -huge then return true end
+  end
+  return false
+end
+
+-- shared helper: lead moves it to the kernels
+-- The largest coordinate magnitude of points[1..n], or m if that is larger.
+local function largestMagnitude(points, n, m)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v < 0 then v = -v end
+    if v > m then m = v end
+  end
+  return m
+end
+
+-- The SAT engine's one exact fallback: the index of a vertex of points that, moved by (dx, dy)
+-- and rounded as a caller's `p[i] + dx` rounds, lies strictly on the side `inside` (1 or -1, the
+-- sign of the cross product) of the line through c parallel to a -> b; false when none does.
+-- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
+local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
+  local ex, ey = (bx + 0.0) - ax, (by + 0.0) - ay
+  for i = 1, n - 1, 2 do
+    local px, py = points[i] + dx, points[i + 1] + dy
+    -- cross's filter inlined (a call per vertex is most of this loop's time on PUC Lua): the
+    -- vertex is certainly not inside when -inside det >= bound, certainly inside when
+    -- inside det >= bound; only between does cross decide, exactly
+    local l, r = ex * (py - cy), ey * (px - cx)
+    local det = (l - r) * inside
+    local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+    if -det < bound and (det >= bound and det > 0 or
+                         cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0) then
+      return i
+    end
+  end
+  return false
+end
+
+-- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
+-- exactly: v lies deeper than e when (b - a) x (v - e) has the sign `inside`.
+local function deepestVertex(ax, ay, bx, by, inside, points, n)
+  local best, ex, ey = 1, points[1], points[2]
   for i = 3, n - 1, 2 do
     local vx, vy = points[i], points[i + 1]
-    if cross(ax, ay, bx, by, ex, ey, vx, vy) * want > 0 then ex, ey = vx, vy end
+    if cross(ax, ay, bx, by, ex, ey, vx, vy) * inside > 0 then best, ex, ey = i, vx, vy end
   end
-  return ex, ey
+  return best
 end
 
--- Whether the edge a -> b has a normal on which the ranges of p1 and p2 are separated or just
--- touch, decided exactly: max1 <= min2 <=> (b - a) x (min2 - max1) <= 0, and likewise below.
-local function separatedExact(ax, ay, bx, by, p1, n1, p2, n2)
-  local hx1, hy1 = extreme(ax, ay, bx, by, p1, n1, -1)
-  local lx2, ly2 = extreme(ax, ay, bx, by, p2, n2, 1)
-  if cross(ax, ay, bx, by, hx1, hy1, lx2, ly2) <= 0 then return true end
-  local lx1, ly1 = extreme(ax, ay, bx, by, p1, n1, 1)
-  local hx2, hy2 = extreme(ax, ay, bx, by, p2, n2, -1)
-  return cross(ax, ay, bx, by, hx2, hy2, lx1, ly1) <= 0
-end
-
--- The tutorial's test, on the edge normals of `axes` (p1 here): both polygons projected on each
--- normal, and both ends of the ranges compared. Used by the one-sided functions.
--- Returns false on a separating axis; otherwise the least penetration so far: bq, the squared
--- depth, the overlap o >= 0 along the normal (nx, ny) (depth o / |n|), and that normal turned
--- the way the second polygon must move. The squared depth is o (o / |n|^2), which neither
--- overflows nor underflows while the coordinates stay in the exact range.
--- w, h: see projectionTolerance.
-local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bq, bo, bnx, bny)
-  local ax, ay = axes[na - 1] + 0.0, axes[na] + 0.0
-  for i = 1, na - 1, 2 do
-    local bx, by = axes[i] + 0.0, axes[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = by - ay, ax - bx
-      local min1, max1 = projectRange(p1, n1, ax, ay, nx, ny)
-      local min2, max2 = projectRange(p2, n2, ax, ay, nx, ny)
-      -- up: how far p2 must move along +n to clear p1; down: along -n
-      local up, down = max1 - min2, max2 - min1
-      local tol = projectionTolerance(w, h, nx, ny)
-      if up <= tol or down <= tol then
-        if up < -tol or down < -tol then return false end
-        if separatedExact(ax, ay, bx, by, p1, n1, p2, n2) then return false end
-        -- overlapping by less than the rounding: the float depth may have come out negative
-        if up < 0 then up = 0 end
-        if down < 0 then down = 0 end
-      end
-      local q = (up < down and up or down) / (nx * nx + ny * ny)
-      if up < down then
-        q = q * up
-        if q < bq then bq, bo, bnx, bny = q, up, nx, ny end
-      else
-        q = q * down
-        if q < bq then bq, bo, bnx, bny = q, down, -nx, -ny end
-      end
-    end
-    ax, ay = bx, by
-  end
-  return bq, bo, bnx, bny
-end
-
--- Whether no vertex of `other` lies strictly inside the edge a -> b of a polygon whose area has
--- the sign `turn` (> 0 clockwise on screen), decided exactly.
-local function outsideExact(ax, ay, bx, by, turn, other, no)
-  for i = 1, no - 1, 2 do
-    if turn * cross(ax, ay, bx, by, ax, ay, other[i], other[i + 1]) > 0 then return false end
-  end
-  return true
-end
-
--- The separating axis test of two convex polygons, face by face: for each edge of `edges`, how
--- deep `other` reaches past it, measured on the edge's outward normal. Two convex polygons
--- overlap exactly when every edge of both is reached past, and the least such depth is the
--- least penetration over all the tutorial's axes and both ends of their ranges (the overlap of
--- the far ends is never smaller: it is the support of the Minkowski difference in a direction
--- that is not a face of it). So one polygon is projected per axis where the tutorial projects
--- both, and the other polygon's own projection is known: its edge, at 0.
--- turn: the sign of the area of `edges`; push: 1 when `other` is the polygon the displacement
--- moves, -1 when `edges` is. Returns false or the best (bq, bo, bnx, bny) as leastPenetration.
-local function deepestReach(edges, ne, turn, other, no, push, w, h, bq, bo, bnx, bny)
+-- The separating axis test of two convex polygons, face by face: for each edge a -> b of
+-- `edges` (turn: the sign of its area, 1 or -1), how deep `other` (turnOther likewise) reaches
+-- past it along its outward normal n. Two convex polygons overlap exactly when every edge of
+-- both is reached past, and the least such depth is the least penetration over all the
+-- tutorial's axes and both ends of their ranges (the overlap of the far ends is never smaller:
+-- it is the support of the Minkowski difference in a direction that is not a face of it). So
+-- one polygon is projected per axis where the tutorial projects both; the edge itself is the
+-- other's range end, at 0.
+-- Returns false on a separating or touching axis; otherwise the least penetration's squared
+-- depth o (o / |n|^2) (neither overflows nor underflows in the exact range), its overlap
+-- o >= 0 along n (the depth is o / |n|), and the index of its edge's end b.
+-- spanX, spanY: see projectionTolerance.
+local function reachPast(edges, ne, turn, other, no, turnOther, spanX, spanY)
+  local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
+  -- the calipers' state for deepestPast: the last deepest vertex of other (0: none yet) and the
+  -- way it moves as the normals turn: forward if other winds like edges
+  local deepest, step = 0, turnOther == turn and 2 or -2
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
-  for i = 1, ne - 1, 2 do
-    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+  for ib = 1, ne - 1, 2 do
+    local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = (by - ay) * sign, (ax - bx) * sign
-      local depth = -minProjection(other, no, ax, ay, nx, ny)
-      local tol = projectionTolerance(w, h, nx, ny)
+      local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
+      local lo
+      deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
+      local depth = -lo
+      -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
+      local tol = 16 * EPS * (spanX * (nx < 0 and -nx or nx) + spanY * (ny < 0 and -ny or ny))
       if depth <= tol then
-        if depth < -tol or outsideExact(ax, ay, bx, by, turn, other, no) then return false end
-        if depth < 0 then depth = 0 end
+        if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+          return false
+        end
+        if depth < 0 then depth = 0.0 end
       end
-      local q = depth * (depth / (nx * nx + ny * ny))
-      if q < bq then bq, bo, bnx, bny = q, depth, nx * push, ny * push end
+      local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+      if squaredDepth < leastSquared then   -- keep the least
+        leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+      end
     end
     ax, ay = bx, by
   end
-  return bq, bo, bnx, bny
+  return leastSquared, leastOverlap, leastEnd
 end
 
--- The shared body of the four polygon collision functions: false, or the least penetration as
--- leastPenetration returns it and a size that bounds the coordinates' magnitudes.
--- both: the axes of both polygons, else those of p1 only.
-local collide
-function collide(fname, p1, p2, both)
-  local n1 = checkPoints(p1, fname, "points1", 4)
-  local n2 = checkPoints(p2, fname, "points2", 4)
-  if n1 < 6 or n2 < 6 then return false end
-  local a1, sx1, sd1 = shoelace(p1, n1)
-  local turn1 = areaSignOf(p1, n1, a1, sx1, sd1)
-  if turn1 == 0 then return false end
-  local a2, sx2, sd2 = shoelace(p2, n2)
-  local turn2 = areaSignOf(p2, n2, a2, sx2, sd2)
-  if turn2 == 0 then return false end
-  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
-  -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
-  -- between the two first vertices covers a vertex of one polygon seen from one of the other.
-  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
-  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
-  if not (w + h <= EXACT_TOP) then   -- luacheck: ignore 581 (true for inf and NaN too)
-    -- Far beyond the exact range the projections (products of two sizes) would overflow into
-    -- infinities and NaN. Collide copies scaled by a power of two k instead, to coordinates
-    -- below 2^464, so sizes below 2^500 (this rare path allocates the copies). A projection o
-    -- scales by k^2 and a normal by k, so the normal times k again gives back the depth o / |n|.
-    local m = 0.0
-    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
-    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
-    local k = powerScale(m, 2^400, 2^464)
-    local s1, s2 = {}, {}
-    for i = 1, n1 do s1[i] = p1[i] * k end
-    for i = 1, n2 do s2[i] = p2[i] * k end
-    local q, o, nx, ny, size = collide(fname, s1, s2, both)
-    if not q then return false end
-    return q, o, nx * k, ny * k, size / k, p1, n1, p2, n2
+-- reachPast for the one-sided functions, which test the axes of `edges` only: both ends of each
+-- range, so also how far `other` reaches beyond the vertex of `edges` deepest inside, along -n.
+-- Returns false, or the squared depth, o, the edge's end and, for the far end, the index of
+-- that deepest vertex
+-- (else false).
+local function reachPastBothEnds(edges, ne, turn, other, no, spanX, spanY)
+  local leastSquared, leastOverlap, leastEnd, leastFar = huge, 0.0, 1, false
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  for ib = 1, ne - 1, 2 do
+    local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
+      local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
+      local tol = projectionTolerance(spanX, spanY, nx, ny)
+      local lo, hi = projectRange(other, no, ax, ay, nx, ny)
+      -- face: how far other must move along n to clear the edge; far: against n, past the
+      -- deepest vertex of edges
+      local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+      if face <= tol then
+        if face < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+          return false
+        end
+        if face < 0 then face = 0.0 end
+      end
+      local ic = false
+      if far <= tol then
+        ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
+        if far < -tol or not vertexInside(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
+                                          other, no, 0.0, 0.0) then
+          return false
+        end
+        if far < 0 then far = 0.0 end
+      end
+      local depth = face < far and face or far
+      local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+      if squaredDepth < leastSquared then   -- keep the least
+        if far < face then
+          leastFar = ic or deepestVertex(ax, ay, bx, by, turn, edges, ne)
+        else
+          leastFar = false
+        end
+        leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+      end
+    end
+    ax, ay = bx, by
   end
-  local q, o, nx, ny
-  if both then
-    q, o, nx, ny = deepestReach(p1, n1, turn1, p2, n2, 1, w, h, huge, 0, 0, 0)
-    if q then q, o, nx, ny = deepestReach(p2, n2, turn2, p1, n1, -1, w, h, q, o, nx, ny) end
-  else
-    q, o, nx, ny = leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 0, 0, 0)
-  end
-  if not q then return false end
-  -- a bound on the largest coordinate magnitude: |x1| + |y1| + w + h
-  return q, o, nx, ny, abs(p1[1] + 0.0) + abs(p1[2] + 0.0) + w + h, p1, n1, p2, n2
+  return leastSquared, leastOverlap, leastEnd, leastFar
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -1120,53 +1184,253 @@ local function unit(nx, ny)
   return nx / len, ny / len, len * m
 end
 
--- overlap, dx, dy from collide's least penetration. Adding (dx, dy) to the second polygon rounds
--- its coordinates, which can leave an overlap of an ulp that the exact test still sees; so a
--- depth below 2 eps M, M the largest coordinate magnitude (about an ulp of it), is raised to it.
--- Such a push moves every coordinate by at least an ulp along its larger component, so a loop
--- that resolves until nothing collides ends, instead of being told forever to move by zero.
-local function displacement(q, o, nx, ny, size, p1, n1, p2, n2)
-  if not q then return false end
-  -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
-  if nx == 0 and ny == 0 then return 0.0, 0.0, 0.0 end
-  local ux, uy, len = unit(nx, ny)
-  local depth = o / len
-  if depth < 2 * EPS * size then   -- size >= M: only then is M worth finding
-    local m = 0.0
-    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
-    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
-    if depth < 2 * EPS * m then depth = 2 * EPS * m end
+-- Below 2^464 the products of two coordinate differences (each below 2^466 after scaling)
+-- cannot overflow; from 2^400 up the scaled copies keep 64 binades of headroom below it.
+local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
+
+--- THE SAT ENGINE. convexPenetration(p1, n1, p2, n2, both) decides exactly whether the
+-- convex polygons p1[1..n1] and p2[1..n2] (flat arrays, either winding) overlap: touching is not
+-- overlapping; fewer than 3 points or zero area never overlaps. both: the axes of both
+-- polygons (polygonsCollide); false: the axes of p1 only, both ends of each range
+-- (polygonCollidesWith). Allocates nothing (except on the rare path beyond 2^500); rescaled
+-- is for that path only (callers leave it nil). Call separatingPush (or convexPush) for a push.
+-- Returns
+--   false                                  no overlap (exact);
+--   nil, "points1" or "points2"            that polygon holds a NaN or infinite coordinate;
+--   depth, ux, uy, owner, edgeEnd, base, inside
+--     the least penetration: depth >= 0 (accurate to rounding) along the unit vector (ux, uy)
+--     that p2 must move, and the line the move must clear, for separatingPush: in polygon
+--     `owner` (1 or 2), the edge ending at vertex index edgeEnd moved to pass through vertex
+--     index base, with `inside` the cross product's sign on the side the other must leave.
+local function convexPenetration(p1, n1, p2, n2, both, rescaled)
+  if n1 < 6 or n2 < 6 then return false end
+  local area1, sx1, sd1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
+  local area2, sx2, sd2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
+  -- a NaN or infinity makes these sums non-finite; so does overflow, which is not an error
+  -- luacheck: ignore 581 (NaN must count as non-finite)
+  if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+  -- luacheck: ignore 581 (NaN must count as non-finite)
+  if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+  -- boxes apart or touching: so are the polygons (the one-sided test may still see overlap)
+  if both and (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) then
+    return false
   end
-  return depth, ux * depth + 0.0, uy * depth + 0.0   -- + 0.0 turns -0 into 0
+  -- zero area never collides: the turn is the sign of the area, decided exactly
+  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
+  if turn1 == 0 then return false end
+  local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
+  if turn2 == 0 then return false end
+  turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0   -- signs, not magnitudes
+  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: the box around both
+  local spanX = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
+  local spanY = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
+  -- luacheck: ignore 581 (inf and NaN are too big)
+  if not (spanX + spanY <= EXACT_TOP) and not rescaled then
+    -- Far beyond the exact range the projections (products of two sizes) would overflow into
+    -- infinities and NaN. Collide copies scaled by a power of two k instead (this rare path
+    -- allocates them); the scaled engine does not rescale again, so this recurses once.
+    local k = powerScale(largestMagnitude(p2, n2, largestMagnitude(p1, n1, 0.0)),
+      RESCALE_LOW, RESCALE_HIGH)
+    local s1, s2 = {}, {}
+    for i = 1, n1 do s1[i] = p1[i] * k end
+    for i = 1, n2 do s2[i] = p2[i] * k end
+    local depth, ux, uy, owner, edgeEnd, base, inside =
+      convexPenetration(s1, n1, s2, n2, both, true)
+    if not depth then return false end
+    return depth / k, ux, uy, owner, edgeEnd, base, inside
+  end
+  local squaredDepth, o, edgeEnd, far, owner, turn, lines, nl
+  if both then
+    squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, spanX, spanY)
+    if not squaredDepth then return false end
+    local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, spanX, spanY)
+    if not squaredDepth2 then return false end
+    owner, turn, lines, nl = 1, turn1, p1, n1
+    if squaredDepth2 < squaredDepth then   -- keep the least penetration
+      squaredDepth, o, edgeEnd, owner, turn, lines, nl =
+        squaredDepth2, o2, edgeEnd2, 2, turn2, p2, n2
+    end
+  else
+    squaredDepth, o, edgeEnd, far = reachPastBothEnds(p1, n1, turn1, p2, n2, spanX, spanY)
+    if not squaredDepth then return false end
+    owner, turn, lines, nl = 1, turn1, p1, n1
+  end
+  -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
+  if squaredDepth == huge then return 0.0, 0.0, 0.0, owner, edgeEnd, edgeEnd, turn end
+  -- the chosen edge's outward normal, turned the way p2 must move, and the line to clear
+  local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+  local nx = ((lines[edgeEnd + 1] + 0.0) - lines[ia + 1]) * turn
+  local ny = ((lines[ia] + 0.0) - lines[edgeEnd]) * turn
+  local base, inside = ia, turn
+  if owner == 2 then
+    nx, ny = -nx, -ny
+  elseif far then
+    nx, ny, base, inside = -nx, -ny, far, -turn
+  end
+  local ux, uy, len = unit(nx, ny)
+  return o / len, ux, uy, owner, edgeEnd, base, inside
+end
+
+-- separatingPush's check of one push, cross's filter inlined (a call per vertex is most of
+-- the loop's time on PUC Lua): the largest det + bound over the vertices p of points moved by
+-- (dx, dy), where det is (b - a) x (p - q) turned to be > 0 on the side `inside` and bound is
+-- cross's error bound. No vertex is inside when it is 0. The bound grows with |p - q|, so each
+-- vertex is tried from a second point qb of the line too (the edge's other end; q itself when
+-- the line has no second vertex), and the better of the two kept. On LuaJIT, branch-free (with
+-- branches its side traces aborted, "register coalescing too complex", on every push).
+local lineShortfall
+if rawget(_G, "jit") then
+  lineShortfall = function(ex, ey, qx, qy, qbx, qby, inside, points, n, dx, dy)
+    local worst = 0.0
+    for i = 1, n - 1, 2 do
+      local px, py = points[i] + dx, points[i + 1] + dy
+      local l, r = ex * (py - qy), ey * (px - qx)
+      local lb, rb = ex * (py - qby), ey * (px - qbx)
+      worst = max(worst, min((l - r) * inside + CROSS_BOUND * (abs(l) + abs(r)),
+        (lb - rb) * inside + CROSS_BOUND * (abs(lb) + abs(rb))))
+    end
+    return worst
+  end
+else
+  lineShortfall = function(ex, ey, qx, qy, qbx, qby, inside, points, n, dx, dy)
+    local worst = 0.0
+    for i = 1, n - 1, 2 do
+      local px, py = points[i] + dx, points[i + 1] + dy
+      local l, r = ex * (py - qy), ey * (px - qx)
+      local reach = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+      if reach > worst then
+        l, r = ex * (py - qby), ey * (px - qbx)
+        local fromB = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+        if fromB < reach then reach = fromB end
+        if reach > worst then worst = reach end
+      end
+    end
+    return worst
+  end
+end
+
+-- How many times separatingPush may lengthen a push before it gives up: the rounding allowance
+-- doubles each round, and 64 doublings of eps |x| outgrow any coordinate.
+local PUSH_ROUNDS = 64
+
+--- The push that separates, from convexPenetration's least penetration: a push of length >=
+-- depth along (ux, uy) after which, with p2's coordinates moved by (dx, dy) and rounded the way
+-- a game moves them (p[i] = p[i] + dx), the chosen line separates the polygons for sure. A
+-- rounded move falls short of the exact depth by the rounding of the moved coordinates (eps
+-- times their magnitude, along the push) and of the depth itself, so the push is checked on the
+-- rounded coordinates: every vertex that must have left must lie on the far side of the line
+-- or on it, which cross's filter proves (the same sign the exact kernel would find: touching
+-- counts as apart). A vertex the filter cannot place lengthens the push by its shortfall plus
+-- the bound and the rounding allowance at it, and the check runs again. Deciding such vertices
+-- exactly instead would cost an expansion at nearly every push: its vertex ends on the line.
+-- Returns push length, dx, dy.
+local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+  if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
+  local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
+  if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
+  local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+  local ax, ay, bx, by = lines[ia] + 0.0, lines[ia + 1] + 0.0, lines[edgeEnd] + 0.0,
+    lines[edgeEnd + 1] + 0.0
+  local cx, cy = lines[base] + 0.0, lines[base + 1] + 0.0
+  local face = base == ia   -- the line is the edge, through a and b
+  local ulx, uly = abs(ux), abs(uy)
+  -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
+  -- allowance for it, none on the first check, then that, doubling every further round
+  local allowance = 0.0
+  local push = depth   -- first as it is: an exact move along an axis keeps it exact
+  for _ = 1, PUSH_ROUNDS do
+    local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
+    -- the polygon that moves is p2: its line when owner is 2, else its vertices
+    local lx, ly = dx * lineMoves, dy * lineMoves
+    local vx, vy = dx - lx, dy - ly
+    local qx, qy = cx + lx, cy + ly
+    local qbx, qby = bx + lx, by + ly   -- the line's other point, when it is the edge
+    local ex, ey = qbx - (ax + lx), qby - (ay + ly)
+    local worst
+    if face then
+      worst = lineShortfall(ex, ey, qx, qy, qbx, qby, inside, others, no, vx, vy)
+    else
+      worst = lineShortfall(ex, ey, qx, qy, qx, qy, inside, others, no, vx, vy)
+    end
+    if worst == 0 then return push, dx, dy end
+    -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
+    -- fell short lies, to within the polygons' size), doubled every round
+    allowance = allowance == 0 and EPS * (abs(qx) * ulx + abs(qy) * uly) or 2 * allowance
+    push = push + worst / sqrt(ex * ex + ey * ey) + allowance
+    -- only far outside the exact range can the check's products overflow: keep the depth
+    if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
+  end
+  return depth, ux * depth + 0.0, uy * depth + 0.0
+end
+
+--- convexPush(p1, n1, p2, n2, both): convexPenetration, then separatingPush. Returns false, or
+-- nil and the argument name for a non-finite coordinate, or push length, dx, dy: adding (dx, dy)
+-- to every vertex of p2 leaves the polygons touching or apart, exactly.
+local function convexPush(p1, n1, p2, n2, both)
+  local depth, ux, uy, owner, edgeEnd, base, inside = convexPenetration(p1, n1, p2, n2, both)
+  if not depth then return depth, ux end
+  return separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+end
+
+-- Raises the error for a non-finite coordinate at the caller of the public function, which
+-- called the private function that calls this one.
+local function raiseNonFinite(fname, argname)
+  error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+end
+
+local function collides(fname, points1, points2, both)
+  local n1 = checkPoints(points1, fname, "points1", 4)
+  local n2 = checkPoints(points2, fname, "points2", 4)
+  local depth, argname = convexPenetration(points1, n1, points2, n2, both)
+  if depth == nil then raiseNonFinite(fname, argname) end
+  return depth ~= false
 end
 
 --- Whether the edge normals of points1 show no separating axis between two convex polygons.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonCollidesWith(points1, points2)
-  return collide("polygonCollidesWith", points1, points2, false) ~= false
+  local collided = collides("polygonCollidesWith", points1, points2, false)
+  return collided
 end
 
 --- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonsCollide(points1, points2)
-  return collide("polygonsCollide", points1, points2, true) ~= false
+  local collided = collides("polygonsCollide", points1, points2, true)
+  return collided
+end
+
+local function pushOut(fname, points1, points2, both)
+  local n1 = checkPoints(points1, fname, "points1", 4)
+  local n2 = checkPoints(points2, fname, "points2", 4)
+  local push, dx, dy = convexPush(points1, n1, points2, n2, both)
+  if push == nil then raiseNonFinite(fname, dx) end
+  return push, dx, dy
 end
 
 --- As polygonCollidesWith, with the minimum translation vector over the axes of points1.
--- @return overlap, dx, dy (moving points2 by dx, dy makes the polygons just touch) or false
+-- @return overlap, dx, dy or false: after adding (dx, dy) to every vertex of points2,
+-- polygonCollidesWith(points1, moved) is false (see polygonsCollideV)
 function polygon.polygonCollidesWithV(points1, points2)
-  return displacement(collide("polygonCollidesWithV", points1, points2, false))
+  local push, dx, dy = pushOut("polygonCollidesWithV", points1, points2, false)
+  return push, dx, dy
 end
 
 --- As polygonsCollide, with the minimum translation vector.
 -- overlap is the penetration depth along the axis of least penetration, right also when one
 -- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
 -- points2), pointing the right way in either argument order and when the centres coincide.
+-- One push separates: after p[i] = p[i] + dx (and + dy) on points2, rounded,
+-- polygonsCollide(points1, moved) is false, and the push is at most a few ulps of the
+-- coordinates longer than the exact depth. Raises an error for a non-finite coordinate.
 -- @return overlap, dx, dy or false
 function polygon.polygonsCollideV(points1, points2)
-  return displacement(collide("polygonsCollideV", points1, points2, true))
+  local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true)
+  return push, dx, dy
 end
 
 --------------------------------------------------------------------------------------------------
@@ -1245,13 +1509,13 @@ local function lineWithinExact(ax, ay, bx, by, cx, cy, r)
   expAddProduct(-eyh, wxh); expAddProduct(-eyh, wxl); expAddProduct(-eyl, wxh); expAddProduct(-eyl, wxl)
   expCompress()
   local crossLen = expLen
-  for i = 1, crossLen do crossParts[i] = EXP[i] end
+  for i = 1, crossLen do crossParts[i] = expansion[i] end
   expLen = 0
   expAddSquare(exh, exl, 1)
   expAddSquare(eyh, eyl, 1)
   expCompress()
   local lengthLen = expLen
-  for i = 1, lengthLen do lengthParts[i] = EXP[i] end
+  for i = 1, lengthLen do lengthParts[i] = expansion[i] end
   local radiusSqHi, radiusSqLo = twoProduct(r * s, r * s)
   expLen = 0
   for i = 1, lengthLen do

@@ -476,4 +476,25 @@ function oracle.discMeetsPolygon(points, cx, cy, r)
   return false
 end
 
+---------------------------------------------------------------------------------------------------
+-- Depth bounds without rounding.
+
+--- Whether the exact least penetration depth (min over the tested axes of overlap / |n|) is at
+-- least a - b, for doubles a and b, decided exactly: x <= overlap / |n| <=> x <= 0 or
+-- x^2 |n|^2 <= overlap^2 (every overlap is >= 0 when the polygons collide; call it only then).
+function oracle.depthAtLeast(p1, p2, both, a, b)
+  local x = sub(new(a), new(b))
+  if sign(x) <= 0 then
+    return true
+  end
+  local xx = mul(x, x)
+  for _, o in ipairs(oracle.axisOverlaps(p1, p2, both)) do
+    local nn = add(mul(o.nx, o.nx), mul(o.ny, o.ny))
+    if sign(o.overlap) < 0 or exact.compare(mul(xx, nn), mul(o.overlap, o.overlap)) > 0 then
+      return false
+    end
+  end
+  return true
+end
+
 return oracle

@@ -1,0 +1,145 @@
+-- One push separates: for random convex pairs at offsets from 1 to 1e12, in both argument orders,
+-- with overlaps from deep to a few ulps, polygonsCollideV (and polygonCollidesWithV) return a push
+-- (dx, dy) such that after adding it to every vertex of the second polygon, rounded the way a game
+-- does it (p[i] = p[i] + dx), the module's exact predicate says the pair no longer collides, and
+-- the independent oracle agrees. The push is at most 8 eps M longer than the oracle's exact least
+-- penetration depth (M: the largest coordinate magnitude of the pair, eps = 2^-53).
+--
+-- Measured with POLYGON_SPEC_COUNTS=1 (lua5.4 /usr/bin/busted spec/sat_push_spec.lua): before the
+-- separating push (polygon.lua at eda3a2c) most colliding pairs were still colliding after the
+-- push; see notes/a1.md for the counts.
+
+local polygon = require "polygon"
+local oracle = require "oracle"
+local prng = require "prng"
+local shapes = require "shapes"
+local tally = require "tally"
+
+local translate, reverse = shapes.translate, shapes.reverse
+local EPS = 2^-53
+local OFFSETS = { 1, 1e3, 1e6, 1e9, 1e12 }
+local PAIRS_PER_OFFSET = 24
+
+-- A convex polygon of 3 to 8 vertices on a circle of the given radius around (cx, cy), in either
+-- winding. Consecutive angles are at least 0.3 of the even spacing apart, so every turn is clear
+-- of rounding.
+local function convexPolygon(rng, cx, cy, radius)
+  local m = rng:int(3, 8)
+  local points = {}
+  for i = 1, m do
+    local angle = (i - 1 + rng:range(-0.35, 0.35)) * 2 * math.pi / m
+    points[2 * i - 1] = cx + radius * math.cos(angle)
+    points[2 * i] = cy + radius * math.sin(angle)
+  end
+  if rng:int(0, 1) == 1 then points = reverse(points) end
+  return points
+end
+
+local function largestMagnitude(a, b)
+  local m = 0
+  for _, points in ipairs({ a, b }) do
+    for i = 1, #points do m = math.max(m, math.abs(points[i])) end
+  end
+  return m
+end
+
+-- The spacing of doubles at magnitude m (an ulp of m, for m a normal double).
+local function ulp(m)
+  local e = 1.0
+  while e * 2 <= m do e = e * 2 end
+  while e > m and e > 1e-300 do e = e / 2 end
+  return e * 2 * EPS
+end
+
+-- Pairs near (x, y): deep and shallow overlaps, misses, and from each colliding pair a copy
+-- moved out by the module's push and back by 1 to 8 ulps (overlaps of a few ulps or touching).
+local function pairsAt(rng, offset)
+  local list = {}
+  for _ = 1, PAIRS_PER_OFFSET do
+    local sx, sy = rng:pick({ -1, 1 }), rng:pick({ -1, 1 })
+    local cx, cy = sx * offset * rng:range(0.5, 1), sy * offset * rng:range(0.5, 1)
+    local r1, r2 = rng:range(0.5, 20), rng:range(0.5, 20)
+    local a = convexPolygon(rng, cx, cy, r1)
+    local angle, reach = rng:range(0, 2 * math.pi), rng:range(0, 1.05) * (r1 + r2)
+    local b = convexPolygon(rng, cx + reach * math.cos(angle), cy + reach * math.sin(angle), r2)
+    list[#list + 1] = { a, b }
+    local o, dx, dy = polygon.polygonsCollideV(a, b)
+    if o and (dx ~= 0 or dy ~= 0) then
+      local step = rng:int(1, 8) * ulp(largestMagnitude(a, b))
+      local back = translate(translate(b, dx, dy), dx > 0 and -step or dx < 0 and step or 0,
+        dy > 0 and -step or dy < 0 and step or 0)
+      list[#list + 1] = { a, back }
+    end
+  end
+  return list
+end
+
+local function length(dx, dy)
+  local m = math.max(math.abs(dx), math.abs(dy))
+  if m == 0 then return 0 end
+  return m * math.sqrt((dx / m) ^ 2 + (dy / m) ^ 2)
+end
+
+-- Checks one ordered pair for one function family; returns the excess in units of eps M.
+local function checkPair(a, b, both, answers, separations, excesses)
+  local collideV = both and polygon.polygonsCollideV or polygon.polygonCollidesWithV
+  local collide = both and polygon.polygonsCollide or polygon.polygonCollidesWith
+  local o, dx, dy = collideV(a, b)
+  answers:check((o ~= false) == oracle.collides(a, b, both), a, b)
+  if not o then return 0 end
+  local moved = translate(b, dx, dy)
+  separations:check(not collide(a, moved) and not oracle.collides(a, moved, both), a, b, dx, dy)
+  local m = largestMagnitude(a, b)
+  -- exactly: the least penetration is at least o - 8 eps M; and (dx, dy) is o long, to rounding
+  local short = oracle.depthAtLeast(a, b, both, o, 8 * EPS * m)
+  local consistent = math.abs(length(dx, dy) - o) <= 4 * EPS * o
+  -- for the report only: the excess over the rounded exact depth, in units of eps M
+  local excess = (o - oracle.depth(a, b, both)) / (EPS * m)
+  excesses:check(short and consistent, a, b, o, dx, dy, excess)
+  return excess
+end
+
+describe("one push separates (polygonsCollideV, polygonCollidesWithV)", function()
+  for _, both in ipairs({ true, false }) do
+    local name = both and "polygonsCollideV" or "polygonCollidesWithV"
+    it(name .. ": random convex pairs at offsets 1 to 1e12, both orders, deep to a few ulps",
+      function()
+        local rng = prng.new(both and 20261122 or 4242)
+        local answers = tally.new(name .. " collides as the oracle says")
+        local separations = tally.new(name .. " moved pair no longer collides")
+        local excesses = tally.new(name .. " push longer than the depth by more than 8 eps M")
+        local worst = 0
+        for _, offset in ipairs(OFFSETS) do
+          for _, pair in ipairs(pairsAt(rng, offset)) do
+            for _, order in ipairs({ { pair[1], pair[2] }, { pair[2], pair[1] } }) do
+              local excess = checkPair(order[1], order[2], both, answers, separations, excesses)
+              worst = math.max(worst, excess)
+            end
+          end
+        end
+        local colliding = separations.total
+        answers:report()
+        separations:report((" (%d colliding)"):format(colliding))
+        excesses:report((", largest excess %.2f eps M"):format(worst))
+        assert(colliding > 100, "too few colliding pairs to say anything")
+        assert(answers.count == 0, answers:message())
+        assert(separations.count == 0, separations:message())
+        assert(excesses.count == 0, excesses:message())
+      end)
+  end
+
+  it("a depth within rounding of zero still gets a push that separates", function()
+    -- B overlaps A = [0,1]^2 by one ulp of 1e6 + 1 (2^-33 ~ 1.2e-10) at offset 1e6:
+    -- A's right edge is x = 1e6 + 1, B's left edge 1e6 + 1 - 2^-33
+    local x0 = 1e6
+    local a = { x0, x0, x0 + 1, x0, x0 + 1, x0 + 1, x0, x0 + 1 }
+    local left = x0 + 1 - 2^-33
+    local b = { left, x0, left + 1, x0, left + 1, x0 + 1, left, x0 + 1 }
+    assert.is_true(polygon.polygonsCollide(a, b))
+    local o, dx, dy = polygon.polygonsCollideV(a, b)
+    assert.is_true(o > 0 and dx > 0 and dy == 0)
+    assert.is_false(polygon.polygonsCollide(a, translate(b, dx, dy)))
+    -- the exact depth is 2^-33 and M = 1e6 + 2: at most 8 eps M ~ 8.9e-10 longer
+    assert.is_true(o <= 2^-33 + 8 * EPS * (x0 + 2))
+  end)
+end)
