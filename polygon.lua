@@ -931,21 +931,21 @@ end
 -- only lengthen the push: a nearer free point would have been free among fewer pairs).
 --
 -- Margin: one push separates. The faces are computed in floating point and the moved vertices
--- are rounded, so candidates lie on the lines moved out by 2 delta and must lie outside every D
--- widened by delta, delta = 2^-46 S (128 eps S), S the largest coordinate magnitude of both
--- shapes. Every D lies within 3 S of the origin, so a push (the nearest free candidate) is
--- shorter than 3 S and the moved coordinates stay below 4 S. Errors, in units of eps S, of
--- the quantities the test u.t >= c + delta compares: the unit normal from rounded differences
--- (2 eps relative each, then unit's 3) turns by at most 5 eps, moving u.(v - a) (|v - a| <= 2.9 S)
--- and u.t (|t| <= 3 S) by 15 and 15; the projection itself rounds by 9; the test's own sum and
--- products by 3 * (3 + 2.9 + 1) ~ 21; each rounded moved coordinate is off by eps 4 S, 6 along u.
--- The sum, 66 eps S, is below delta (128): a candidate found outside the widened D leaves the
--- moved, rounded part B outside A's edge line (or A outside B's), so that pair does not collide.
--- A foot or crossing on lines moved out by 2 delta is itself found outside its own D's widened
--- lines by delta - (its own rounding, ~20 eps S). The push exceeds the least translation by
--- about 2 delta on a face and 2 delta / sin(angle / 2) at a crossing of lines meeting at an angle.
--- Coordinates beyond 2^500 or below 2^-400 are scaled by a power of two k first (exact), so no
--- product overflows or underflows.
+-- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
+-- are taken on the lines moved out by lift = 1.25 delta (a quarter of delta covers their own
+-- rounding, a few eps E). With E the width plus the height of the box around both shapes and S
+-- their largest coordinate magnitude, every D lies in the box of D's, within 1.5 E of the origin,
+-- so every |v - a| <= E, every push |t| < 1.5 E (a point farther out is free), and the moved
+-- coordinates stay below S + 1.5 E. Errors of the quantities the test u.t >= c + delta compares,
+-- in eps: the unit normal from rounded differences (eps each, then unit's 3) turns by at most
+-- 5 eps, moving u.(v - a) by 5 E and u.t by 7.5 E; the projection rounds by 3 E; the test's own
+-- sums and products by 3 (1.5 E + E) = 7.5 E; each moved coordinate rounds by S + 1.5 E, along u
+-- by 1.5 (S + 1.5 E). The sum, 26 E + 1.5 S, is below delta = 64 eps E + 4 eps S: a candidate
+-- found outside the widened D leaves the moved, rounded part B outside a line of A (or A outside
+-- one of B), so that pair at most touches, and the push separates in one step. The push exceeds
+-- the least translation by about lift (80 eps E + 5 eps S) on a face, lift / sin(angle / 2) at a
+-- crossing of lines meeting at an angle. Coordinates beyond 2^500 or below 2^-400 are scaled by
+-- a power of two k first (exact), so no product overflows or underflows.
 
 -- Whether shape is a list of parts rather than a flat array of coordinates (declared before the
 -- public collision functions, which dispatch on it).
@@ -1042,8 +1042,9 @@ local callStamp = 0
 local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 
--- The part count of a shape, its boxes in `boxes`, the largest coordinate magnitude, and
--- whether `info` (its preparation, if any) no longer matches its parts' lengths. Raises the
+-- The part count of a shape, its boxes in `boxes`, the largest coordinate magnitude, whether
+-- `info` (its preparation, if any) no longer matches its parts' lengths, and the box around all
+-- parts (xmin, ymin, xmax, ymax). Raises the
 -- argument errors at the caller of the public function (level 4).
 local function scanShape(fname, argname, shape, parts, boxes, info)
   if type(shape) ~= "table" then
@@ -1052,6 +1053,7 @@ local function scanShape(fname, argname, shape, parts, boxes, info)
   local count = parts and #shape or 1
   local stale = info and info.count ~= count
   local size, finite = 0.0, 0.0
+  local left, top, right, bottom = huge, huge, -huge, -huge
   for k = 1, count do
     local part = parts and shape[k] or shape
     if type(part) ~= "table" then
@@ -1075,12 +1077,15 @@ local function scanShape(fname, argname, shape, parts, boxes, info)
     if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
     local b = 4 * k
     boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
-    if n >= 6 then size = max(size, -xmin, xmax, -ymin, ymax) end
+    if n >= 6 then
+      size = max(size, -xmin, xmax, -ymin, ymax)
+      left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
+    end
   end
   if finite ~= 0 then
     error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
   end
-  return count, size, stale
+  return count, size, stale, left, top, right, bottom
 end
 
 -- The area sign of part k, computed once per call.
@@ -1145,7 +1150,7 @@ end
 local function nearestFree(np, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
-  local lift = 2 * margin
+  local lift = 1.25 * margin
   for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
     local d = faceC[f] + lift
     if faceOuter[f] and abs(d) < best then
@@ -1214,8 +1219,8 @@ function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
   local info1 = wantPush and parts1 and preparedParts[shape1]
   local info2 = wantPush and parts2 and preparedParts[shape2]
-  local count1, size1, stale1 = scanShape(fname, "points1", shape1, parts1, boxes1, info1)
-  local count2, size2, stale2 = scanShape(fname, "points2", shape2, parts2, boxes2, info2)
+  local count1, size1, stale1, x1, y1, x2, y2 = scanShape(fname, "points1", shape1, parts1, boxes1, info1)
+  local count2, size2, stale2, x3, y3, x4, y4 = scanShape(fname, "points2", shape2, parts2, boxes2, info2)
   callStamp = callStamp + 1
   if not wantPush then
     for i = 1, count1 do
@@ -1233,7 +1238,8 @@ function collideParts(fname, shape1, shape2, wantPush)
   local size = max(size1, size2)
   local k = 1.0
   if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
-  local margin = 2^-46 * size * k
+  local extent = ((max(x2, x4) - min(x1, x3)) + (max(y2, y4) - min(y1, y3))) * k
+  local margin = 2^-47 * extent + 2^-51 * size * k   -- delta above: 64 eps E + 4 eps S
   local np, top, hit = 0, 0, false
   for i = 1, count1 do
     local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
@@ -1271,8 +1277,8 @@ function collideParts(fname, shape1, shape2, wantPush)
     if np == before then break end
   end
   if best == huge then
-    -- No candidate checked free (not expected): 3 S along an outer normal clears every D.
-    best, tx, ty = 3 * size * k, faceX[1] * 3 * size * k, faceY[1] * 3 * size * k
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, faceX[1] * 2 * extent, faceY[1] * 2 * extent
   end
   return best / k, tx / k + 0.0, ty / k + 0.0
 end
