@@ -570,158 +570,129 @@ end
 
 -- The projections above are taken relative to a vertex a of one polygon so that far from the
 -- origin they stay as accurate as near it. Their rounding error is at most 4 eps (w |nx| + h |ny|)
--- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that is decided
+-- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that (16 eps: the
+-- bound of two projections subtracted, doubled for the rounding of the bound itself) is decided
 -- again exactly, with the cross kernel.
 local function projectionTolerance(w, h, nx, ny)
   return 16 * EPS * (w * abs(nx) + h * abs(ny))
 end
 
--- The vertex of points extreme along the normal of edge a -> b: the largest projection when
--- want is -1, the smallest when it is 1. Compared exactly: n.(w - v) has the sign of
--- -(b - a) x (w - v).
-local function extreme(ax, ay, bx, by, points, n, want)
-  local ex, ey = points[1], points[2]
-  for i = 3, n - 1, 2 do
-    local vx, vy = points[i], points[i + 1]
-    if cross(ax, ay, bx, by, ex, ey, vx, vy) * want > 0 then ex, ey = vx, vy end
+-- shared helper: lead moves it to the kernels
+-- Whether points[1..n] holds a NaN or an infinity. Called only where a sum came out non-finite.
+local function holdsNonFinite(points, n)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v ~= v or v == huge or v == -huge then return true end
   end
-  return ex, ey
+  return false
 end
 
--- Whether the edge a -> b has a normal on which the ranges of p1 and p2 are separated or just
--- touch, decided exactly: max1 <= min2 <=> (b - a) x (min2 - max1) <= 0, and likewise below.
-local function separatedExact(ax, ay, bx, by, p1, n1, p2, n2)
-  local hx1, hy1 = extreme(ax, ay, bx, by, p1, n1, -1)
-  local lx2, ly2 = extreme(ax, ay, bx, by, p2, n2, 1)
-  if cross(ax, ay, bx, by, hx1, hy1, lx2, ly2) <= 0 then return true end
-  local lx1, ly1 = extreme(ax, ay, bx, by, p1, n1, 1)
-  local hx2, hy2 = extreme(ax, ay, bx, by, p2, n2, -1)
-  return cross(ax, ay, bx, by, hx2, hy2, lx1, ly1) <= 0
+-- shared helper: lead moves it to the kernels
+-- The largest coordinate magnitude of points[1..n], or m if that is larger.
+local function largestMagnitude(points, n, m)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v < 0 then v = -v end
+    if v > m then m = v end
+  end
+  return m
 end
 
--- The tutorial's test, on the edge normals of `axes` (p1 here): both polygons projected on each
--- normal, and both ends of the ranges compared. Used by the one-sided functions.
--- Returns false on a separating axis; otherwise the least penetration so far: bq, the squared
--- depth, the overlap o >= 0 along the normal (nx, ny) (depth o / |n|), and that normal turned
--- the way the second polygon must move. The squared depth is o (o / |n|^2), which neither
--- overflows nor underflows while the coordinates stay in the exact range.
--- w, h: see projectionTolerance.
-local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bq, bo, bnx, bny)
-  local ax, ay = axes[na - 1] + 0.0, axes[na] + 0.0
-  for i = 1, na - 1, 2 do
-    local bx, by = axes[i] + 0.0, axes[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = by - ay, ax - bx
-      local min1, max1 = projectRange(p1, n1, ax, ay, nx, ny)
-      local min2, max2 = projectRange(p2, n2, ax, ay, nx, ny)
-      -- up: how far p2 must move along +n to clear p1; down: along -n
-      local up, down = max1 - min2, max2 - min1
-      local tol = projectionTolerance(w, h, nx, ny)
-      if up <= tol or down <= tol then
-        if up < -tol or down < -tol then return false end
-        if separatedExact(ax, ay, bx, by, p1, n1, p2, n2) then return false end
-        -- overlapping by less than the rounding: the float depth may have come out negative
-        if up < 0 then up = 0 end
-        if down < 0 then down = 0 end
-      end
-      local q = (up < down and up or down) / (nx * nx + ny * ny)
-      if up < down then
-        q = q * up
-        if q < bq then bq, bo, bnx, bny = q, up, nx, ny end
-      else
-        q = q * down
-        if q < bq then bq, bo, bnx, bny = q, down, -nx, -ny end
-      end
+-- The SAT engine's one exact fallback: whether no vertex of points, each moved by (dx, dy) and
+-- rounded as a caller's `p[i] + dx` rounds, lies strictly on the side `inside` (1 or -1, the
+-- sign of the cross product) of the line through c parallel to a -> b. Signs are multiplied by
+-- the sign +-1, never by an area, so nothing underflows.
+local function clearOfLine(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
+  for i = 1, n - 1, 2 do
+    if cross(ax, ay, bx, by, cx, cy, points[i] + dx, points[i + 1] + dy) * inside > 0 then
+      return false
     end
-    ax, ay = bx, by
-  end
-  return bq, bo, bnx, bny
-end
-
--- Whether no vertex of `other` lies strictly inside the edge a -> b of a polygon whose area has
--- the sign `turn` (> 0 clockwise on screen), decided exactly.
-local function outsideExact(ax, ay, bx, by, turn, other, no)
-  for i = 1, no - 1, 2 do
-    if turn * cross(ax, ay, bx, by, ax, ay, other[i], other[i + 1]) > 0 then return false end
   end
   return true
 end
 
--- The separating axis test of two convex polygons, face by face: for each edge of `edges`, how
--- deep `other` reaches past it, measured on the edge's outward normal. Two convex polygons
--- overlap exactly when every edge of both is reached past, and the least such depth is the
--- least penetration over all the tutorial's axes and both ends of their ranges (the overlap of
--- the far ends is never smaller: it is the support of the Minkowski difference in a direction
--- that is not a face of it). So one polygon is projected per axis where the tutorial projects
--- both, and the other polygon's own projection is known: its edge, at 0.
--- turn: the sign of the area of `edges`; push: 1 when `other` is the polygon the displacement
--- moves, -1 when `edges` is. Returns false or the best (bq, bo, bnx, bny) as leastPenetration.
-local function deepestReach(edges, ne, turn, other, no, push, w, h, bq, bo, bnx, bny)
-  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
-  for i = 1, ne - 1, 2 do
-    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = (by - ay) * sign, (ax - bx) * sign
-      local depth = -minProjection(other, no, ax, ay, nx, ny)
-      local tol = projectionTolerance(w, h, nx, ny)
-      if depth <= tol then
-        if depth < -tol or outsideExact(ax, ay, bx, by, turn, other, no) then return false end
-        if depth < 0 then depth = 0 end
-      end
-      local q = depth * (depth / (nx * nx + ny * ny))
-      if q < bq then bq, bo, bnx, bny = q, depth, nx * push, ny * push end
-    end
-    ax, ay = bx, by
+-- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
+-- exactly: v lies deeper than e when (b - a) x (v - e) has the sign `inside`.
+local function deepestVertex(ax, ay, bx, by, inside, points, n)
+  local best, ex, ey = 1, points[1], points[2]
+  for i = 3, n - 1, 2 do
+    local vx, vy = points[i], points[i + 1]
+    if cross(ax, ay, bx, by, ex, ey, vx, vy) * inside > 0 then best, ex, ey = i, vx, vy end
   end
-  return bq, bo, bnx, bny
+  return best
 end
 
--- The shared body of the four polygon collision functions: false, or the least penetration as
--- leastPenetration returns it and a size that bounds the coordinates' magnitudes.
--- both: the axes of both polygons, else those of p1 only.
-local collide
-function collide(fname, p1, p2, both)
-  local n1 = checkPoints(p1, fname, "points1", 4)
-  local n2 = checkPoints(p2, fname, "points2", 4)
-  if n1 < 6 or n2 < 6 then return false end
-  local a1, sx1, sd1 = shoelace(p1, n1)
-  local turn1 = areaSignOf(p1, n1, a1, sx1, sd1)
-  if turn1 == 0 then return false end
-  local a2, sx2, sd2 = shoelace(p2, n2)
-  local turn2 = areaSignOf(p2, n2, a2, sx2, sd2)
-  if turn2 == 0 then return false end
-  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
-  -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
-  -- between the two first vertices covers a vertex of one polygon seen from one of the other.
-  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
-  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
-  if not (w + h <= EXACT_TOP) then   -- luacheck: ignore 581 (true for inf and NaN too)
-    -- Far beyond the exact range the projections (products of two sizes) would overflow into
-    -- infinities and NaN. Collide copies scaled by a power of two k instead, to coordinates
-    -- below 2^464, so sizes below 2^500 (this rare path allocates the copies). A projection o
-    -- scales by k^2 and a normal by k, so the normal times k again gives back the depth o / |n|.
-    local m = 0.0
-    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
-    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
-    local k = powerScale(m, 2^400, 2^464)
-    local s1, s2 = {}, {}
-    for i = 1, n1 do s1[i] = p1[i] * k end
-    for i = 1, n2 do s2[i] = p2[i] * k end
-    local q, o, nx, ny, size = collide(fname, s1, s2, both)
-    if not q then return false end
-    return q, o, nx * k, ny * k, size / k, p1, n1, p2, n2
+-- The separating axis test of two convex polygons, face by face: for each edge a -> b of
+-- `edges` (turn: the sign of its area, 1 or -1), how deep `other` reaches past it along its
+-- outward normal n. Two convex polygons overlap exactly when every edge of both is reached past,
+-- and the least such depth is the least penetration over all the tutorial's axes and both ends
+-- of their ranges (the overlap of the far ends is never smaller: it is the support of the
+-- Minkowski difference in a direction that is not a face of it). So one polygon is projected
+-- per axis where the tutorial projects both; the edge itself is the other's range end, at 0.
+-- farEnds (the one-sided functions, which test the axes of one polygon only): the far end of
+-- the ranges too, other reaching beyond the vertex of `edges` deepest inside.
+-- Returns false on a separating or touching axis. Otherwise the least penetration: its squared
+-- depth q = o (o / |n|^2) (neither overflows nor underflows in the exact range), the overlap
+-- o >= 0 along (nx, ny), the normal turned the way `other` must move, and the line the move
+-- must clear: the edge ending at vertex index edgeEnd, moved to pass through vertex index base,
+-- with `inside` the sign of the cross product on the side where `other` must not stay.
+-- w, h: see projectionTolerance.
+local function reachPast(edges, ne, turn, other, no, w, h, farEnds)
+  local leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside =
+    huge, 0.0, 0.0, 0.0, 1, 1, turn
+  local ia = ne - 1
+  local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+  for ib = 1, ne - 1, 2 do
+    local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
+      local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
+      local tol = projectionTolerance(w, h, nx, ny)
+      local depth   -- set on both paths below
+      local base, inside = ia, turn
+      if farEnds then
+        local lo, hi = projectRange(other, no, ax, ay, nx, ny)
+        -- face: how far other must move along n to clear the edge; far: against n, past the
+        -- deepest vertex of edges
+        local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+        if face <= tol then
+          if face < -tol or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+            return false
+          end
+          if face < 0 then face = 0.0 end
+        end
+        if far <= tol then
+          local ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
+          if far < -tol or clearOfLine(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
+                                        other, no, 0.0, 0.0) then
+            return false
+          end
+          if far < 0 then far = 0.0 end
+        end
+        if far < face then
+          depth, nx, ny, inside = far, -nx, -ny, -turn
+          base = deepestVertex(ax, ay, bx, by, turn, edges, ne)
+        else
+          depth = face
+        end
+      else
+        depth = -minProjection(other, no, ax, ay, nx, ny)
+        if depth <= tol then
+          if depth < -tol or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+            return false
+          end
+          if depth < 0 then depth = 0.0 end
+        end
+      end
+      -- keep the least penetration
+      local q = depth * (depth / (nx * nx + ny * ny))
+      if q < leastQ then
+        leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside =
+          q, depth, nx, ny, ib, base, inside
+      end
+    end
+    ia, ax, ay = ib, bx, by
   end
-  local q, o, nx, ny
-  if both then
-    q, o, nx, ny = deepestReach(p1, n1, turn1, p2, n2, 1, w, h, huge, 0, 0, 0)
-    if q then q, o, nx, ny = deepestReach(p2, n2, turn2, p1, n1, -1, w, h, q, o, nx, ny) end
-  else
-    q, o, nx, ny = leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 0, 0, 0)
-  end
-  if not q then return false end
-  -- a bound on the largest coordinate magnitude: |x1| + |y1| + w + h
-  return q, o, nx, ny, abs(p1[1] + 0.0) + abs(p1[2] + 0.0) + w + h, p1, n1, p2, n2
+  return leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -733,24 +704,134 @@ local function unit(nx, ny)
   return nx / len, ny / len, len * m
 end
 
--- overlap, dx, dy from collide's least penetration. Adding (dx, dy) to the second polygon rounds
--- its coordinates, which can leave an overlap of an ulp that the exact test still sees; so a
--- depth below 2 eps M, M the largest coordinate magnitude (about an ulp of it), is raised to it.
--- Such a push moves every coordinate by at least an ulp along its larger component, so a loop
--- that resolves until nothing collides ends, instead of being told forever to move by zero.
-local function displacement(q, o, nx, ny, size, p1, n1, p2, n2)
-  if not q then return false end
-  -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
-  if nx == 0 and ny == 0 then return 0.0, 0.0, 0.0 end
-  local ux, uy, len = unit(nx, ny)
-  local depth = o / len
-  if depth < 2 * EPS * size then   -- size >= M: only then is M worth finding
-    local m = 0.0
-    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
-    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
-    if depth < 2 * EPS * m then depth = 2 * EPS * m end
+-- Below 2^464 the products of two coordinate differences (each below 2^466 after scaling)
+-- cannot overflow; from 2^400 up the scaled copies keep 64 binades of headroom below it.
+local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
+
+--- THE SAT ENGINE. convexPenetration(p1, n1, p2, n2, both) decides exactly whether the
+-- convex polygons p1[1..n1] and p2[1..n2] (flat arrays, either winding) overlap: touching is not
+-- overlapping; fewer than 3 points or zero area never overlaps. both: the axes of both
+-- polygons (polygonsCollide); false: the axes of p1 only, both ends of each range
+-- (polygonCollidesWith). Allocates nothing (except on the rare path beyond 2^500).
+-- Returns
+--   false                                  no overlap (exact);
+--   nil, "points1" or "points2"            that polygon holds a NaN or infinite coordinate;
+--   depth, ux, uy, owner, edgeEnd, base, inside
+--     the least penetration: depth >= 0 (accurate to rounding) along the unit vector (ux, uy)
+--     that p2 must move, and the line the move must clear, for separatingPush: in polygon
+--     `owner` (1 or 2), the edge ending at vertex index edgeEnd moved to pass through vertex
+--     index base, with `inside` the cross product's sign on the side the other must leave.
+local function convexPenetration(p1, n1, p2, n2, both, rescaled)
+  if n1 < 6 or n2 < 6 then return false end
+  local area1, sx1, sd1 = shoelace(p1, n1)
+  -- a NaN or infinity makes these sums non-finite; so does overflow, which is not an error
+  -- luacheck: ignore 581 (NaN must count as non-finite)
+  if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+  local area2, sx2, sd2 = shoelace(p2, n2)
+  -- luacheck: ignore 581 (NaN must count as non-finite)
+  if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
+  if turn1 == 0 then return false end
+  local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
+  if turn2 == 0 then return false end
+  turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0   -- signs, not magnitudes
+  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
+  -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
+  -- between the two first vertices covers a vertex of one polygon seen from one of the other.
+  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
+  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
+  if not (w + h <= EXACT_TOP) and not rescaled then   -- luacheck: ignore 581 (inf is too big)
+    -- Far beyond the exact range the projections (products of two sizes) would overflow into
+    -- infinities and NaN. Collide copies scaled by a power of two k instead (this rare path
+    -- allocates them); the scaled engine does not rescale again, so this recurses once.
+    local k = powerScale(largestMagnitude(p2, n2, largestMagnitude(p1, n1, 0.0)),
+      RESCALE_LOW, RESCALE_HIGH)
+    local s1, s2 = {}, {}
+    for i = 1, n1 do s1[i] = p1[i] * k end
+    for i = 1, n2 do s2[i] = p2[i] * k end
+    local depth, ux, uy, owner, edgeEnd, base, inside = convexPenetration(s1, n1, s2, n2, both, true)
+    if not depth then return false end
+    return depth / k, ux, uy, owner, edgeEnd, base, inside
   end
-  return depth, ux * depth + 0.0, uy * depth + 0.0   -- + 0.0 turns -0 into 0
+  local q, o, nx, ny, edgeEnd, base, inside = reachPast(p1, n1, turn1, p2, n2, w, h, not both)
+  if not q then return false end
+  local owner = 1
+  if both then
+    local q2, o2, nx2, ny2, edgeEnd2, base2, inside2 = reachPast(p2, n2, turn2, p1, n1, w, h, false)
+    if not q2 then return false end
+    if q2 < q then   -- keep the least penetration; p2's normals point the way p1 must move
+      q, o, nx, ny, edgeEnd, base, inside, owner = q2, o2, -nx2, -ny2, edgeEnd2, base2, inside2, 2
+    end
+  end
+  -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
+  if q == huge then return 0.0, 0.0, 0.0, owner, edgeEnd, base, inside end
+  local ux, uy, len = unit(nx, ny)
+  return o / len, ux, uy, owner, edgeEnd, base, inside
+end
+
+-- How many times separatingPush may lengthen a push before it gives up (each round doubles the
+-- lengthening, which starts at an ulp of the coordinates: 64 rounds outgrow any double).
+local PUSH_ROUNDS = 64
+
+--- The push that separates, from convexPenetration's least penetration: the smallest push found
+-- of length >= depth along (ux, uy) after which, with p2's coordinates moved by (dx, dy) and
+-- rounded the way a game moves them, the chosen line separates the polygons exactly (touching
+-- allowed). A rounded move can fall short of the exact depth by the rounding of the moved
+-- coordinates (up to eps times their magnitude along the normal) and of the depth itself; the
+-- exact check sees that, and the push grows by an ulp of the coordinates involved, doubling,
+-- until it clears. Returns push length, dx, dy.
+local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+  if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
+  local lines, nl, others, no = p1, n1, p2, n2
+  if owner == 2 then lines, nl, others, no = p2, n2, p1, n1 end
+  local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+  local ax, ay, bx, by = lines[ia] + 0.0, lines[ia + 1] + 0.0, lines[edgeEnd] + 0.0,
+    lines[edgeEnd + 1] + 0.0
+  local cx, cy = lines[base] + 0.0, lines[base + 1] + 0.0
+  local push, grow = depth, nil
+  for _ = 1, PUSH_ROUNDS do
+    local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
+    local clear
+    if owner == 2 then   -- the line belongs to p2 and moves with it
+      clear = clearOfLine(ax + dx, ay + dy, bx + dx, by + dy, cx + dx, cy + dy, inside,
+        others, no, 0.0, 0.0)
+    else
+      clear = clearOfLine(ax, ay, bx, by, cx, cy, inside, others, no, dx, dy)
+    end
+    if clear then return push, dx, dy end
+    if not grow then
+      -- an ulp of the largest coordinate the check read, at least
+      local m = largestMagnitude(others, no, largestMagnitude(lines, nl, 0.0))
+      grow = EPS * (m + abs(dx) + abs(dy))
+    else
+      grow = grow * 2
+    end
+    push = push + grow
+  end
+  return push, ux * push + 0.0, uy * push + 0.0
+end
+
+--- convexPush(p1, n1, p2, n2, both): convexPenetration, then separatingPush. Returns false, or
+-- nil and the argument name for a non-finite coordinate, or push length, dx, dy: adding (dx, dy)
+-- to every vertex of p2 leaves the polygons touching or apart, exactly.
+local function convexPush(p1, n1, p2, n2, both)
+  local depth, ux, uy, owner, edgeEnd, base, inside = convexPenetration(p1, n1, p2, n2, both)
+  if not depth then return depth, ux end
+  return separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+end
+
+-- Raises the error for a non-finite coordinate at the caller of the public function, which
+-- called the private function that calls this one.
+local function raiseNonFinite(fname, argname)
+  error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+end
+
+local function collides(fname, points1, points2, both)
+  local n1 = checkPoints(points1, fname, "points1", 4)
+  local n2 = checkPoints(points2, fname, "points2", 4)
+  local depth, argname = convexPenetration(points1, n1, points2, n2, both)
+  if depth == nil then raiseNonFinite(fname, argname) end
+  return depth ~= false
 end
 
 -- Lists of convex parts in place of a polygon: the public functions below hand them to the
@@ -759,39 +840,57 @@ local isParts, collideParts
 
 --- Whether the edge normals of points1 show no separating axis between two convex polygons.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonCollidesWith(points1, points2)
-  return collide("polygonCollidesWith", points1, points2, false) ~= false
+  local collided = collides("polygonCollidesWith", points1, points2, false)
+  return collided
 end
 
 --- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonsCollide(points1, points2)
   if isParts(points1) or isParts(points2) then
     local hit = collideParts("polygonsCollide", points1, points2, false)
     return hit
   end
-  return collide("polygonsCollide", points1, points2, true) ~= false
+  local collided = collides("polygonsCollide", points1, points2, true)
+  return collided
+end
+
+local function pushOut(fname, points1, points2, both)
+  local n1 = checkPoints(points1, fname, "points1", 4)
+  local n2 = checkPoints(points2, fname, "points2", 4)
+  local push, dx, dy = convexPush(points1, n1, points2, n2, both)
+  if push == nil then raiseNonFinite(fname, dx) end
+  return push, dx, dy
 end
 
 --- As polygonCollidesWith, with the minimum translation vector over the axes of points1.
--- @return overlap, dx, dy (moving points2 by dx, dy makes the polygons just touch) or false
+-- @return overlap, dx, dy or false: after adding (dx, dy) to every vertex of points2,
+-- polygonCollidesWith(points1, moved) is false (see polygonsCollideV)
 function polygon.polygonCollidesWithV(points1, points2)
-  return displacement(collide("polygonCollidesWithV", points1, points2, false))
+  local push, dx, dy = pushOut("polygonCollidesWithV", points1, points2, false)
+  return push, dx, dy
 end
 
 --- As polygonsCollide, with the minimum translation vector.
 -- overlap is the penetration depth along the axis of least penetration, right also when one
 -- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
 -- points2), pointing the right way in either argument order and when the centres coincide.
+-- One push separates: after p[i] = p[i] + dx (and + dy) on points2, rounded,
+-- polygonsCollide(points1, moved) is false, and the push is at most a few ulps of the
+-- coordinates longer than the exact depth. Raises an error for a non-finite coordinate.
 -- @return overlap, dx, dy or false
 function polygon.polygonsCollideV(points1, points2)
   if isParts(points1) or isParts(points2) then
     local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true)
     return overlap, dx, dy
   end
-  return displacement(collide("polygonsCollideV", points1, points2, true))
+  local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true)
+  return push, dx, dy
 end
 
 --------------------------------------------------------------------------------------------------
@@ -1088,12 +1187,18 @@ local function scanShape(fname, argname, shape, parts, boxes, info)
   return count, size, stale, left, top, right, bottom
 end
 
--- The area sign of part k, computed once per call.
+-- The area sign of part k (1, -1 or 0: signs, never magnitudes, are multiplied), once per call.
 local function partTurn(part, k, turns, stamps)
   if stamps[k] ~= callStamp then
-    stamps[k], turns[k] = callStamp, areaSign(part, #part)
+    local turn = areaSign(part, #part)
+    stamps[k], turns[k] = callStamp, turn > 0 and 1.0 or turn < 0 and -1.0 or 0.0
   end
   return turns[k]
+end
+
+-- Whether two convex parts overlap (exact), by the SAT engine; non-finite input was caught.
+local function overlapsConvex(p1, p2)
+  return convexPenetration(p1, #p1, p2, #p2, true) and true or false
 end
 
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
@@ -1102,14 +1207,13 @@ end
 -- scaled by k. Returns the last index used and whether some edge separates the two parts,
 -- decided exactly (w, h bound the scaled coordinate differences, for projectionTolerance).
 local function addFaces(edges, ne, turn, other, no, internal, sense, k, w, h, top)
-  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
   local separated = false
   local e = ne / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for i = 1, ne - 1, 2 do
     local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = unit((by - ay) * sign, (ax - bx) * sign)
+      local ux, uy = unit((by - ay) * turn, (ax - bx) * turn)   -- outward
       local kax, kay = ax * k, ay * k
       local lo = huge
       for j = 1, no - 1, 2 do
@@ -1118,7 +1222,8 @@ local function addFaces(edges, ne, turn, other, no, internal, sense, k, w, h, to
       end
       if not separated then
         local tol = projectionTolerance(w, h, ux, uy)
-        if -lo <= tol and (-lo < -tol or outsideExact(ax, ay, bx, by, turn, other, no)) then
+        if -lo <= tol and (-lo < -tol
+            or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0)) then
           separated = true
         end
       end
@@ -1226,7 +1331,7 @@ function collideParts(fname, shape1, shape2, wantPush)
     for i = 1, count1 do
       for j = 1, count2 do
         if boxesOverlap(i, j)
-          and collide(fname, parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2, true) then
+          and overlapsConvex(parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
           return true
         end
       end
