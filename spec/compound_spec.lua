@@ -41,7 +41,8 @@ local function assert_push(s1, s2, ex, ey)
   assert.is_number(overlap)
   local slack = parts.slack(asList(s1), asList(s2))
   local len = math.sqrt(ex * ex + ey * ey)
-  assert.is_true(overlap >= len and overlap <= len + slack, ("overlap %.17g, expected %.17g"):format(overlap, len))
+  assert.is_true(overlap >= len and overlap <= len + slack,
+    ("overlap %.17g, expected %.17g"):format(overlap, len))
   assert.is_true(math.abs(dx - ex) <= slack and math.abs(dy - ey) <= slack,
     ("push %.17g %.17g, expected %g %g"):format(dx, dy, ex, ey))
   local moved = parts.translate(asList(s2), dx, dy)
