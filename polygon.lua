@@ -896,6 +896,156 @@ end
 --------------------------------------------------------------------------------------------------
 -- Circles
 --------------------------------------------------------------------------------------------------
+-- A circle collides with a shape when the OPEN disc meets the shape's interior: touching is not
+-- colliding. Every such answer compares squared distances exactly: against a point (a vertex, or
+-- another circle's centre) r^2 with |c - v|^2, degree 2; against an edge's line r^2 |b - a|^2
+-- with ((b - a) x (c - a))^2, degree 4. Each is first decided in floating point with an error
+-- bound and redone as an expansion only when the bound cannot vouch for the sign.
+
+-- shared helper: lead moves it to the kernels
+-- Adds sign * (hi + lo)^2 = sign * (hi^2 + 2 hi lo + lo^2) to the expansion exactly.
+local function expAddSquare(hi, lo, sign)
+  expAddProduct(sign * hi, hi)
+  expAddProduct(sign * 2 * hi, lo)
+  expAddProduct(sign * lo, lo)
+end
+
+-- The exact tests scale their differences by a power of two into [2^186, 2^250]: a product of
+-- four such numbers stays below 2^1010 (no overflow), and a term up to 2^400 times smaller than
+-- the largest keeps every bit above the underflow threshold through four multiplications.
+local SCALE_LO, SCALE_HI = 2^186, 2^250
+
+-- The float filters below trust a result only inside [2^-900, 2^1000]: there no square or
+-- product of theirs has overflowed or lost bits to underflow.
+local FILTER_LO, FILTER_HI = 2^-900, 2^1000
+
+-- The exact sign of (rh + rl)^2 - |(x2, y2) - (x1, y1)|^2: > 0 when the point (x2, y2) lies
+-- strictly within rh + rl of (x1, y1). rh + rl is a radius or an exact sum of two.
+local function reachesExact(x1, y1, x2, y2, rh, rl)
+  local dxh, dxl = twoDiff(x2, x1)
+  local dyh, dyl = twoDiff(y2, y1)
+  local s = powerScale(max(abs(dxh), abs(dyh), abs(rh)), SCALE_LO, SCALE_HI)
+  expLen = 0
+  expAddSquare(rh * s, rl * s, 1)
+  expAddSquare(dxh * s, dxl * s, -1)
+  expAddSquare(dyh * s, dyl * s, -1)
+  return expSign()
+end
+
+-- A number with the sign of (rh + rl)^2 - |(x2, y2) - (x1, y1)|^2, exact. The float difference
+-- is off by less than 8 eps times the sum of the squares: each square is within 3 eps, the
+-- differences and the radius within one more rounding.
+local function reaches(x1, y1, x2, y2, rh, rl)
+  local dx, dy = x2 - x1, y2 - y1
+  local distSq, reachSq = dx * dx + dy * dy, rh * rh
+  local gap = reachSq - distSq
+  local bound = 8 * EPS * (reachSq + distSq)
+  if (gap > bound or -gap > bound) and bound > FILTER_LO and bound < FILTER_HI then return gap end
+  return reachesExact(x1, y1, x2, y2, rh, rl)
+end
+
+-- Scratch expansions for the degree-4 test: the cross product and the squared edge length.
+local crossParts, lengthParts = {}, {}
+
+-- The exact sign of r^2 |b - a|^2 - ((b - a) x (c - a))^2: > 0 when the centre c lies strictly
+-- within r of the line through a and b. The differences are split exactly, the cross product
+-- and the squared length summed as compressed expansions, then their products expanded.
+local function lineWithinExact(ax, ay, bx, by, cx, cy, r)
+  local exh, exl = twoDiff(bx, ax)
+  local eyh, eyl = twoDiff(by, ay)
+  local wxh, wxl = twoDiff(cx, ax)
+  local wyh, wyl = twoDiff(cy, ay)
+  local s = powerScale(max(abs(exh), abs(eyh), abs(wxh), abs(wyh), r), SCALE_LO, SCALE_HI)
+  exh, exl, eyh, eyl = exh * s, exl * s, eyh * s, eyl * s
+  wxh, wxl, wyh, wyl = wxh * s, wxl * s, wyh * s, wyl * s
+  expLen = 0
+  expAddProduct(exh, wyh); expAddProduct(exh, wyl); expAddProduct(exl, wyh); expAddProduct(exl, wyl)
+  expAddProduct(-eyh, wxh); expAddProduct(-eyh, wxl); expAddProduct(-eyl, wxh); expAddProduct(-eyl, wxl)
+  expCompress()
+  local crossLen = expLen
+  for i = 1, crossLen do crossParts[i] = EXP[i] end
+  expLen = 0
+  expAddSquare(exh, exl, 1)
+  expAddSquare(eyh, eyl, 1)
+  expCompress()
+  local lengthLen = expLen
+  for i = 1, lengthLen do lengthParts[i] = EXP[i] end
+  local radiusSqHi, radiusSqLo = twoProduct(r * s, r * s)
+  expLen = 0
+  for i = 1, lengthLen do
+    expAddProduct(lengthParts[i], radiusSqLo)
+    expAddProduct(lengthParts[i], radiusSqHi)
+  end
+  for i = 1, crossLen do
+    for j = 1, crossLen do expAddProduct(-crossParts[i], crossParts[j]) end
+  end
+  return expSign()
+end
+
+-- A number with the sign of r^2 |b - a|^2 - ((b - a) x (c - a))^2, exact. The cross product is
+-- off by at most 4 eps t, t = |ex wy| + |ey wx|, so its square by 9 eps t^2; the other side by
+-- 6 eps of itself: 16 eps times the sum bounds the error of the difference.
+local function lineWithin(ax, ay, bx, by, cx, cy, r)
+  local ex, ey, wx, wy = bx - ax, by - ay, cx - ax, cy - ay
+  local left, right = ex * wy, ey * wx
+  local crossed = left - right
+  local t = abs(left) + abs(right)
+  local reachSq = r * r * (ex * ex + ey * ey)
+  local gap = reachSq - crossed * crossed
+  local bound = 16 * EPS * (reachSq + t * t)
+  if (gap > bound or -gap > bound) and bound > FILTER_LO and bound < FILTER_HI then return gap end
+  return lineWithinExact(ax, ay, bx, by, cx, cy, r)
+end
+
+-- A number with the sign of (c - a).(b - a), exact: it is the cross product of c - a with
+-- b - a turned a quarter, (c - a) x (ay - by, bx - ax).
+local function dot(ax, ay, cx, cy, bx, by)
+  return cross(ax, ay, cx, cy, by, ax, ay, bx)
+end
+
+-- Whether the circle (cx, cy, r) stays on the outer side of the line through a -> b, touching at
+-- most, for a polygon whose area has the sign `sign`: then it cannot meet the interior. Exact.
+local function clearOfEdge(ax, ay, bx, by, sign, cx, cy, r)
+  if cross(ax, ay, bx, by, ax, ay, cx, cy) * sign > 0 then return false end
+  return lineWithin(ax, ay, bx, by, cx, cy, r) <= 0
+end
+
+-- Whether the open disc (cx, cy, r), r > 0, meets the interior of the convex polygon, exactly:
+-- the centre is in the closed polygon, or within r of a vertex, or within r of an edge's line
+-- with the foot of its perpendicular strictly between the edge's ends. The slow path of
+-- circleCollision, for circles within rounding of touching.
+local function discMeetsExact(points, n, sign, cx, cy, r)
+  local inside = true
+  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
+    if reaches(bx, by, cx, cy, r, 0.0) > 0 then return true end
+    if bx ~= ax or by ~= ay then
+      if cross(ax, ay, bx, by, ax, ay, cx, cy) * sign < 0 then inside = false end
+      if dot(ax, ay, cx, cy, bx, by) > 0 and dot(bx, by, cx, cy, ax, ay) > 0
+          and lineWithin(ax, ay, bx, by, cx, cy, r) > 0 then
+        return true
+      end
+    end
+    ax, ay = bx, by
+  end
+  return inside
+end
+
+-- Checks that v is a number and finite (NaN and infinities named as such).
+local function checkFinite(v, fname, argname, level)
+  checkNumber(v, fname, argname, (level or 3) + 1)
+  if v ~= v or v == huge or v == -huge then
+    error(("%s: %s must be finite, got %s"):format(fname, argname, tostring(v)), level or 3)
+  end
+end
+
+local function checkRadius(r, fname, argname)
+  checkFinite(r, fname, argname, 4)
+  if r < 0 then
+    error(("%s: %s must not be negative, got %s"):format(fname, argname, tostring(r)), 3)
+  end
+end
 
 --- The range of a circle projected on the axis (nx, ny) (unit length), relative to (x, y).
 -- @return min, max
@@ -913,88 +1063,238 @@ function polygon.projectCircle(cx, cy, radius, x, y, nx, ny)
   return s - radius, s + radius
 end
 
---- The minimum translation vector of a circle out of a convex polygon.
--- The axes are the edge normals and the axis from the vertex nearest the centre (by distance;
--- the tutorial compares dot products) to the centre. The depth is the full penetration, so a
--- circle deep inside is pushed out in one step. Touching is not colliding, and since a unit
--- normal cannot be exact, neither is an overlap below the rounding error of the projections
--- (8 eps times the sizes involved): a circle moved by the returned vector no longer collides.
+-- Whether two circles collide: |c2 - c1|^2 < (r1 + r2)^2, the sum of the radii exact.
+local function circlesCollide(x1, y1, r1, x2, y2, r2)
+  return reaches(x1, y1, x2, y2, twoDiff(r1, -r2)) > 0
+end
+
+--- Whether two circles overlap, with the push that separates them.
+-- Touching is not colliding; decided exactly ((x2 - x1)^2 + (y2 - y1)^2 < (r1 + r2)^2), so a
+-- circle of radius 0 is a point, colliding only strictly inside the other circle.
+-- (dx, dy) moves the second circle: after x2 + dx, y2 + dy (rounded as a game adds them) the
+-- circles no longer collide. Its length exceeds overlap by a few ulps of the coordinates at
+-- most. Circles with the same centre are pushed along +x.
+-- @return overlap, dx, dy (overlap = r1 + r2 - distance) or false
+function polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
+  local fname = "circlesCollideV"
+  checkFinite(x1, fname, "x1")
+  checkFinite(y1, fname, "y1")
+  checkRadius(r1, fname, "r1")
+  checkFinite(x2, fname, "x2")
+  checkFinite(y2, fname, "y2")
+  checkRadius(r2, fname, "r2")
+  x1, y1, r1, x2, y2, r2 = x1 + 0.0, y1 + 0.0, r1 + 0.0, x2 + 0.0, y2 + 0.0, r2 + 0.0
+  -- Far from 1 in magnitude the squares would overflow or underflow: work on copies scaled by a
+  -- power of two (exact, and rounding commutes with it), then scale the answer back.
+  local m = max(abs(x1), abs(y1), abs(x2), abs(y2), r1 + r2)
+  local k = 1.0
+  if m > 2^500 or m < 2^-400 then
+    -- small ones go to 2^-200: every scale factor 2^(64 j) below it stays a finite double
+    k = m > 1 and powerScale(m, 2^-32, 2^32) or powerScale(m, 2^-200, 2^-136)
+    x1, y1, r1, x2, y2, r2 = x1 * k, y1 * k, r1 * k, x2 * k, y2 * k, r2 * k
+    m = m * k
+  end
+  if not circlesCollide(x1, y1, r1, x2, y2, r2) then return false end
+  local dx, dy = x2 - x1, y2 - y1
+  local ux, uy, dist = 1.0, 0.0, 0.0
+  if dx ~= 0 or dy ~= 0 then ux, uy, dist = unit(dx, dy) end
+  local overlap = (r1 + r2) - dist
+  -- Moving by overlap leaves the circles touching at best, and rounding x2 + dx can lose half
+  -- an ulp of x2 on each axis. So unless that push already clears them, it grows by half an
+  -- ulp of the largest magnitude, doubled until the moved circle clears for certain.
+  local extra, step = 0.0, EPS * m
+  for _ = 1, 64 do
+    local length = overlap + extra
+    local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
+    if not circlesCollide(x1, y1, r1, x2 + px, y2 + py, r2) then
+      return overlap / k, px / k, py / k
+    end
+    extra, step = step, step * 2
+  end
+  -- not reached: 64 doublings lengthen the push by 2^11 times the largest magnitude
+  return overlap / k, ux * (overlap + extra) / k, uy * (overlap + extra) / k
+end
+
+-- The neighbour of vertex i (an odd index) distinct from it, walking by `dir` (2 or -2) around
+-- the n coordinates; i itself when every vertex is the same point.
+local function distinctNeighbour(points, n, i, dir)
+  local x, y = points[i] + 0.0, points[i + 1] + 0.0
+  local j = i
+  for _ = 1, n / 2 - 1 do
+    j = j + dir
+    if j > n then j = 1 elseif j < 1 then j = n - 1 end
+    if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
+  end
+  return j
+end
+
+-- The push (px, py) from the circle at (cx, cy) out of the polygon, found by lengthening the
+-- least penetration `depth` along (ux, uy) until a certificate of separation holds for the moved
+-- centre, rounded as the caller will round it: the moved circle lies beyond the winning edge's
+-- line (index e: the edge ending at vertex e), or, when the winning axis is from vertex v, in
+-- v's corner region at distance r or more, or beyond one of the two edges meeting at v.
+local function separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, e, v)
+  local extra, step = 0.0, EPS * max(abs(cx), abs(cy), r)
+  for _ = 1, 64 do
+    local length = depth + extra
+    local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
+    local mx, my = cx + px, cy + py
+    if e > 0 then
+      local a = e == 1 and n - 1 or e - 2
+      if clearOfEdge(points[a] + 0.0, points[a + 1] + 0.0, points[e] + 0.0, points[e + 1] + 0.0,
+          sign, mx, my, r) then
+        return px, py
+      end
+    else
+      local vx, vy = points[v] + 0.0, points[v + 1] + 0.0
+      local p = distinctNeighbour(points, n, v, -2)
+      local q = distinctNeighbour(points, n, v, 2)
+      local px0, py0, qx, qy = points[p] + 0.0, points[p + 1] + 0.0, points[q] + 0.0, points[q + 1] + 0.0
+      if dot(vx, vy, mx, my, px0, py0) <= 0 and dot(vx, vy, mx, my, qx, qy) <= 0
+          and reaches(vx, vy, mx, my, r, 0.0) <= 0
+          or clearOfEdge(px0, py0, vx, vy, sign, mx, my, r)
+          or clearOfEdge(vx, vy, qx, qy, sign, mx, my, r) then
+        return px, py
+      end
+    end
+    extra, step = step, step * 2
+  end
+  -- only a concave polygon or sizes outside the exact range get here: the longest push tried
+  return ux * (depth + extra) + 0.0, uy * (depth + extra) + 0.0
+end
+
+local circleCollision
+
+-- circleCollision on a copy of the polygon, the centre and the radius scaled by a power of two
+-- into the range where its squares neither overflow nor underflow, the answer scaled back; nil
+-- for a non-finite coordinate. Rare (coordinates beyond 2^500 or all below 2^-400), so this
+-- path allocates the copy.
+local function circleCollisionScaled(points, n, cx, cy, r)
+  local m = max(abs(cx), abs(cy), r)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v ~= v or v == huge or v == -huge then return nil end
+    m = max(m, abs(v))
+  end
+  local k = m > 1 and powerScale(m, 2^-32, 2^32) or powerScale(m, 2^-200, 2^-136)
+  if k == 1 then
+    -- Scaling cannot help: sizes more than 2^400 apart (a polygon of size 1e-200 against a
+    -- radius of 1), outside the exact range. Decide as exactly as the kernels can, and push
+    -- along +x by the radius, so that nothing loops or returns NaN.
+    local turn = areaSign(points, n)
+    if turn == 0 or not discMeetsExact(points, n, turn > 0 and 1.0 or -1.0, cx, cy, r) then
+      return false
+    end
+    return r, r, 0.0
+  end
+  local scaled = {}
+  for i = 1, n do scaled[i] = points[i] * k end
+  local overlap, px, py = circleCollision(scaled, n, cx * k, cy * k, r * k)
+  if not overlap then return overlap end
+  return overlap / k, px / k, py / k
+end
+
+-- The collision of the circle (cx, cy, r), r > 0 and every number finite, with the convex
+-- polygon points[1..n], n >= 6: overlap, px, py (move the circle by px, py), false, or nil
+-- when the polygon holds a non-finite coordinate. One convex polygon; polygonCircleCollideV
+-- is a thin wrapper around it, so that a compound shape can call it once per part.
+--
+-- A disc against a convex polygon needs no projections. The least penetration is r minus the
+-- signed distance from the centre to the polygon, and that distance is the centre's largest
+-- signed distance beyond an edge's line, unless the centre lies in the corner region of its
+-- nearest vertex, where it is the distance to that vertex (the tutorial's axes, edge normals
+-- and the nearest vertex's axis, give the same least overlap: the far ends of their ranges
+-- are never the least). Three ideas, in order:
+--   the edge walk: one pass for the nearest vertex and the edge line farthest behind the centre,
+--   the nearest-vertex axis: whether the centre is in that vertex's corner region,
+--   the exact filter: within rounding of touching, discMeetsExact decides.
+function circleCollision(points, n, cx, cy, r)
+  local area, sumX2, sumD2 = shoelace(points, n)
+  if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
+    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+    return overlap, px, py
+  end
+  local turn = areaSignOf(points, n, area, sumX2, sumD2)
+  if turn == 0 then return false end
+  local sign = turn > 0 and 1.0 or -1.0   -- makes the signed distances positive outside
+  -- The edge walk, in coordinates relative to the centre. An edge's signed distance from the
+  -- centre is its cross product over |b - a|; edges are compared by its signed square,
+  -- outside |outside| / |b - a|^2, so the loop takes no square root.
+  local nearSq, farSq, near = huge, 0.0, 1
+  local bestKey, best = -huge, 0
+  local ax, ay = points[n - 1] - cx, points[n] - cy
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] - cx, points[i + 1] - cy
+    local distSq = bx * bx + by * by
+    if distSq < nearSq then nearSq, near = distSq, i end
+    if distSq > farSq then farSq = distSq end
+    local ex, ey = bx - ax, by - ay
+    local lengthSq = ex * ex + ey * ey
+    if lengthSq > 0 then   -- a repeated vertex gives no edge
+      local outside = (ex * ay - ey * ax) * sign
+      local key = outside * (abs(outside) / lengthSq)
+      if key > bestKey then bestKey, best = key, i end
+    end
+    ax, ay = bx, by
+  end
+  -- luacheck: ignore 581 (NaN too)
+  if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
+    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+    return overlap, px, py
+  end
+  -- the winning edge a -> b, its outward unit normal and the centre's signed distance
+  local a = best == 1 and n - 1 or best - 2
+  ax, ay = points[a] - cx, points[a + 1] - cy
+  local ex, ey = (points[best] - cx) - ax, (points[best + 1] - cy) - ay
+  local ux, uy, length = unit(ey * sign, -ex * sign)
+  local distance = (ex * ay - ey * ax) * sign / length
+  local edge, vertex = best, 0
+  -- The nearest-vertex axis: the centre is in the corner region of vertex v when it lies behind
+  -- neither edge meeting there, (c - v).(p - v) <= 0 for both distinct neighbours p.
+  local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
+  if nearSq > 0 then
+    local p = distinctNeighbour(points, n, near, -2)
+    local q = distinctNeighbour(points, n, near, 2)
+    if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
+        and vx * (vx - (points[q] - cx)) + vy * (vy - (points[q + 1] - cy)) <= 0 then
+      local vux, vuy, nearDistance = unit(-vx, -vy)
+      if nearDistance > distance then
+        ux, uy, distance, edge, vertex = vux, vuy, nearDistance, 0, near
+      end
+    end
+  end
+  -- The exact filter: distance is off by at most a few eps times the farthest vertex's distance
+  -- (the coordinates relative to the centre are rounded, then multiplied by edges no longer).
+  local depth = r - distance
+  local tol = 16 * EPS * (sqrt(farSq) + r)
+  if depth <= tol then
+    if depth < -tol then return false end
+    if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
+    if depth < 0 then depth = 0 end
+  end
+  local px, py = separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex)
+  return depth, px, py
+end
+
+--- The minimum translation vector of a circle out of a convex polygon (either winding).
+-- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
+-- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
+-- is the full penetration (r minus the signed distance from the centre to the polygon), so a
+-- circle deep inside is pushed out in one step, and the push separates for certain: after
+-- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than overlap by
+-- a few ulps of the coordinates at most.
 -- @return overlap, dx, dy (move the circle by dx, dy) or false
 function polygon.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"
   local n = checkPoints(points, fname)
-  checkNumber(cx, fname, "cx")
-  checkNumber(cy, fname, "cy")
-  checkNumber(radius, fname, "radius")
-  if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
-  if n < 6 then return false end
-  local turn = areaSign(points, n)
-  if turn == 0 then return false end
-  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
-  cx, cy = cx + 0.0, cy + 0.0
-  -- The projections' rounding error is a few eps times the polygon's extent plus the centre's
-  -- distance from it plus the radius; an overlap below 8 eps times that counts as touching.
-  local xmin, xmax, ymin, ymax = huge, -huge, huge, -huge
-  for i = 1, n - 1, 2 do
-    local x, y = points[i] + 0.0, points[i + 1] + 0.0
-    if x < xmin then xmin = x end
-    if x > xmax then xmax = x end
-    if y < ymin then ymin = y end
-    if y > ymax then ymax = y end
-  end
-  local reach = max(abs(cx - xmin), abs(cx - xmax)) + max(abs(cy - ymin), abs(cy - ymax))
-  local tol = 8 * EPS * ((xmax - xmin) + (ymax - ymin) + reach + radius)
-  local best, bux, buy = huge, 0.0, 0.0
-  local nearX, nearY, nearD = 0.0, 0.0, huge
-  -- On an edge's outward normal a convex polygon spans [-width, 0]: its edge is the near end.
-  -- The vertex at the far end moves forward around the polygon as the edges do (rotating
-  -- calipers), so each edge walks on from the previous one's far vertex instead of projecting
-  -- every vertex. The walk goes on through steps within the rounding and stops at the first
-  -- certain rise, past which a convex polygon's projections only rise.
-  local far = 0   -- index of the far vertex, 0 until the first edge has scanned them all
-  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
-  for i = 1, n - 1, 2 do
-    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
-    local d = (bx - cx) * (bx - cx) + (by - cy) * (by - cy)
-    if d < nearD then nearX, nearY, nearD = bx, by, d end
-    if bx ~= ax or by ~= ay then
-      local nx, ny = unit((by - ay) * sign, (ax - bx) * sign)
-      local lo
-      if far == 0 then
-        lo = huge
-        for j = 1, n - 1, 2 do
-          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
-          if s < lo then lo, far = s, j end
-        end
-      else
-        lo = nx * (points[far] - ax) + ny * (points[far + 1] - ay)
-        local j = far
-        for _ = 1, n / 2 do
-          j = j + 2
-          if j > n then j = 1 end
-          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
-          if s > lo + tol then break end
-          if s < lo then lo, far = s, j end
-        end
-      end
-      local s = nx * (cx - ax) + ny * (cy - ay)
-      local up, down = radius - s, (s + radius) - lo
-      if up <= tol or down <= tol then return false end
-      if up < best then best, bux, buy = up, nx, ny end
-      if down < best then best, bux, buy = down, -nx, -ny end
-    end
-    ax, ay = bx, by
-  end
-  if nearD > 0 then
-    -- the axis from the nearest vertex to the centre, where the centre projects at |c - v|
-    local nx, ny, len = unit(cx - nearX, cy - nearY)
-    local min1, max1 = projectRange(points, n, nearX, nearY, nx, ny)
-    local up, down = max1 - (len - radius), (len + radius) - min1
-    if up <= tol or down <= tol then return false end
-    if up < best then best, bux, buy = up, nx, ny end
-    if down < best then best, bux, buy = down, -nx, -ny end
-  end
-  return best, bux * best + 0.0, buy * best + 0.0
+  checkFinite(cx, fname, "cx")
+  checkFinite(cy, fname, "cy")
+  checkRadius(radius, fname, "radius")
+  if n < 6 or radius == 0 then return false end
+  local overlap, dx, dy = circleCollision(points, n, cx + 0.0, cy + 0.0, radius + 0.0)
+  if overlap == nil then error(fname .. ": points holds a non-finite coordinate", 2) end
+  if not overlap then return false end
+  return overlap, dx, dy
 end
 
 --------------------------------------------------------------------------------------------------
