@@ -836,7 +836,7 @@ end
 
 -- Lists of convex parts in place of a polygon: the public functions below hand them to the
 -- "Compound shapes" section, which builds on everything up to the circles.
-local isParts, collideParts
+local isParts, collideParts, collideCircleParts
 
 --- Whether the edge normals of points1 show no separating axis between two convex polygons.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
@@ -1286,6 +1286,10 @@ end
 -- @return overlap, dx, dy (move the circle by dx, dy) or false
 function polygon.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"
+  if isParts(points) then
+    local overlap, dx, dy = collideCircleParts(fname, points, cx, cy, radius)
+    return overlap, dx, dy
+  end
   local n = checkPoints(points, fname)
   checkFinite(cx, fname, "cx")
   checkFinite(cy, fname, "cy")
@@ -1684,6 +1688,205 @@ function collideParts(fname, shape1, shape2, wantPush)
   if best == huge then
     -- No candidate checked free (not expected): 2 E along any direction clears every D.
     best, tx, ty = 2 * extent, faceX[1] * 2 * extent, faceY[1] * 2 * extent
+  end
+  return best / k, tx / k + 0.0, ty / k + 0.0
+end
+
+-- Circles. A circle (c, r) whose centre moves by t meets part A exactly when c + t lies within
+-- r of A: t inside D = (A - c) grown by r, a convex shape bounded by the edges' lines moved out
+-- by r and arcs of radius r around the vertices. The least push is again the point nearest the
+-- origin outside every D. On the boundary of the union it is the foot of the perpendicular on
+-- a moved edge line, or the point of an arc nearest the origin (straight away from a vertex),
+-- or a crossing of two of those pieces: line and line, line and arc, arc and arc. Each candidate
+-- is kept when it is farther than r + delta from every part (the same margins as above, with
+-- the circle's box in E and S), and the nearest kept one is the push.
+
+local faceAX, faceAY, faceBX, faceBY = {}, {}, {}, {}   -- edge ends relative to the centre
+
+-- Appends the edges of part (area sign turn) as faces relative to the centre (cx, cy), all
+-- scaled by k: the outward unit normal, the signed distance faceC of the edge's line from the
+-- centre (u.t - faceC is how far t lies beyond it) and the edge's ends. Returns the last index.
+local function addCircleFaces(part, n, turn, internal, cx, cy, k, top)
+  local e = n / 2   -- the edge from the last vertex to the first comes first
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  local kcx, kcy = cx * k, cy * k
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = unit((by - ay) * turn, (ax - bx) * turn)   -- outward
+      local qax, qay = ax * k - kcx, ay * k - kcy
+      top = top + 1
+      faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
+      faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
+      faceOuter[top] = not (internal and internal[e])
+    end
+    ax, ay, e = bx, by, (i + 1) / 2
+  end
+  return top
+end
+
+-- Whether t lies at least `need` from the part whose faces are first .. last.
+local function farFromPart(tx, ty, first, last, need)
+  local beyond = -huge
+  for f = first, last do beyond = max(beyond, faceX[f] * tx + faceY[f] * ty - faceC[f]) end
+  if beyond >= need then return true end
+  if beyond <= 0 then return false end   -- inside the part
+  -- outside: the nearest point lies on an edge whose line t is beyond
+  local needSq = need * need
+  for f = first, last do
+    if faceX[f] * tx + faceY[f] * ty - faceC[f] > 0 then
+      local ax, ay = faceAX[f], faceAY[f]
+      local ex, ey = faceBX[f] - ax, faceBY[f] - ay
+      local along = ((tx - ax) * ex + (ty - ay) * ey) / (ex * ex + ey * ey)
+      if along < 0 then along = 0 elseif along > 1 then along = 1 end
+      local dx, dy = tx - (ax + along * ex), ty - (ay + along * ey)
+      if dx * dx + dy * dy < needSq then return false end
+    end
+  end
+  return true
+end
+
+-- Whether t lies at least need from every part 1 .. np.
+local function circleFree(tx, ty, np, need)
+  for p = 1, np do
+    if not farFromPart(tx, ty, faceFirst[p], faceFirst[p + 1] - 1, need) then return false end
+  end
+  return true
+end
+
+-- Keeps candidate t when it is nearer than best and free.
+local function tryCircle(tx, ty, np, need, best, bestX, bestY)
+  local d = sqrt(tx * tx + ty * ty)
+  if d < best and circleFree(tx, ty, np, need) then return d, tx, ty end
+  return best, bestX, bestY
+end
+
+-- The nearest free candidate for a circle of (scaled) radius r among parts 1 .. np.
+local function nearestFreeCircle(np, r, margin)
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local last = faceFirst[np + 1] - 1
+  local reach, need = r + 1.25 * margin, r + margin   -- lines and arcs moved out by lift
+  for f = 1, last do   -- feet on the outer edges' moved lines
+    local d = faceC[f] + reach
+    if faceOuter[f] and abs(d) < best then
+      best, bestX, bestY = tryCircle(faceX[f] * d, faceY[f] * d, np, need, best, bestX, bestY)
+    end
+  end
+  for f = 1, last do   -- straight away from each vertex (the start of each edge)
+    local qx, qy = faceAX[f], faceAY[f]
+    local q = sqrt(qx * qx + qy * qy)
+    if q > 0 and abs(q - reach) < best then
+      local s = 1 - reach / q
+      best, bestX, bestY = tryCircle(qx * s, qy * s, np, need, best, bestX, bestY)
+    end
+  end
+  for f = 1, last do
+    local c1, x1, y1 = faceC[f] + reach, faceX[f], faceY[f]
+    local qx, qy = faceAX[f], faceAY[f]
+    local q = sqrt(qx * qx + qy * qy)
+    for g = 1, last do
+      if g > f and abs(c1) < best and abs(faceC[g] + reach) < best then   -- line and line
+        local c2, x2, y2 = faceC[g] + reach, faceX[g], faceY[g]
+        local det = x1 * y2 - y1 * x2
+        if det ~= 0 then
+          best, bestX, bestY = tryCircle((c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det,
+            np, need, best, bestX, bestY)
+        end
+      end
+      local px, py = faceAX[g], faceAY[g]
+      if abs(c1) < best and abs(sqrt(px * px + py * py) - reach) < best then   -- line f, arc g
+        local h = c1 - (x1 * px + y1 * py)   -- from the vertex to the line, along the normal
+        if abs(h) < reach then
+          local w = sqrt(reach * reach - h * h)
+          local mx, my = px + x1 * h, py + y1 * h
+          best, bestX, bestY = tryCircle(mx - y1 * w, my + x1 * w, np, need, best, bestX, bestY)
+          best, bestX, bestY = tryCircle(mx + y1 * w, my - x1 * w, np, need, best, bestX, bestY)
+        end
+      end
+      if g > f and abs(q - reach) < best and abs(sqrt(px * px + py * py) - reach) < best then
+        local ex, ey = px - qx, py - qy   -- arc f and arc g
+        local gap = sqrt(ex * ex + ey * ey)
+        if gap > 0 and gap < 2 * reach then
+          local w = sqrt(reach * reach - gap * gap / 4) / gap
+          local mx, my = (qx + px) / 2, (qy + py) / 2
+          best, bestX, bestY = tryCircle(mx - ey * w, my + ex * w, np, need, best, bestX, bestY)
+          best, bestX, bestY = tryCircle(mx + ey * w, my - ex * w, np, need, best, bestX, bestY)
+        end
+      end
+    end
+  end
+  return best, bestX, bestY
+end
+
+-- The Chebyshev distance from the origin to the box of D for part i of boxes1 and a circle.
+local function circleBoxGap(i, cx, cy, r, k)
+  local a = 4 * i
+  local gx = max((boxes1[a - 3] - cx - r) * k, (cx - r - boxes1[a - 1]) * k, 0.0)
+  local gy = max((boxes1[a - 2] - cy - r) * k, (cy - r - boxes1[a]) * k, 0.0)
+  return max(gx, gy)
+end
+
+-- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
+function collideCircleParts(fname, shape, cx, cy, r)
+  checkFinite(cx, fname, "cx", 4)
+  checkFinite(cy, fname, "cy", 4)
+  checkFinite(r, fname, "radius", 4)
+  if r < 0 then error(("%s: radius must not be negative, got %s"):format(fname, tostring(r)), 3) end
+  local info = preparedParts[shape]
+  local count, size, stale, left, top, right, bottom = scanShape(fname, "points", shape, true, boxes1, info)
+  if stale or not info then info = prepareParts(shape) end
+  cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
+  if r == 0 then return false end
+  callStamp = callStamp + 1
+  size = max(size, abs(cx) + r, abs(cy) + r)
+  local k = 1.0
+  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
+  local margin = 2^-47 * extent + 2^-51 * size * k   -- as for polygons: 64 eps E + 4 eps S
+  local np, last, hit = 0, 0, false
+  for i = 1, count do
+    if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
+        and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
+      local part = shape[i]
+      local n = #part
+      local turn = partTurn(part, i, turns1, stamps1)
+      if turn ~= 0 then
+        if circleCollision(part, n, cx, cy, r) then hit = true end
+        np = np + 1
+        faceFirst[np] = last + 1
+        last = addCircleFaces(part, n, turn, info.internal[i], cx, cy, k, last)
+        faceFirst[np + 1] = last + 1
+      end
+    end
+  end
+  if not hit then return false end
+  local reach = -huge   -- parts whose grown box is nearer than reach are in already
+  local best, tx, ty
+  while true do
+    best, tx, ty = nearestFreeCircle(np, r * k, margin)
+    local nextReach = best + 4 * margin
+    if nextReach <= reach then break end
+    local before = np
+    for i = 1, count do
+      local a = 4 * i
+      if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
+          and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+        local gap = circleBoxGap(i, cx, cy, r, k)
+        local turn = partTurn(shape[i], i, turns1, stamps1)
+        if turn ~= 0 and gap >= reach and gap < nextReach then
+          np = np + 1
+          faceFirst[np] = last + 1
+          last = addCircleFaces(shape[i], #shape[i], turn, info.internal[i], cx, cy, k, last)
+          faceFirst[np + 1] = last + 1
+        end
+      end
+    end
+    reach = nextReach
+    if np == before then break end
+  end
+  if best == huge then
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, 0.0, -2 * extent
   end
   return best / k, tx / k + 0.0, ty / k + 0.0
 end

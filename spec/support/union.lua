@@ -101,11 +101,9 @@ function union.differences(parts1, parts2)
   return list
 end
 
---- The least translation of the second shape out of the first: the distance from the origin to
--- the nearest point outside every open D, and that point (dx, dy); 0, 0, 0 when the origin is
--- in no D. parts1, parts2: lists of convex parts (flat arrays).
-function union.leastTranslation(parts1, parts2)
-  local list = union.differences(parts1, parts2)
+-- The distance from the origin to the nearest point outside every open hull of the list, and
+-- that point; 0, 0, 0 when the origin is in none.
+local function nearestOutside(list)
   local scale = 0
   for _, h in ipairs(list) do scale = math.max(scale, magnitude(h)) end
   local tol = 1e-12 * scale
@@ -150,6 +148,32 @@ function union.leastTranslation(parts1, parts2)
     end
   end
   return best, bx, by
+end
+
+--- The least translation of the second shape out of the first: the distance from the origin to
+-- the nearest point outside every open D, and that point (dx, dy); 0, 0, 0 when the origin is
+-- in no D. parts1, parts2: lists of convex parts (flat arrays).
+function union.leastTranslation(parts1, parts2)
+  return nearestOutside(union.differences(parts1, parts2))
+end
+
+--- Bounds on the least move of a circle (cx, cy, r) out of a list of convex parts: the disc is
+-- replaced by a regular polygon of `sides` sides inscribed in it (giving a lower bound) and one
+-- circumscribed about it (an upper bound), and each part grown by it, A - (disc - c), becomes a
+-- hull as above. Returns lower, upper, and the upper bound's move (dx, dy).
+function union.circleLeastMove(list, cx, cy, r, sides)
+  local function grown(radius)
+    local disc = {}
+    for i = 0, sides - 1 do
+      local angle = 2 * math.pi * i / sides
+      disc[#disc + 1] = cx + radius * math.cos(angle)
+      disc[#disc + 1] = cy + radius * math.sin(angle)
+    end
+    return union.differences(list, { disc })
+  end
+  local lower = nearestOutside(grown(r))
+  local upper, dx, dy = nearestOutside(grown(r / math.cos(math.pi / sides)))
+  return lower, upper, dx, dy
 end
 
 return union
