@@ -1663,9 +1663,8 @@ function collideParts(fname, shape1, shape2, wantPush)
   end
   if not hit then return false end
   local reach = -huge   -- the pairs whose box of D is nearer than reach are in already
-  local best, tx, ty
+  local best, tx, ty = nearestFree(np, margin)
   while true do
-    best, tx, ty = nearestFree(np, margin)
     local nextReach = best + 4 * margin
     if nextReach <= reach then break end
     local before = np
@@ -1684,6 +1683,8 @@ function collideParts(fname, shape1, shape2, wantPush)
     end
     reach = nextReach
     if np == before then break end
+    -- More pairs can only lengthen the least push: if the best point is still free, it stays.
+    if best == huge or not pushFree(tx, ty, np, margin) then best, tx, ty = nearestFree(np, margin) end
   end
   if best == huge then
     -- No candidate checked free (not expected): 2 E along any direction clears every D.
@@ -1702,6 +1703,7 @@ end
 -- the circle's box in E and S), and the nearest kept one is the push.
 
 local faceAX, faceAY, faceBX, faceBY = {}, {}, {}, {}   -- edge ends relative to the centre
+local faceQ = {}                                        -- |faceAX, faceAY|: the vertex's distance
 
 -- Appends the edges of part (area sign turn) as faces relative to the centre (cx, cy), all
 -- scaled by k: the outward unit normal, the signed distance faceC of the edge's line from the
@@ -1718,6 +1720,7 @@ local function addCircleFaces(part, n, turn, internal, cx, cy, k, top)
       top = top + 1
       faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
       faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
+      faceQ[top] = sqrt(qax * qax + qay * qay)
       faceOuter[top] = not (internal and internal[e])
     end
     ax, ay, e = bx, by, (i + 1) / 2
@@ -1773,44 +1776,50 @@ local function nearestFreeCircle(np, r, margin)
     end
   end
   for f = 1, last do   -- straight away from each vertex (the start of each edge)
-    local qx, qy = faceAX[f], faceAY[f]
-    local q = sqrt(qx * qx + qy * qy)
+    local q = faceQ[f]
     if q > 0 and abs(q - reach) < best then
       local s = 1 - reach / q
-      best, bestX, bestY = tryCircle(qx * s, qy * s, np, need, best, bestX, bestY)
+      best, bestX, bestY = tryCircle(faceAX[f] * s, faceAY[f] * s, np, need, best, bestX, bestY)
     end
   end
+  -- Crossings. A point on a line lies at least |its constant| from the origin, one on an arc at
+  -- least |q - reach|: pieces no nearer than the best so far are skipped.
   for f = 1, last do
     local c1, x1, y1 = faceC[f] + reach, faceX[f], faceY[f]
     local qx, qy = faceAX[f], faceAY[f]
-    local q = sqrt(qx * qx + qy * qy)
-    for g = 1, last do
-      if g > f and abs(c1) < best and abs(faceC[g] + reach) < best then   -- line and line
-        local c2, x2, y2 = faceC[g] + reach, faceX[g], faceY[g]
-        local det = x1 * y2 - y1 * x2
-        if det ~= 0 then
-          best, bestX, bestY = tryCircle((c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det,
-            np, need, best, bestX, bestY)
+    local lineNear, arcNear = abs(c1) < best, abs(faceQ[f] - reach) < best
+    if lineNear or arcNear then
+      for g = 1, last do
+        local c2 = faceC[g] + reach
+        if lineNear and g > f and abs(c2) < best then   -- line and line
+          local x2, y2 = faceX[g], faceY[g]
+          local det = x1 * y2 - y1 * x2
+          if det ~= 0 then
+            best, bestX, bestY = tryCircle((c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det,
+              np, need, best, bestX, bestY)
+          end
         end
-      end
-      local px, py = faceAX[g], faceAY[g]
-      if abs(c1) < best and abs(sqrt(px * px + py * py) - reach) < best then   -- line f, arc g
-        local h = c1 - (x1 * px + y1 * py)   -- from the vertex to the line, along the normal
-        if abs(h) < reach then
-          local w = sqrt(reach * reach - h * h)
-          local mx, my = px + x1 * h, py + y1 * h
-          best, bestX, bestY = tryCircle(mx - y1 * w, my + x1 * w, np, need, best, bestX, bestY)
-          best, bestX, bestY = tryCircle(mx + y1 * w, my - x1 * w, np, need, best, bestX, bestY)
-        end
-      end
-      if g > f and abs(q - reach) < best and abs(sqrt(px * px + py * py) - reach) < best then
-        local ex, ey = px - qx, py - qy   -- arc f and arc g
-        local gap = sqrt(ex * ex + ey * ey)
-        if gap > 0 and gap < 2 * reach then
-          local w = sqrt(reach * reach - gap * gap / 4) / gap
-          local mx, my = (qx + px) / 2, (qy + py) / 2
-          best, bestX, bestY = tryCircle(mx - ey * w, my + ex * w, np, need, best, bestX, bestY)
-          best, bestX, bestY = tryCircle(mx + ey * w, my - ex * w, np, need, best, bestX, bestY)
+        local px, py = faceAX[g], faceAY[g]
+        if abs(faceQ[g] - reach) < best then
+          if lineNear then   -- line f and the arc around vertex g
+            local h = c1 - (x1 * px + y1 * py)   -- from the vertex to the line, along the normal
+            if abs(h) < reach then
+              local w = sqrt(reach * reach - h * h)
+              local mx, my = px + x1 * h, py + y1 * h
+              best, bestX, bestY = tryCircle(mx - y1 * w, my + x1 * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + y1 * w, my - x1 * w, np, need, best, bestX, bestY)
+            end
+          end
+          if arcNear and g > f then   -- the arcs around vertices f and g
+            local ex, ey = px - qx, py - qy
+            local gap = sqrt(ex * ex + ey * ey)
+            if gap > 0 and gap < 2 * reach then
+              local w = sqrt(reach * reach - gap * gap / 4) / gap
+              local mx, my = (qx + px) / 2, (qy + py) / 2
+              best, bestX, bestY = tryCircle(mx - ey * w, my + ex * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + ey * w, my - ex * w, np, need, best, bestX, bestY)
+            end
+          end
         end
       end
     end
@@ -1861,9 +1870,8 @@ function collideCircleParts(fname, shape, cx, cy, r)
   end
   if not hit then return false end
   local reach = -huge   -- parts whose grown box is nearer than reach are in already
-  local best, tx, ty
+  local best, tx, ty = nearestFreeCircle(np, r * k, margin)
   while true do
-    best, tx, ty = nearestFreeCircle(np, r * k, margin)
     local nextReach = best + 4 * margin
     if nextReach <= reach then break end
     local before = np
@@ -1872,8 +1880,8 @@ function collideCircleParts(fname, shape, cx, cy, r)
       if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
           and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
         local gap = circleBoxGap(i, cx, cy, r, k)
-        local turn = partTurn(shape[i], i, turns1, stamps1)
-        if turn ~= 0 and gap >= reach and gap < nextReach then
+        local turn = gap >= reach and gap < nextReach and partTurn(shape[i], i, turns1, stamps1)
+        if turn and turn ~= 0 then
           np = np + 1
           faceFirst[np] = last + 1
           last = addCircleFaces(shape[i], #shape[i], turn, info.internal[i], cx, cy, k, last)
@@ -1883,6 +1891,10 @@ function collideCircleParts(fname, shape, cx, cy, r)
     end
     reach = nextReach
     if np == before then break end
+    -- More parts can only lengthen the least move: if the best point is still free, it stays.
+    if best == huge or not circleFree(tx, ty, np, r * k + margin) then
+      best, tx, ty = nearestFreeCircle(np, r * k, margin)
+    end
   end
   if best == huge then
     -- No candidate checked free (not expected): 2 E along any direction clears every D.

@@ -91,6 +91,44 @@ describe("compound shapes against the union oracle", function()
   end)
 end)
 
+describe("circles against compound shapes, against the oracle", function()
+  it("decide overlap exactly, separate in one push, and move no farther than needed", function()
+    -- The least move of a circle is bounded by union.circleLeastMove: the disc replaced by a
+    -- 24-gon inscribed in it (a lower bound) and one circumscribed (an upper bound, 0.9% longer).
+    local oracle = require "oracle"
+    local g = prng.new(9)
+    local wrong = newWrong()
+    local collisions = 0
+    for trial = 1, 60 do
+      local off = OFFSETS[trial % #OFFSETS + 1]
+      local list = trial % 2 == 0 and scenes.cluster(g, g:int(1, 5), 60, 30) or scenes.terrain(g, 10)
+      local cx, cy, r = g:range(0, 80), g:range(0, 90), g:range(1, 20)
+      if trial % 3 == 0 then list = parts.reverse(list) end
+      local moved = parts.translate(list, off, off)
+      local overlap, dx, dy = polygon.polygonCircleCollideV(moved, cx + off, cy + off, r)
+      local truth = false
+      for _, p in ipairs(moved) do
+        if oracle.discMeetsPolygon(p, cx + off, cy + off, r) then truth = true end
+      end
+      wrong.boolean:check((overlap ~= false) == truth, trial)
+      if overlap then
+        collisions = collisions + 1
+        local meets = polygon.polygonCircleCollideV(moved, cx + off + dx, cy + off + dy, r)
+        for _, p in ipairs(moved) do
+          if oracle.discMeetsPolygon(p, cx + off + dx, cy + off + dy, r) then meets = true end
+        end
+        wrong.separation:check(not meets, trial, dx, dy)
+        local lower, upper = union.circleLeastMove(list, cx, cy, r, 24)
+        local slack = parts.slack(moved, { parts.box(cx + off - r, cy + off - r, 2 * r, 2 * r) })
+        wrong.shorter:check(overlap >= lower * (1 - 1e-9) and overlap <= upper + slack,
+          trial, overlap, lower, upper)
+      end
+    end
+    assertNone(wrong)
+    assert.is_true(collisions > 20, collisions)
+  end)
+end)
+
 describe("compound shapes far from the origin", function()
   local U = {
     { 0, 0, 50, 0, 50, 250, 0, 250 },
@@ -160,6 +198,8 @@ describe("compound shapes per frame", function()
       collideV(twoPart[i % 10 + 1], floor)
       collideV(corner, c)
       collideV(floor, far)
+      polygon.polygonCircleCollideV(floor, i % 200, 97, 5)
+      polygon.polygonCircleCollideV(corner, 12, 88, 4)
     end
     -- two rounds first: they prepare the lists and let LuaJIT build its traces (on the heap)
     for _ = 1, 2 do

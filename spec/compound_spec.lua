@@ -6,6 +6,7 @@
 local polygon = require "polygon"
 local parts = require "parts"
 local shapes = require "shapes"
+local oracle = require "oracle"
 
 local collide, collideV = polygon.polygonsCollide, polygon.polygonsCollideV
 
@@ -198,5 +199,70 @@ describe("compound shapes", function()
           "polygonsCollide: points2 holds a non-finite coordinate")
       end
     end)
+  end)
+end)
+
+describe("compound shapes against circles", function()
+  local circleV = polygon.polygonCircleCollideV
+
+  -- the circle moved by the push meets no part, by the exact oracle and by the module
+  local function assert_circle_push(list, cx, cy, r, ex, ey)
+    local overlap, dx, dy = circleV(list, cx, cy, r)
+    assert.is_number(overlap)
+    local slack = parts.slack(list, { parts.box(cx - r, cy - r, 2 * r, 2 * r) })
+    local len = math.sqrt(ex * ex + ey * ey)
+    assert.is_true(overlap >= len and overlap <= len + slack,
+      ("overlap %.17g, expected %.17g"):format(overlap, len))
+    assert.is_true(math.abs(dx - ex) <= slack and math.abs(dy - ey) <= slack,
+      ("push %.17g %.17g, expected %g %g"):format(dx, dy, ex, ey))
+    assert.is_false(circleV(list, cx + dx, cy + dy, r))
+    for _, p in ipairs(list) do assert.is_false(oracle.discMeetsPolygon(p, cx + dx, cy + dy, r)) end
+    return dx, dy
+  end
+
+  it("pushes a circle sunk 5 into the U's floor straight up by 5", function()
+    -- centre y 190, radius 15: the disc reaches y = 205, the floor's top is y = 200
+    for _, u in ipairs({ U, parts.reverse(U) }) do
+      local dx = assert_circle_push(u, 150, 190, 15, 0, -5)
+      assert.are.equal(0, dx)
+    end
+  end)
+
+  it("pushes a circle out of a concave corner along the diagonal", function()
+    -- centre (60, 190), radius 15: 5 into the left pillar (x < 50) and 5 into the floor; out of
+    -- the corner the centre goes to (65, 185), 15 from both lines: a move of (5, -5)
+    for _, u in ipairs({ U, parts.reverse(U) }) do
+      assert_circle_push(u, 60, 190, 15, 5, -5)
+      assert_circle_push(u, 240, 190, 15, -5, -5)
+    end
+  end)
+
+  it("pushes a circle up by its depth at every position along a 20-part floor", function()
+    local floor = parts.floor(20, 10, 100, 0)
+    for step = 0, 80 do   -- centres from x = 5 to 195 by 2.375, seams x = 10 k among them
+      local x = 5 + step * 2.375
+      local overlap, dx, dy = circleV(floor, x, 97, 5)   -- reaches y = 102: depth 2
+      assert.are.equal(0, dx)
+      assert.are.equal(-overlap, dy)
+      assert.is_true(overlap >= 2 and overlap <= 2 + parts.slack(floor, { parts.box(x - 5, 92, 10, 10) }))
+      assert.is_false(circleV(floor, x + dx, 97 + dy, 5))
+    end
+  end)
+
+  it("does not collide when touching a part, or with radius 0", function()
+    assert.is_false(circleV(U, 150, 185, 15))   -- reaches y = 200 exactly
+    assert.is_false(circleV(U, 65, 185, 15))    -- touches the pillar and the floor
+    assert.is_false(circleV(U, 150, 220, 0))
+  end)
+
+  it("names the function and argument for bad circles and parts", function()
+    assert.has_error(function() circleV(U, 0 / 0, 1, 1) end, "polygonCircleCollideV: cx must be finite, got "
+      .. tostring(0 / 0))
+    assert.has_error(function() circleV(U, 1, 1, -1) end,
+      "polygonCircleCollideV: radius must not be negative, got -1")
+    assert.has_error(function() circleV({ U[1], { 0, 0, 1, 0, 0, math.huge } }, 1, 1, 1) end,
+      "polygonCircleCollideV: points holds a non-finite coordinate")
+    assert.has_error(function() circleV({ U[1], 7 }, 1, 1, 1) end,
+      "polygonCircleCollideV: points[2] must be a table, got number")
   end)
 end)
