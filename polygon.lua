@@ -1342,13 +1342,16 @@ end
 -- coordinates stay below S + 1.5 E. Errors of the quantities the test u.t >= c + delta compares,
 -- in eps: the unit normal from rounded differences (eps each, then unit's 3) turns by at most
 -- 5 eps, moving u.(v - a) by 5 E and u.t by 7.5 E; the projection rounds by 3 E; the test's own
--- sums and products by 3 (1.5 E + E) = 7.5 E; each moved coordinate rounds by S + 1.5 E, along u
--- by 1.5 (S + 1.5 E). The sum, 26 E + 1.5 S, is below delta = 64 eps E + 4 eps S: a candidate
--- found outside the widened D leaves the moved, rounded part B outside a line of A (or A outside
--- one of B), so that pair at most touches, and the push separates in one step. The push exceeds
--- the least translation by about lift (80 eps E + 5 eps S) on a face, lift / sin(angle / 2) at a
--- crossing of lines meeting at an angle. Coordinates beyond 2^500 or below 2^-400 are scaled by
--- a power of two k first (exact), so no product overflows or underflows.
+-- sums and products by 3 (1.5 E + E) = 7.5 E: 23 E in all, below 64 E, so a candidate found
+-- outside the widened D is in truth at distance 41 eps E or more from D: part B moved by it
+-- exactly keeps that distance from A. Rounding moves each of its coordinates by at most
+-- eps (S + 1.5 E), each vertex by 1.42 eps (S + 1.5 E), so the rounded part (the hull of the
+-- rounded vertices) lies within that of the exact one: still apart when 41 eps E + 2 eps S, the
+-- rest of delta = 64 eps E + 2 eps S, exceeds 1.42 eps (S + 1.5 E). So no pair of parts collides
+-- after the rounded move: one push separates. The push exceeds the least translation by about
+-- lift (80 eps E + 2.5 eps S) on a face, lift / sin(angle / 2) at a crossing of lines meeting at
+-- an angle. Coordinates beyond 2^500 or below 2^-400 are scaled by a power of two k first
+-- (exact), so no product overflows or underflows.
 
 -- Whether shape is a list of parts rather than a flat array of coordinates (declared before the
 -- public collision functions, which dispatch on it).
@@ -1648,7 +1651,7 @@ function collideParts(fname, shape1, shape2, wantPush)
   local k = 1.0
   if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
   local extent = ((max(x2, x4) - min(x1, x3)) + (max(y2, y4) - min(y1, y3))) * k
-  local margin = 2^-47 * extent + 2^-51 * size * k   -- delta above: 64 eps E + 4 eps S
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- delta above: 64 eps E + 2 eps S
   local np, top, hit = 0, 0, false
   for i = 1, count1 do
     local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
@@ -1851,7 +1854,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
   local k = 1.0
   if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
   local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
-  local margin = 2^-47 * extent + 2^-51 * size * k   -- as for polygons: 64 eps E + 4 eps S
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- as for polygons: 64 eps E + 2 eps S
   local np, last, hit = 0, 0, false
   for i = 1, count do
     if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
