@@ -909,8 +909,10 @@ local turn              -- the sign of the outer ring's area: > 0 clockwise on s
 -- The sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the interior side
 -- of the directed edge a -> b of a ring wound like the outer one.
 local function orient(a, b, c)
-  local ax, ay = nodeX[a], nodeY[a]
-  local s = cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[c], nodeY[c])
+  local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
+  -- c at b is common (edges meeting at a vertex): 0 at once, as the filter would go exact
+  if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
+  local s = cross(ax, ay, bx, by, ax, ay, cx, cy)
   if s > 0 then return turn elseif s < 0 then return -turn end
   return 0
 end
