@@ -151,7 +151,7 @@ describe("polygonTriangulate and polygonConvexParts on hard input", function()
 
     it("do the same far from the origin", function()
       local rng = prng.new(777)
-      for round = 1, 6 do
+      for _ = 1, 6 do
         local set = tiles.random(rng, 5, 5, 0.7)
         for _, offset in ipairs(OFFSETS) do
           for _, shape in ipairs(tiles.shapes(set, 10, offset, -offset)) do
