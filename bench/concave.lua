@@ -90,10 +90,11 @@ if arg[1] == "export" then export(arg[2]); return end
 -- the least disturbed) and the pieces of the last run (their count is the checksum that keeps
 -- the work from being skipped), or nil and the message.
 local function timePerVertex(f, points)
-  local best, pieces, message = math.huge, nil, nil
+  local best, pieces = math.huge, nil
   for round = 0, 3 do
     local runs, start = 0, os.clock()
     repeat
+      local message
       pieces, message = f(points)
       if not pieces then return nil, message end
       runs = runs + 1
@@ -140,7 +141,8 @@ if shell("command -v node >/dev/null 2>&1") and io.open(earcutFile) then
 else
   print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
 end
-if os.getenv("LOVE") ~= "0" and shell("command -v love >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1") then
+local haveLove = "command -v love >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1"
+if os.getenv("LOVE") ~= "0" and shell(haveLove) then
   assert(shell(("cp bench/love-triangulate.lua %s/main.lua"):format(dir)))
   love = fieldsOf(("xvfb-run -a love %s 2>/dev/null"):format(dir))
 else
@@ -175,7 +177,8 @@ for _, case in ipairs(HARD) do
   local tris, message = polygon.polygonTriangulate(points)
   local mine = tris and ("%d tris, %.1e"):format(#tris, areaError(points, tris)) or ("nil: " .. message)
   local e, l = earcut[name], love[name]
-  local theirs = e and (tonumber(e[3]) < 0 and "throws" or ("%s tris, %.1e"):format(e[4], tonumber(e[5]))) or "-"
+  local theirs = e and (tonumber(e[3]) < 0 and "throws"
+    or ("%s tris, %.1e"):format(e[4], tonumber(e[5]))) or "-"
   local lov = l and (l[2] == "fail" and "fails" or ("%s tris, %.1e"):format(l[4], tonumber(l[5]))) or "-"
   print(("%-19s %-22s %-22s %-22s%s"):format(name, mine, theirs, lov, valid and "" or "  (invalid input)"))
 end

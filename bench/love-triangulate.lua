@@ -1,3 +1,4 @@
+-- luacheck: globals love
 -- love.math.triangulate on the outlines bench/concave.lua exports (cases.lua beside this file,
 -- copied there as main.lua): per case one line "name ok|fail microseconds-per-vertex triangles
 -- relative-area-error", then quits. Areas of the result are summed in doubles.
