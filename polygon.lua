@@ -906,13 +906,29 @@ local gone              -- gone[k]: node k has been unlinked
 local zOf, nextZ, prevZ -- the z-order list, built once the holes are joined
 local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
 
+-- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
+local sortKey
+local function bySortKey(a, b) return sortKey[a] < sortKey[b] end
+local function leftmostFirst(a, b)
+  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
+end
+
 -- The sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the interior side
 -- of the directed edge a -> b of a ring wound like the outer one.
 local function orient(a, b, c)
   local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
   -- c at b is common (edges meeting at a vertex): 0 at once, as the filter would go exact
   if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
-  local s = cross(ax, ay, bx, by, ax, ay, cx, cy)
+  -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
+  -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
+  -- too complex"), which cost polygonConvexParts 50 times its time on a 100-vertex outline
+  local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
+  local s, e = l - r, l + r
+  if e < 0 then e = -e end
+  e = CROSS_BOUND * e
+  if not (s >= e or -s >= e) then   -- also when l and r differ in sign and s is 0: exact, rare
+    s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
+  end
   if s > 0 then return turn elseif s < 0 then return -turn end
   return 0
 end
@@ -980,7 +996,8 @@ local function anyCrossing(starts)
       k = q
     until k == s
   end
-  sort(edges, function(a, b) return left[a] < left[b] end)
+  sortKey = left
+  sort(edges, bySortKey)
   local active, count = {}, 0
   for e = 1, #edges do
     local a = edges[e]
@@ -1173,7 +1190,8 @@ local function buildZOrder(s)
   zLeft, zTop, zScale = x0, y0, size > 0 and Z_CELLS / size or 0
   zOf, nextZ, prevZ = {}, {}, {}
   for i = 1, #list do zOf[list[i]] = zKey(nodeX[list[i]], nodeY[list[i]]) end
-  sort(list, function(a, b) return zOf[a] < zOf[b] end)
+  sortKey = zOf
+  sort(list, bySortKey)
   for i = 1, #list do
     nextZ[list[i]], prevZ[list[i]] = list[i + 1], list[i - 1]
   end
@@ -1213,9 +1231,9 @@ end
 -- box blocks it.
 local function isEar(b)
   local a, c = prevNode[b], nextNode[b]
-  local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
-  local x0, y0 = min(ax, bx, cx), min(ay, by, cy)
-  local x1, y1 = max(ax, bx, cx), max(ay, by, cy)
+  -- few live values in the loops below: more made LuaJIT 2.1 abort their side traces
+  local x0, y0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
+  local x1, y1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
   local zLow, zHigh = zKey(x0, y0), zKey(x1, y1)
   local k = prevZ[b]
   while k and zOf[k] >= zLow do
@@ -1242,36 +1260,40 @@ end
 -- brings one about, so the ring never holds a zero-width spike for an ear to reach across.
 -- A lap that finds no ear is retried with strict off; returns false when that one finds none
 -- either (the ring is not weakly simple).
+local ringCount, pending, pendingTop   -- clipEars' state, for settle
+
+-- Drops the pending nodes that lie in line with their neighbours, and those this brings in line.
+local function settle()
+  while pendingTop > 0 and ringCount > 2 do
+    local j = pending[pendingTop]
+    pending[pendingTop] = nil; pendingTop = pendingTop - 1
+    if not gone[j] and orient(prevNode[j], j, nextNode[j]) == 0 then
+      unlink(j); ringCount = ringCount - 1
+      pending[pendingTop + 1], pending[pendingTop + 2] = prevNode[j], nextNode[j]
+      pendingTop = pendingTop + 2
+    end
+  end
+  for j = pendingTop, 1, -1 do pending[j] = nil end
+  pendingTop = 0
+end
+
 local function clipEars(s, tris)
   strict = true
-  local count, pending = 0, {}
+  ringCount, pending = 0, {}
   local k = s
-  repeat count = count + 1; pending[count] = k; k = nextNode[k] until k == s
-  local top = count
-  local function settle()
-    while top > 0 and count > 2 do
-      local j = pending[top]
-      pending[top] = nil; top = top - 1
-      if not gone[j] and orient(prevNode[j], j, nextNode[j]) == 0 then
-        unlink(j); count = count - 1
-        pending[top + 1], pending[top + 2] = prevNode[j], nextNode[j]
-        top = top + 2
-      end
-    end
-    for j = top, 1, -1 do pending[j] = nil end
-    top = 0
-  end
+  repeat ringCount = ringCount + 1; pending[ringCount] = k; k = nextNode[k] until k == s
+  pendingTop = ringCount
   settle()
   local ear = s
   while gone[ear] do ear = nextNode[ear] end
   local stop = ear
-  while count > 2 do
+  while ringCount > 2 do
     local a, c = prevNode[ear], nextNode[ear]
     if orient(a, ear, c) > 0 and isEar(ear) then
       local t = #tris
       tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
-      unlink(ear); count = count - 1
-      pending[1], pending[2], top = a, c, 2
+      unlink(ear); ringCount = ringCount - 1
+      pending[1], pending[2], pendingTop = a, c, 2
       settle()
       ear = c
       while gone[ear] do ear = nextNode[ear] end
@@ -1350,7 +1372,7 @@ local function triangulate(fname, points, holes)
     until k == starts[h]
     lefts[#lefts + 1] = best
   end
-  sort(lefts, function(a, b) return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b]) end)
+  sort(lefts, leftmostFirst)
   for i = 1, #lefts do
     local m = bridgeTarget(outer, lefts[i])
     if not m then return nil, "a hole is outside the polygon" end
@@ -1365,7 +1387,7 @@ end
 -- Drops the node arrays of the last call.
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
-  zOf, nextZ, prevZ = nil, nil, nil
+  zOf, nextZ, prevZ, sortKey = nil, nil, nil, nil
 end
 
 --- Splits a polygon, optionally with holes, into triangles. Builds new tables: for load time,
@@ -1406,7 +1428,7 @@ function polygon.polygonConvexParts(points, holes)
   idLimit = idLimit + 1
   for c = 1, #tris do
     local first = c - (c - 1) % 3
-    node[c], part[c] = tris[c], first
+    node[c], part[c] = tris[c], first   -- part: a corner's union-find link, the first of a triangle
     nextCorner[c] = c % 3 == 0 and first or c + 1
     prevCorner[c] = c == first and first + 2 or c - 1
   end
@@ -1421,19 +1443,16 @@ function polygon.polygonConvexParts(points, holes)
       edgeAt[u * idLimit + v] = c
     end
   end
-  local function root(p)
-    while part[p] ~= p do part[p] = part[part[p]]; p = part[p] end
-    return p
-  end
   local heir = {}   -- a dropped corner's outgoing edge now starts at heir[corner]
-  local function live(c)
-    while heir[c] do c = heir[c] end
-    return c
-  end
   for j = 1, #joins, 2 do
-    local pu, qv = live(joins[j]), live(joins[j + 1])
+    local pu, qv = joins[j], joins[j + 1]
+    while heir[pu] do pu = heir[pu] end
+    while heir[qv] do qv = heir[qv] end
     local pv, qu = nextCorner[pu], nextCorner[qv]
-    local rp, rq = root(pu), root(qv)
+    -- the parts' roots (union-find with path halving)
+    local rp, rq = pu, qv
+    while part[rp] ~= rp do part[rp] = part[part[rp]]; rp = part[rp] end
+    while part[rq] ~= rq do part[rq] = part[part[rq]]; rq = part[rq] end
     if rp ~= rq and origin[node[pv]] == origin[node[qv]] and origin[node[qu]] == origin[node[pu]]
       and orient(node[prevCorner[pu]], node[pu], node[nextCorner[qu]]) >= 0
       and orient(node[prevCorner[qv]], node[pv], node[nextCorner[pv]]) >= 0 then

@@ -5,6 +5,7 @@
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local polygon = require "polygon"
 local prng = require "prng"
+local oracle = require "oracle"
 
 local SIZES = { 100, 1000, 10000 }
 
@@ -151,18 +152,20 @@ end
 local jit = rawget(_G, "jit")
 print(("%s; microseconds per vertex; earcut on node, love.math.triangulate in LÖVE (LuaJIT)")
   :format(jit and jit.version or _VERSION))
-print(("%-19s %6s %9s %9s %6s %9s %7s %6s %9s"):format("outline", "n", "triangul.", "convexP.", "parts",
-  "earcut", "ratio", "", "love"))
+print(("%-19s %6s %9s %9s %6s %6s %9s %7s %9s"):format("outline", "n", "triangul.", "convexP.", "parts",
+  "bound", "earcut", "ratio", "love"))
 local function row(name, points)
   local n = #points / 2
   local tt, tris = timePerVertex(polygon.polygonTriangulate, points)
   local tp, parts = timePerVertex(polygon.polygonConvexParts, points)
   local e, l = earcut[name], love[name]
   local et = e and tonumber(e[3])
-  print(("%-19s %6d %9s %9s %6s %9s %7s %6s %9s"):format(name, n,
-    tt and ("%.2f"):format(tt) or "nil", tp and ("%.2f"):format(tp) or "nil", tp and #parts or "-",
+  -- the fewest convex parts possible are at least ceil(r / 2) + 1, r the reflex vertices
+  local bound = math.ceil(oracle.reflexCount(points) / 2) + 1
+  print(("%-19s %6d %9s %9s %6s %6d %9s %7s %9s"):format(name, n,
+    tt and ("%.2f"):format(tt) or "nil", tp and ("%.2f"):format(tp) or "nil", tp and #parts or "-", bound,
     et and et >= 0 and ("%.2f"):format(et) or "-",
-    tt and et and et > 0 and ("%.1fx"):format(tt / et) or "-", "",
+    tt and et and et > 0 and ("%.1fx"):format(tt / et) or "-",
     l and (l[2] == "fail" and "fails" or ("%.2f"):format(tonumber(l[3]))) or "-"))
   return tris
 end
