@@ -1907,6 +1907,599 @@ function collideCircleParts(fname, shape, cx, cy, r)
 end
 
 --------------------------------------------------------------------------------------------------
+-- Triangulation and convex parts
+--------------------------------------------------------------------------------------------------
+-- Ear clipping over one ring of vertex nodes: holes are first joined to the outer ring by a
+-- bridge to a vertex they see (Eberly's method), an ear is a strictly convex vertex whose
+-- triangle no other vertex blocks, and the vertices a triangle's box could hold are found in a
+-- z-order (Morton) list, as earcut does, so an ear test costs about as much at 10,000 vertices
+-- as at 100. Every decision is a sign from cross, exact; coordinates are only ever copied.
+-- The nodes live in arrays indexed by node number, set up by one call and dropped at its end.
+
+local floor, sort = math.floor, table.sort
+
+local nodeX, nodeY      -- coordinates as doubles (+ 0.0), for the predicates
+local inX, inY          -- the caller's values, copied into the output bit for bit
+local origin            -- the input vertex a node stands for (a bridge copies two of them)
+local nextNode, prevNode, nodeCount
+local gone              -- gone[k]: node k has been unlinked
+local zOf, nextZ, prevZ -- the z-order list, built once the holes are joined
+local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
+
+-- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
+local sortKey
+local function bySortKey(a, b) return sortKey[a] < sortKey[b] end
+local function leftmostFirst(a, b)
+  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
+end
+
+-- The sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the interior side
+-- of the directed edge a -> b of a ring wound like the outer one.
+local function orient(a, b, c)
+  local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
+  -- c at b is common (edges meeting at a vertex): 0 at once, as the filter would go exact
+  if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
+  -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
+  -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
+  -- too complex"), which cost polygonConvexParts 50 times its time on a 100-vertex outline
+  local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
+  local s, e = l - r, l + r
+  if e < 0 then e = -e end
+  e = CROSS_BOUND * e
+  if not (s >= e or -s >= e) then   -- also when l and r differ in sign and s is 0: exact, rare
+    s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
+  end
+  if s > 0 then return turn elseif s < 0 then return -turn end
+  return 0
+end
+
+local function same(a, b)
+  return nodeX[a] == nodeX[b] and nodeY[a] == nodeY[b]
+end
+
+local function newNode(x, y, id)
+  nodeCount = nodeCount + 1
+  local k = nodeCount
+  inX[k], inY[k], nodeX[k], nodeY[k], origin[k] = x, y, x + 0.0, y + 0.0, id
+  return k
+end
+
+-- Unlinks node k from the ring and, once built, from the z-order list.
+local function unlink(k)
+  gone[k] = true
+  local p, q = prevNode[k], nextNode[k]
+  nextNode[p], prevNode[q] = q, p
+  if zOf then
+    local pz, nz = prevZ[k], nextZ[k]
+    if pz then nextZ[pz] = nz end
+    if nz then prevZ[nz] = pz end
+  end
+end
+
+-- Links the vertices of a flat array into a ring, in reverse when `reversed`, skipping
+-- repeated consecutive vertices. firstId: the id of the array's first vertex. Returns a node.
+local function linkRing(points, n, firstId, reversed)
+  local first, last
+  for j = 1, n - 1, 2 do
+    local i = reversed and n - j or j
+    local x, y = points[i], points[i + 1]
+    if not last or x + 0.0 ~= nodeX[last] or y + 0.0 ~= nodeY[last] then
+      local k = newNode(x, y, firstId + (i - 1) / 2)
+      if last then nextNode[last], prevNode[k] = k, last else first = k end
+      last = k
+    end
+  end
+  nextNode[last], prevNode[first] = first, last
+  if last ~= first and same(first, last) then unlink(last) end
+  return first
+end
+
+-- Whether segments a-b and c-d cross at one point inside both (a proper crossing).
+local function properlyCross(a, b, c, d)
+  local s1, s2 = orient(a, b, c), orient(a, b, d)
+  if s1 == 0 or s2 == 0 or s1 == s2 then return false end
+  local s3, s4 = orient(c, d, a), orient(c, d, b)
+  return s3 ~= 0 and s4 ~= 0 and s3 ~= s4
+end
+
+-- Whether two edges of the rings starting at the given nodes properly cross. A sweep in x:
+-- the edges sorted by their left end, each compared with the earlier ones still reaching it
+-- (for outlines whose edges are short next to the whole, a handful).
+local function anyCrossing(starts)
+  local edges, left = {}, {}
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local q = nextNode[k]
+      edges[#edges + 1] = k
+      left[k] = min(nodeX[k], nodeX[q])
+      k = q
+    until k == s
+  end
+  sortKey = left
+  sort(edges, bySortKey)
+  local active, count = {}, 0
+  for e = 1, #edges do
+    local a = edges[e]
+    local b = nextNode[a]
+    local x0 = left[a]
+    local y0, y1 = min(nodeY[a], nodeY[b]), max(nodeY[a], nodeY[b])
+    local j = 1
+    while j <= count do
+      local c = active[j]
+      local d = nextNode[c]
+      if max(nodeX[c], nodeX[d]) < x0 then   -- ends before this edge begins: drop it
+        active[j] = active[count]; active[count] = nil; count = count - 1
+      else
+        if max(nodeY[c], nodeY[d]) >= y0 and min(nodeY[c], nodeY[d]) <= y1
+          and properlyCross(a, b, c, d) then
+          return true
+        end
+        j = j + 1
+      end
+    end
+    count = count + 1; active[count] = a
+  end
+  return false
+end
+
+-- -1, 0 or 1: where (x, y) lies against the ring at node s (outside, on it, strictly inside),
+-- by the crossing rule with the exact side test and an exact test for the boundary.
+local function ringSide(s, x, y)
+  local inside = false
+  local k = s
+  repeat
+    local q = nextNode[k]
+    local x1, y1, x2, y2 = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+    local c = cross(x1, y1, x2, y2, x1, y1, x, y)
+    if c == 0 and min(x1, x2) <= x and x <= max(x1, x2) and min(y1, y2) <= y and y <= max(y1, y2) then
+      return 0
+    end
+    if (y1 > y) ~= (y2 > y) and (y2 > y1) == (c > 0) then inside = not inside end
+    k = q
+  until k == s
+  return inside and 1 or -1
+end
+
+-- Whether the direction from node k to node t points strictly into the interior at k.
+local function sectorHolds(k, t)
+  local a, c = prevNode[k], nextNode[k]
+  local s1, s2 = orient(a, k, t), orient(k, c, t)
+  if orient(a, k, c) > 0 then return s1 > 0 and s2 > 0 end
+  return s1 > 0 or s2 > 0
+end
+
+-- Among the nodes of the ring at s at the place of node m, one whose interior holds the
+-- direction towards node t (a pinch point has several; each sees a different side).
+local function copyFacing(s, m, t)
+  local k, found = s, m
+  repeat
+    if same(k, m) and sectorHolds(k, t) then found = k end
+    k = nextNode[k]
+  until k == s
+  return found
+end
+
+-- Which of two edges, each crossing the line y = hy strictly between its ends, meets it further
+-- right: 1 when f does, -1 when e does, 0 when they meet it at one point. The edges do not
+-- properly cross, so one end of either, tested against the other, tells. e and f are the
+-- lower ends' nodes (by y), eh and fh the upper.
+local function rightOf(e, eh, f, fh)
+  local s
+  if nodeY[f] >= nodeY[e] then s = -orient(e, eh, f) else s = orient(f, fh, e) end
+  if s == 0 then
+    if nodeY[fh] <= nodeY[eh] then s = -orient(e, eh, fh) else s = orient(f, fh, eh) end
+  end
+  return s * turn   -- orient's sign times turn is the plain sign of the cross product
+end
+
+-- Whether (x, y), in line with (hx, hy) and (bx, by) on the same side, lies strictly between.
+local function between(hx, hy, x, y, bx, by)
+  if x ~= bx then return (hx < x) == (x < bx) and x ~= hx end
+  return (hy < y) == (y < by) and y ~= hy
+end
+
+-- The node of the ring at s that the hole's leftmost node h joins: the nearest point hit by the
+-- ray from h to the left is a vertex, or lies on an edge whose right end P is seen from h unless
+-- another vertex in the triangle (h, hit, P) is: the one there at the least angle from the ray
+-- (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside).
+local function bridgeTarget(s, h)
+  local hx, hy = nodeX[h], nodeY[h]
+  local vertex, lo, hi   -- the nearest hit so far: a vertex, or an edge lo -> hi (upwards in y)
+  local k = s
+  repeat
+    local q = nextNode[k]
+    local x, y = nodeX[k], nodeY[k]
+    if y == hy and x <= hx then
+      if x == hx then return copyFacing(s, k, nextNode[h]) end   -- the hole touches the ring here
+      if lo then
+        if cross(nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi], nodeX[lo], nodeY[lo], x, y) <= 0 then
+          vertex, lo, hi = k, nil, nil
+        end
+      elseif not vertex or x > nodeX[vertex] then
+        vertex = k
+      end
+    end
+    local qy = nodeY[q]
+    if (y < hy and qy > hy) or (y > hy and qy < hy) then
+      local a, b = k, q
+      if y > qy then a, b = q, k end
+      local ax, ay = nodeX[a], nodeY[a]
+      if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy) <= 0 then   -- meets the ray
+        if vertex then
+          if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
+            vertex, lo, hi = nil, a, b
+          end
+        elseif not lo or rightOf(lo, hi, a, b) > 0 then
+          lo, hi = a, b
+        end
+      end
+    end
+    k = q
+  until k == s
+  if vertex then return copyFacing(s, vertex, h) end
+  if not lo then return nil end
+  local p = nodeX[hi] > nodeX[lo] and hi or lo
+  local side = nodeY[p] > hy and 1 or -1   -- the side of the ray the triangle lies on
+  local lx, ly, ux, uy = nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi]
+  local best = p
+  k = s
+  repeat
+    local x, y = nodeX[k], nodeY[k]
+    if (y - hy) * side > 0 and cross(lx, ly, ux, uy, lx, ly, x, y) <= 0 then
+      local c = cross(hx, hy, nodeX[p], nodeY[p], hx, hy, x, y) * side
+      if c >= 0 then   -- inside the triangle (h, hit, P) or on its sides
+        local t = cross(hx, hy, x, y, hx, hy, nodeX[best], nodeY[best]) * side
+        if t < 0 or (t == 0 and between(hx, hy, x, y, nodeX[best], nodeY[best])) then best = k end
+      end
+    end
+    k = nextNode[k]
+  until k == s
+  return copyFacing(s, best, h)
+end
+
+-- Joins the hole ring at node h to the ring at node m: m -> h ... around the hole ... h' -> m'
+-- with h' and m' new nodes at the places of h and m. A hole touching the ring (m at h) makes
+-- repeated vertices, removed at once.
+local function bridge(m, h)
+  local m2, h2 = newNode(inX[m], inY[m], origin[m]), newNode(inX[h], inY[h], origin[h])
+  local mn, hp = nextNode[m], prevNode[h]
+  nextNode[m], prevNode[h] = h, m
+  nextNode[hp], prevNode[h2] = h2, hp
+  nextNode[h2], prevNode[m2] = m2, h2
+  nextNode[m2], prevNode[mn] = mn, m2
+  if same(m, h) then unlink(h); unlink(m2) end
+end
+
+-- Bit-interleaving of a byte (bit i goes to bit 2 i), for z-order keys without bit operators.
+local SPREAD = {}
+for b = 0, 255 do
+  local v, bit, out = b, 1, 0
+  while v > 0 do
+    if v % 2 == 1 then out = out + bit end
+    v, bit = (v - v % 2) / 2, bit * 4
+  end
+  SPREAD[b] = out
+end
+
+local Z_CELLS = 32767   -- 15 bits per axis: keys below 2^30, exact in doubles and integers
+local zLeft, zTop, zScale
+
+-- The Morton key of a point. Monotone in x and in y (the scaling rounds monotonically), so a
+-- box's corners bound the keys of every point inside it.
+local function zKey(x, y)
+  local ix = floor((x - zLeft) * zScale)
+  local iy = floor((y - zTop) * zScale)
+  local xl, yl = ix % 256, iy % 256
+  return SPREAD[xl] + SPREAD[(ix - xl) / 256] * 65536
+    + 2 * (SPREAD[yl] + SPREAD[(iy - yl) / 256] * 65536)
+end
+
+-- Sorts the ring at s by z-order into nextZ / prevZ.
+local function buildZOrder(s)
+  local list = {}
+  local x0, y0, x1, y1 = huge, huge, -huge, -huge
+  local k = s
+  repeat
+    list[#list + 1] = k
+    x0, y0 = min(x0, nodeX[k]), min(y0, nodeY[k])
+    x1, y1 = max(x1, nodeX[k]), max(y1, nodeY[k])
+    k = nextNode[k]
+  until k == s
+  local size = max(x1 - x0, y1 - y0)
+  zLeft, zTop, zScale = x0, y0, size > 0 and Z_CELLS / size or 0
+  zOf, nextZ, prevZ = {}, {}, {}
+  for i = 1, #list do zOf[list[i]] = zKey(nodeX[list[i]], nodeY[list[i]]) end
+  sortKey = zOf
+  sort(list, bySortKey)
+  for i = 1, #list do
+    nextZ[list[i]], prevZ[list[i]] = list[i + 1], list[i - 1]
+  end
+end
+
+-- Whether node k keeps the triangle (a, b, c) (turning the ring's way) from being an ear: it
+-- lies strictly inside, or on the triangle's boundary with an edge going into it, or (while
+-- `strict`) on the new edge c -> a, which would leave a vertex inside an edge and so a
+-- triangle that cannot merge with its neighbours.
+local strict = true
+local function blocks(k, a, b, c)
+  local s1 = orient(a, b, k)
+  if s1 < 0 then return false end
+  local s2 = orient(b, c, k)
+  if s2 < 0 then return false end
+  local s3 = orient(c, a, k)
+  if s3 < 0 then return false end
+  if s1 > 0 and s2 > 0 and s3 > 0 then return true end
+  if strict and s3 == 0 and not same(k, a) and not same(k, c) then return true end
+  for side = 1, 2 do
+    local t = side == 1 and prevNode[k] or nextNode[k]
+    if same(k, a) then
+      if orient(a, b, t) > 0 and orient(c, a, t) > 0 then return true end
+    elseif same(k, b) then
+      if orient(a, b, t) > 0 and orient(b, c, t) > 0 then return true end
+    elseif same(k, c) then
+      if orient(b, c, t) > 0 and orient(c, a, t) > 0 then return true end
+    elseif (s1 == 0 and orient(a, b, t) > 0) or (s2 == 0 and orient(b, c, t) > 0)
+      or (s3 == 0 and orient(c, a, t) > 0) then
+      return true
+    end
+  end
+  return false
+end
+
+-- Whether node b, strictly convex, is an ear: no node whose z-key lies within the triangle's
+-- box blocks it.
+local function isEar(b)
+  local a, c = prevNode[b], nextNode[b]
+  -- few live values in the loops below: more made LuaJIT 2.1 abort their side traces
+  local x0, y0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
+  local x1, y1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
+  local zLow, zHigh = zKey(x0, y0), zKey(x1, y1)
+  local k = prevZ[b]
+  while k and zOf[k] >= zLow do
+    local x, y = nodeX[k], nodeY[k]
+    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
+      return false
+    end
+    k = prevZ[k]
+  end
+  k = nextZ[b]
+  while k and zOf[k] <= zHigh do
+    local x, y = nodeX[k], nodeY[k]
+    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
+      return false
+    end
+    k = nextZ[k]
+  end
+  return true
+end
+
+-- Clips ears from the ring at s until it is gone, appending each triangle's three nodes to
+-- tris. No node in line with its neighbours is kept (a straight run, a repeated vertex, the tip
+-- of a spike): each is dropped without a triangle, at the start and whenever a clip or a drop
+-- brings one about, so the ring never holds a zero-width spike for an ear to reach across.
+-- A lap that finds no ear is retried with strict off; returns false when that one finds none
+-- either (the ring is not weakly simple).
+local ringCount, pending, pendingTop   -- clipEars' state, for settle
+
+-- Drops the pending nodes that lie in line with their neighbours, and those this brings in line.
+local function settle()
+  while pendingTop > 0 and ringCount > 2 do
+    local j = pending[pendingTop]
+    pending[pendingTop] = nil; pendingTop = pendingTop - 1
+    if not gone[j] and orient(prevNode[j], j, nextNode[j]) == 0 then
+      unlink(j); ringCount = ringCount - 1
+      pending[pendingTop + 1], pending[pendingTop + 2] = prevNode[j], nextNode[j]
+      pendingTop = pendingTop + 2
+    end
+  end
+  for j = pendingTop, 1, -1 do pending[j] = nil end
+  pendingTop = 0
+end
+
+local function clipEars(s, tris)
+  strict = true
+  ringCount, pending = 0, {}
+  local k = s
+  repeat ringCount = ringCount + 1; pending[ringCount] = k; k = nextNode[k] until k == s
+  pendingTop = ringCount
+  settle()
+  local ear = s
+  while gone[ear] do ear = nextNode[ear] end
+  local stop = ear
+  while ringCount > 2 do
+    local a, c = prevNode[ear], nextNode[ear]
+    if orient(a, ear, c) > 0 and isEar(ear) then
+      local t = #tris
+      tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
+      unlink(ear); ringCount = ringCount - 1
+      pending[1], pending[2], pendingTop = a, c, 2
+      settle()
+      ear = c
+      while gone[ear] do ear = nextNode[ear] end
+      stop = ear
+      strict = true
+    else
+      ear = c
+      if ear == stop then
+        if not strict then return false end
+        strict = false
+      end
+    end
+  end
+  return true
+end
+
+-- Checks the arguments and triangulates: the triangles' nodes (a flat array, three per
+-- triangle), or nil and a message. Leaves the node arrays set for the caller to read.
+local function triangulate(fname, points, holes)
+  local n = checkPoints(points, fname, "points", 4)
+  if holes ~= nil and type(holes) ~= "table" then
+    error(("%s: holes must be a table, got %s"):format(fname, type(holes)), 3)
+  end
+  local ok, message = polygon.validate(points)
+  if not ok then
+    if n < 6 then return nil, message end
+    error(fname .. ": " .. message, 3)
+  end
+  for h = 1, holes and #holes or 0 do
+    ok, message = polygon.validate(holes[h])
+    if not ok then error(("%s: holes[%d]: %s"):format(fname, h, message), 3) end
+  end
+  turn = areaSign(points, n)
+  if turn == 0 then return nil, "points have zero area" end
+  turn = turn > 0 and 1 or -1
+  nodeX, nodeY, inX, inY, origin, nextNode, prevNode, nodeCount = {}, {}, {}, {}, {}, {}, {}, 0
+  gone = {}
+  zOf, nextZ, prevZ = nil, nil, nil
+  local outer = linkRing(points, n, 1, false)
+  local starts, firstId = { outer }, n / 2 + 1
+  for h = 1, holes and #holes or 0 do
+    local hole = holes[h]
+    local m = #hole
+    local s = areaSign(hole, m)
+    if s == 0 then return nil, ("holes[%d] has zero area"):format(h) end
+    -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
+    starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0))
+    firstId = firstId + m / 2
+  end
+  if anyCrossing(starts) then return nil, "edges cross" end
+  for h = 2, #starts do
+    local k, side = starts[h]
+    repeat
+      side = ringSide(outer, nodeX[k], nodeY[k])
+      k = nextNode[k]
+    until side ~= 0 or k == starts[h]
+    if side < 0 then return nil, ("holes[%d] is outside the polygon"):format(h - 1) end
+    for g = 2, #starts do
+      if g ~= h then
+        k = starts[h]
+        repeat
+          side = ringSide(starts[g], nodeX[k], nodeY[k])
+          k = nextNode[k]
+        until side ~= 0 or k == starts[h]
+        if side > 0 then return nil, ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1) end
+      end
+    end
+  end
+  -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
+  local lefts = {}
+  for h = 2, #starts do
+    local best, k = starts[h], starts[h]
+    repeat
+      if nodeX[k] < nodeX[best] or (nodeX[k] == nodeX[best] and nodeY[k] < nodeY[best]) then best = k end
+      k = nextNode[k]
+    until k == starts[h]
+    lefts[#lefts + 1] = best
+  end
+  sort(lefts, leftmostFirst)
+  for i = 1, #lefts do
+    local m = bridgeTarget(outer, lefts[i])
+    if not m then return nil, "a hole is outside the polygon" end
+    bridge(m, lefts[i])
+  end
+  buildZOrder(outer)
+  local tris = {}
+  if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
+  return tris
+end
+
+-- Drops the node arrays of the last call.
+local function releaseNodes()
+  nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
+  zOf, nextZ, prevZ, sortKey = nil, nil, nil, nil
+end
+
+--- Splits a polygon, optionally with holes, into triangles. Builds new tables: for load time,
+-- not for every frame.
+-- points: a flat array; holes: nil or an array of flat arrays inside the polygon (a hole may
+-- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
+-- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
+-- Every decision is an exact sign; no triangle has zero area. O(n log n) for ordinary outlines.
+-- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
+-- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
+-- outside the polygon)
+function polygon.polygonTriangulate(points, holes)
+  local tris, message = triangulate("polygonTriangulate", points, holes)
+  if not tris then releaseNodes(); return nil, message end
+  local out = {}
+  for t = 1, #tris, 3 do
+    local a, b, c = tris[t], tris[t + 1], tris[t + 2]
+    out[#out + 1] = { inX[a], inY[a], inX[b], inY[b], inX[c], inY[c] }
+  end
+  releaseNodes()
+  return out
+end
+
+--- Splits a polygon, optionally with holes, into convex parts: the triangulation's triangles
+-- merged greedily across their shared edges while both ends stay convex (Hertel and Mehlhorn:
+-- at most four times the fewest parts possible). Builds new tables: for load time.
+-- Arguments and errors as polygonTriangulate; a convex polygon gives one part.
+-- @return an array of convex polygons (flat arrays of input vertices, wound like points), or
+-- nil and a message
+function polygon.polygonConvexParts(points, holes)
+  local tris, message = triangulate("polygonConvexParts", points, holes)
+  if not tris then releaseNodes(); return nil, message end
+  -- corners: three per triangle, linked around their part; a part is the triangles joined so far
+  local node, nextCorner, prevCorner, part = {}, {}, {}, {}
+  local edgeAt, joins = {}, {}
+  local idLimit = 0
+  for k = 1, nodeCount do idLimit = max(idLimit, origin[k]) end
+  idLimit = idLimit + 1
+  for c = 1, #tris do
+    local first = c - (c - 1) % 3
+    node[c], part[c] = tris[c], first   -- part: a corner's union-find link, the first of a triangle
+    nextCorner[c] = c % 3 == 0 and first or c + 1
+    prevCorner[c] = c == first and first + 2 or c - 1
+  end
+  -- edges meet by the input vertices they join, so a bridge is an edge like any other
+  for c = 1, #tris do
+    local u, v = origin[node[c]], origin[node[nextCorner[c]]]
+    local other = edgeAt[v * idLimit + u]
+    if other then
+      joins[#joins + 1] = other; joins[#joins + 1] = c
+      edgeAt[v * idLimit + u] = nil
+    else
+      edgeAt[u * idLimit + v] = c
+    end
+  end
+  local heir = {}   -- a dropped corner's outgoing edge now starts at heir[corner]
+  for j = 1, #joins, 2 do
+    local pu, qv = joins[j], joins[j + 1]
+    while heir[pu] do pu = heir[pu] end
+    while heir[qv] do qv = heir[qv] end
+    local pv, qu = nextCorner[pu], nextCorner[qv]
+    -- the parts' roots (union-find with path halving)
+    local rp, rq = pu, qv
+    while part[rp] ~= rp do part[rp] = part[part[rp]]; rp = part[rp] end
+    while part[rq] ~= rq do part[rq] = part[part[rq]]; rq = part[rq] end
+    if rp ~= rq and origin[node[pv]] == origin[node[qv]] and origin[node[qu]] == origin[node[pu]]
+      and orient(node[prevCorner[pu]], node[pu], node[nextCorner[qu]]) >= 0
+      and orient(node[prevCorner[qv]], node[pv], node[nextCorner[pv]]) >= 0 then
+      local un, vp = nextCorner[qu], prevCorner[qv]
+      nextCorner[pu], prevCorner[un] = un, pu
+      prevCorner[pv], nextCorner[vp] = vp, pv
+      heir[qu], heir[qv] = pu, pu
+      part[rq] = rp
+    end
+  end
+  local out, seen = {}, {}
+  for c = 1, #tris do
+    if not heir[c] and not seen[c] then
+      local poly, k = {}, c
+      repeat
+        seen[k] = true
+        poly[#poly + 1] = inX[node[k]]; poly[#poly + 1] = inY[node[k]]
+        k = nextCorner[k]
+      until k == c
+      out[#out + 1] = poly
+    end
+  end
+  releaseNodes()
+  return out
+end
+
+--------------------------------------------------------------------------------------------------
 -- Validation and the Polygon class
 --------------------------------------------------------------------------------------------------
 
