@@ -1302,611 +1302,6 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
 end
 
 --------------------------------------------------------------------------------------------------
--- Compound shapes: lists of convex parts
---------------------------------------------------------------------------------------------------
--- polygonsCollide, polygonsCollideV and polygonCircleCollideV also take, for either shape, a list
--- of convex parts {part1, part2, ...}: what polygonConvexParts returns, or parts built by hand.
--- A flat array holds a number at [1], a list of parts a table.
---
--- Overlap. Two shapes overlap when some part of one overlaps some part of the other, each pair
--- decided exactly (touching is not colliding) after a bounding-box test per pair.
---
--- The push. Moving the second shape by t makes part A of the first and part B of the second
--- overlap exactly when t lies inside D = A - B = {a - b}, a convex polygon with one edge per edge
--- of A and of B. An edge of A from vertex a, with outward unit normal u, bounds D by the open
--- half-plane u.t < c, c = -min over the vertices v of B of u.(v - a) (how far B reaches past the
--- edge); an edge of B from b, outward normal u, by -u.t < c, c = -min over the vertices w of A
--- of u.(w - b). The least push is the point nearest the origin that lies in no open D (over all
--- pairs of parts). That point is on the boundary of the union of the D, so on an edge of one D:
--- inside that edge it is the foot of the perpendicular from the origin to the edge's line, else
--- it is the end of a piece of the edge, where the edge's line crosses another (of the same D, a
--- corner, or of another D, where two D cross). So the candidates are the feet and the crossings,
--- and the push is the nearest candidate outside every D: the true least translation, up to the
--- margin below. Feet need not be tried on an edge shared with another part of the same shape
--- (internal, see preparedParts): such a foot, if on the edge, has the neighbouring part
--- overlapping (the other part reaches on past the shared edge, as a half-disc around every point
--- inside it) and so is never free; off the edge it is on another line, found there. Crossings use
--- every line, as an end of an internal edge can be a corner of the union.
---
--- Which pairs. A pair matters only if its D comes nearer the origin than the push found so far,
--- and D lies in the box [A's box - B's box]: the pairs whose boxes overlap come first, then the
--- pairs whose box of D is nearer than the best push found, round after round (each round can
--- only lengthen the push: a nearer free point would have been free among fewer pairs).
---
--- Margin: one push separates. The faces are computed in floating point and the moved vertices
--- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
--- are taken on the lines moved out by lift = 1.25 delta (a quarter of delta covers their own
--- rounding, a few eps E). With E the width plus the height of the box around both shapes and S
--- their largest coordinate magnitude, every D lies in the box of D's, within 1.5 E of the origin,
--- so every |v - a| <= E, every push |t| < 1.5 E (a point farther out is free), and the moved
--- coordinates stay below S + 1.5 E. Errors of the quantities the test u.t >= c + delta compares,
--- in eps: the unit normal from rounded differences (eps each, then unit's 3) turns by at most
--- 5 eps, moving u.(v - a) by 5 E and u.t by 7.5 E; the projection rounds by 3 E; the test's own
--- sums and products by 3 (1.5 E + E) = 7.5 E: 23 E in all, below 64 E, so a candidate found
--- outside the widened D is in truth at distance 41 eps E or more from D: part B moved by it
--- exactly keeps that distance from A. Rounding moves each of its coordinates by at most
--- eps (S + 1.5 E), each vertex by 1.42 eps (S + 1.5 E), so the rounded part (the hull of the
--- rounded vertices) lies within that of the exact one: still apart when 41 eps E + 2 eps S, the
--- rest of delta = 64 eps E + 2 eps S, exceeds 1.42 eps (S + 1.5 E). So no pair of parts collides
--- after the rounded move: one push separates. The push exceeds the least translation by about
--- lift (80 eps E + 2.5 eps S) on a face, lift / sin(angle / 2) at a crossing of lines meeting at
--- an angle. Coordinates beyond 2^500 or below 2^-400 are scaled by a power of two k first
--- (exact), so no product overflows or underflows.
-
--- Whether shape is a list of parts rather than a flat array of coordinates (declared before the
--- public collision functions, which dispatch on it).
-function isParts(shape)
-  return type(shape) == "table" and type(shape[1]) == "table"
-end
-
--- The preparation each list of parts gets once, on first use, kept while the list lives:
--- internal[k][e] is true when the edge of part k from vertex e to vertex e + 1 (the last to the
--- first) is covered by edges of other parts running the opposite way along the same line (shared
--- with the neighbours, whole or in pieces). Recomputed when the number of parts or of a part's
--- coordinates changes. Moving a shape keeps it right; a stale table after other edits costs at
--- most a longer push (a foot skipped) or some time (a foot tried), never a wrong one, as every
--- candidate is checked against every part.
-local preparedParts = setmetatable({}, { __mode = "k" })
-
--- The interval an edge covers along its line: on x unless the line is vertical (exact).
-local function edgeSpan(ax, ay, bx, by, onX)
-  if onX then return min(ax, bx), max(ax, bx) end
-  return min(ay, by), max(ay, by)
-end
-
--- Whether the spans in `covers` (pairs lo, hi, any order) cover [lo, hi].
-local function covered(covers, lo, hi)
-  table.sort(covers, function(p, q) return p[1] < q[1] end)
-  local reach = lo
-  for _, span in ipairs(covers) do
-    if span[1] > reach then return false end
-    if span[2] > reach then reach = span[2] end
-    if reach >= hi then return true end
-  end
-  return reach >= hi
-end
-
--- Builds the preparation of a list of parts (allocates: load time, or after the parts changed).
-local function prepareParts(parts)
-  local count = #parts
-  local info = { count = count, lengths = {}, internal = {} }
-  local edges = {}
-  for k = 1, count do
-    local part = parts[k]
-    local n = #part
-    info.lengths[k], info.internal[k] = n, {}
-    for e = 1, n / 2 do
-      local j = e % (n / 2) + 1
-      local ax, ay = part[2 * e - 1] + 0.0, part[2 * e] + 0.0
-      local bx, by = part[2 * j - 1] + 0.0, part[2 * j] + 0.0
-      if ax ~= bx or ay ~= by then
-        edges[#edges + 1] = { k = k, e = e, ax = ax, ay = ay, bx = bx, by = by,
-                              xmin = min(ax, bx), xmax = max(ax, bx), covers = {} }
-      end
-    end
-  end
-  -- sweep over the edges in order of their smallest x: only edges whose x ranges meet can share
-  table.sort(edges, function(p, q) return p.xmin < q.xmin end)
-  for s = 1, #edges do
-    local E = edges[s]
-    local t = s + 1
-    while edges[t] and edges[t].xmin <= E.xmax do
-      local T = edges[t]
-      if T.k ~= E.k and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.ax, T.ay) == 0
-        and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.bx, T.by) == 0 then
-        local onX = E.ax ~= E.bx   -- then T, on the same line, is not vertical either
-        local forwardE = onX and E.bx > E.ax or not onX and E.by > E.ay
-        local forwardT = onX and T.bx > T.ax or not onX and T.by > T.ay
-        if forwardE ~= forwardT then
-          local elo, ehi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
-          local tlo, thi = edgeSpan(T.ax, T.ay, T.bx, T.by, onX)
-          if tlo < ehi and elo < thi then
-            E.covers[#E.covers + 1] = { tlo, thi }
-            T.covers[#T.covers + 1] = { elo, ehi }
-          end
-        end
-      end
-      t = t + 1
-    end
-  end
-  for _, E in ipairs(edges) do
-    if #E.covers > 0 then
-      local onX = E.ax ~= E.bx
-      local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
-      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = true end
-    end
-  end
-  preparedParts[parts] = info
-  return info
-end
-
--- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
-local boxes1, boxes2 = {}, {}      -- part boxes: xmin, ymin, xmax, ymax at 4k - 3 .. 4k
-local turns1, turns2 = {}, {}      -- part area signs, valid when stamps[k] == callStamp
-local stamps1, stamps2 = {}, {}
-local callStamp = 0
-local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
-local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
-
--- The part count of a shape, its boxes in `boxes`, the largest coordinate magnitude, whether
--- `info` (its preparation, if any) no longer matches its parts' lengths, and the box around all
--- parts (xmin, ymin, xmax, ymax). Raises the
--- argument errors at the caller of the public function (level 4).
-local function scanShape(fname, argname, shape, parts, boxes, info)
-  if type(shape) ~= "table" then
-    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), 4)
-  end
-  local count = parts and #shape or 1
-  local stale = info and info.count ~= count
-  local size, finite = 0.0, 0.0
-  local left, top, right, bottom = huge, huge, -huge, -huge
-  for k = 1, count do
-    local part = parts and shape[k] or shape
-    if type(part) ~= "table" then
-      error(("%s: %s[%d] must be a table, got %s"):format(fname, argname, k, type(part)), 4)
-    end
-    local n = #part
-    if n % 2 ~= 0 then
-      error(("%s: %s must hold an even number of coordinates, got %d")
-        :format(fname, parts and ("%s[%d]"):format(argname, k) or argname, n), 4)
-    end
-    if info and info.lengths[k] ~= n then stale = true end
-    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
-    for i = 1, n - 1, 2 do
-      local x, y = part[i] + 0.0, part[i + 1] + 0.0
-      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
-      if x < xmin then xmin = x end
-      if x > xmax then xmax = x end
-      if y < ymin then ymin = y end
-      if y > ymax then ymax = y end
-    end
-    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
-    local b = 4 * k
-    boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
-    if n >= 6 then
-      size = max(size, -xmin, xmax, -ymin, ymax)
-      left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
-    end
-  end
-  if finite ~= 0 then
-    error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
-  end
-  return count, size, stale, left, top, right, bottom
-end
-
--- The area sign of part k (1, -1 or 0: signs, never magnitudes, are multiplied), once per call.
-local function partTurn(part, k, turns, stamps)
-  if stamps[k] ~= callStamp then
-    local turn = areaSign(part, #part)
-    stamps[k], turns[k] = callStamp, turn > 0 and 1.0 or turn < 0 and -1.0 or 0.0
-  end
-  return turns[k]
-end
-
--- Whether two convex parts overlap (exact), by the SAT engine; non-finite input was caught.
-local function overlapsConvex(p1, p2)
-  return convexPenetration(p1, #p1, p2, #p2, true) and true or false
-end
-
--- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
--- part give (sense 1 for a part of the first shape, -1 for one of the second, whose outward
--- normal points the other way in t), with `other` the part it is paired with. Coordinates are
--- scaled by k. Returns the last index used and whether some edge separates the two parts,
--- decided exactly (w, h bound the scaled coordinate differences, for projectionTolerance).
-local function addFaces(edges, ne, turn, other, no, internal, sense, k, w, h, top)
-  local separated = false
-  local e = ne / 2   -- the edge from the last vertex to the first comes first
-  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-  for i = 1, ne - 1, 2 do
-    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = unit((by - ay) * turn, (ax - bx) * turn)   -- outward
-      local kax, kay = ax * k, ay * k
-      local lo = huge
-      for j = 1, no - 1, 2 do
-        local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
-        if s < lo then lo = s end
-      end
-      if not separated then
-        local tol = projectionTolerance(w, h, ux, uy)
-        if -lo <= tol and (-lo < -tol
-            or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0)) then
-          separated = true
-        end
-      end
-      top = top + 1
-      faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
-      faceOuter[top] = not (internal and internal[e])
-    end
-    ax, ay, e = bx, by, (i + 1) / 2
-  end
-  return top, separated
-end
-
--- Whether t lies outside every D of pairs 1 .. np widened by margin.
-local function pushFree(tx, ty, np, margin)
-  for p = 1, np do
-    local inside = true
-    for f = faceFirst[p], faceFirst[p + 1] - 1 do
-      if faceX[f] * tx + faceY[f] * ty >= faceC[f] + margin then
-        inside = false
-        break
-      end
-    end
-    if inside then return false end
-  end
-  return true
-end
-
--- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
-local function nearestFree(np, margin)
-  local best, bestX, bestY = huge, 0.0, 0.0
-  local last = faceFirst[np + 1] - 1
-  local lift = 1.25 * margin
-  for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
-    local d = faceC[f] + lift
-    if faceOuter[f] and abs(d) < best then
-      local tx, ty = faceX[f] * d, faceY[f] * d
-      if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
-    end
-  end
-  for f = 1, last - 1 do   -- crossings of two lines, each nearer than the best so far
-    local c1 = faceC[f] + lift
-    if abs(c1) < best then
-      local x1, y1 = faceX[f], faceY[f]
-      for g = f + 1, last do
-        local c2 = faceC[g] + lift
-        if abs(c2) < best then
-          local x2, y2 = faceX[g], faceY[g]
-          local det = x1 * y2 - y1 * x2
-          if det ~= 0 then
-            local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
-            local d = sqrt(tx * tx + ty * ty)
-            if d < best and pushFree(tx, ty, np, margin) then best, bestX, bestY = d, tx, ty end
-          end
-        end
-      end
-    end
-  end
-  return best, bestX, bestY
-end
-
--- The distance (largest coordinate gap) from the origin to the box of D for parts i and j.
-local function boxGap(i, j, k)
-  local a, b = 4 * i, 4 * j
-  local gx = max((boxes1[a - 3] - boxes2[b - 1]) * k, (boxes2[b - 3] - boxes1[a - 1]) * k, 0.0)
-  local gy = max((boxes1[a - 2] - boxes2[b]) * k, (boxes2[b - 2] - boxes1[a]) * k, 0.0)
-  return max(gx, gy)
-end
-
--- Whether the boxes of part i of the first shape and part j of the second overlap (not touch).
-local function boxesOverlap(i, j)
-  local a, b = 4 * i, 4 * j
-  return boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
-    and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
-end
-
--- Appends the faces of D for part p1 (number i of the first shape) and p2 (number j of the
--- second) as pair np + 1. Returns np, top and whether the parts overlap, decided exactly.
-local function addPair(p1, i, internal1, p2, j, internal2, k, np, top)
-  local n1, n2 = #p1, #p2
-  local turn1 = partTurn(p1, i, turns1, stamps1)
-  local turn2 = partTurn(p2, j, turns2, stamps2)
-  if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
-  local a, b = 4 * i, 4 * j
-  local w = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
-  local h = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
-  faceFirst[np + 1] = top + 1
-  local apart1, apart2
-  top, apart1 = addFaces(p1, n1, turn1, p2, n2, internal1, 1.0, k, w, h, top)
-  top, apart2 = addFaces(p2, n2, turn2, p1, n1, internal2, -1.0, k, w, h, top)
-  faceFirst[np + 2] = top + 1
-  return np + 1, top, not (apart1 or apart2)
-end
-
--- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
--- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
--- overlap, dx, dy, or false.
-function collideParts(fname, shape1, shape2, wantPush)
-  local parts1, parts2 = isParts(shape1), isParts(shape2)
-  local info1 = wantPush and parts1 and preparedParts[shape1]
-  local info2 = wantPush and parts2 and preparedParts[shape2]
-  local count1, size1, stale1, x1, y1, x2, y2 = scanShape(fname, "points1", shape1, parts1, boxes1, info1)
-  local count2, size2, stale2, x3, y3, x4, y4 = scanShape(fname, "points2", shape2, parts2, boxes2, info2)
-  callStamp = callStamp + 1
-  if not wantPush then
-    for i = 1, count1 do
-      for j = 1, count2 do
-        if boxesOverlap(i, j)
-          and overlapsConvex(parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
-          return true
-        end
-      end
-    end
-    return false
-  end
-  if parts1 and (not info1 or stale1) then info1 = prepareParts(shape1) end
-  if parts2 and (not info2 or stale2) then info2 = prepareParts(shape2) end
-  local size = max(size1, size2)
-  local k = 1.0
-  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
-  local extent = ((max(x2, x4) - min(x1, x3)) + (max(y2, y4) - min(y1, y3))) * k
-  local margin = 2^-47 * extent + 2^-52 * size * k   -- delta above: 64 eps E + 2 eps S
-  local np, top, hit = 0, 0, false
-  for i = 1, count1 do
-    local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
-    for j = 1, count2 do
-      if boxesOverlap(i, j) then
-        local overlaps
-        np, top, overlaps = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
-          info2 and info2.internal[j], k, np, top)
-        if overlaps then hit = true end
-      end
-    end
-  end
-  if not hit then return false end
-  local reach = -huge   -- the pairs whose box of D is nearer than reach are in already
-  local best, tx, ty = nearestFree(np, margin)
-  while true do
-    local nextReach = best + 4 * margin
-    if nextReach <= reach then break end
-    local before = np
-    for i = 1, count1 do
-      local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
-      for j = 1, count2 do
-        if boxes1[4 * i - 3] <= boxes1[4 * i - 1] and boxes2[4 * j - 3] <= boxes2[4 * j - 1]
-          and not boxesOverlap(i, j) then
-          local gap = boxGap(i, j, k)
-          if gap >= reach and gap < nextReach then
-            np, top = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
-              info2 and info2.internal[j], k, np, top)
-          end
-        end
-      end
-    end
-    reach = nextReach
-    if np == before then break end
-    -- More pairs can only lengthen the least push: if the best point is still free, it stays.
-    if best == huge or not pushFree(tx, ty, np, margin) then best, tx, ty = nearestFree(np, margin) end
-  end
-  if best == huge then
-    -- No candidate checked free (not expected): 2 E along any direction clears every D.
-    best, tx, ty = 2 * extent, faceX[1] * 2 * extent, faceY[1] * 2 * extent
-  end
-  return best / k, tx / k + 0.0, ty / k + 0.0
-end
-
--- Circles. A circle (c, r) whose centre moves by t meets part A exactly when c + t lies within
--- r of A: t inside D = (A - c) grown by r, a convex shape bounded by the edges' lines moved out
--- by r and arcs of radius r around the vertices. The least push is again the point nearest the
--- origin outside every D. On the boundary of the union it is the foot of the perpendicular on
--- a moved edge line, or the point of an arc nearest the origin (straight away from a vertex),
--- or a crossing of two of those pieces: line and line, line and arc, arc and arc. Each candidate
--- is kept when it is farther than r + delta from every part (the same margins as above, with
--- the circle's box in E and S), and the nearest kept one is the push.
-
-local faceAX, faceAY, faceBX, faceBY = {}, {}, {}, {}   -- edge ends relative to the centre
-local faceQ = {}                                        -- |faceAX, faceAY|: the vertex's distance
-
--- Appends the edges of part (area sign turn) as faces relative to the centre (cx, cy), all
--- scaled by k: the outward unit normal, the signed distance faceC of the edge's line from the
--- centre (u.t - faceC is how far t lies beyond it) and the edge's ends. Returns the last index.
-local function addCircleFaces(part, n, turn, internal, cx, cy, k, top)
-  local e = n / 2   -- the edge from the last vertex to the first comes first
-  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
-  local kcx, kcy = cx * k, cy * k
-  for i = 1, n - 1, 2 do
-    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = unit((by - ay) * turn, (ax - bx) * turn)   -- outward
-      local qax, qay = ax * k - kcx, ay * k - kcy
-      top = top + 1
-      faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
-      faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
-      faceQ[top] = sqrt(qax * qax + qay * qay)
-      faceOuter[top] = not (internal and internal[e])
-    end
-    ax, ay, e = bx, by, (i + 1) / 2
-  end
-  return top
-end
-
--- Whether t lies at least `need` from the part whose faces are first .. last.
-local function farFromPart(tx, ty, first, last, need)
-  local beyond = -huge
-  for f = first, last do beyond = max(beyond, faceX[f] * tx + faceY[f] * ty - faceC[f]) end
-  if beyond >= need then return true end
-  if beyond <= 0 then return false end   -- inside the part
-  -- outside: the nearest point lies on an edge whose line t is beyond
-  local needSq = need * need
-  for f = first, last do
-    if faceX[f] * tx + faceY[f] * ty - faceC[f] > 0 then
-      local ax, ay = faceAX[f], faceAY[f]
-      local ex, ey = faceBX[f] - ax, faceBY[f] - ay
-      local along = ((tx - ax) * ex + (ty - ay) * ey) / (ex * ex + ey * ey)
-      if along < 0 then along = 0 elseif along > 1 then along = 1 end
-      local dx, dy = tx - (ax + along * ex), ty - (ay + along * ey)
-      if dx * dx + dy * dy < needSq then return false end
-    end
-  end
-  return true
-end
-
--- Whether t lies at least need from every part 1 .. np.
-local function circleFree(tx, ty, np, need)
-  for p = 1, np do
-    if not farFromPart(tx, ty, faceFirst[p], faceFirst[p + 1] - 1, need) then return false end
-  end
-  return true
-end
-
--- Keeps candidate t when it is nearer than best and free.
-local function tryCircle(tx, ty, np, need, best, bestX, bestY)
-  local d = sqrt(tx * tx + ty * ty)
-  if d < best and circleFree(tx, ty, np, need) then return d, tx, ty end
-  return best, bestX, bestY
-end
-
--- The nearest free candidate for a circle of (scaled) radius r among parts 1 .. np.
-local function nearestFreeCircle(np, r, margin)
-  local best, bestX, bestY = huge, 0.0, 0.0
-  local last = faceFirst[np + 1] - 1
-  local reach, need = r + 1.25 * margin, r + margin   -- lines and arcs moved out by lift
-  for f = 1, last do   -- feet on the outer edges' moved lines
-    local d = faceC[f] + reach
-    if faceOuter[f] and abs(d) < best then
-      best, bestX, bestY = tryCircle(faceX[f] * d, faceY[f] * d, np, need, best, bestX, bestY)
-    end
-  end
-  for f = 1, last do   -- straight away from each vertex (the start of each edge)
-    local q = faceQ[f]
-    if q > 0 and abs(q - reach) < best then
-      local s = 1 - reach / q
-      best, bestX, bestY = tryCircle(faceAX[f] * s, faceAY[f] * s, np, need, best, bestX, bestY)
-    end
-  end
-  -- Crossings. A point on a line lies at least |its constant| from the origin, one on an arc at
-  -- least |q - reach|: pieces no nearer than the best so far are skipped.
-  for f = 1, last do
-    local c1, x1, y1 = faceC[f] + reach, faceX[f], faceY[f]
-    local qx, qy = faceAX[f], faceAY[f]
-    local lineNear, arcNear = abs(c1) < best, abs(faceQ[f] - reach) < best
-    if lineNear or arcNear then
-      for g = 1, last do
-        local c2 = faceC[g] + reach
-        if lineNear and g > f and abs(c2) < best then   -- line and line
-          local x2, y2 = faceX[g], faceY[g]
-          local det = x1 * y2 - y1 * x2
-          if det ~= 0 then
-            best, bestX, bestY = tryCircle((c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det,
-              np, need, best, bestX, bestY)
-          end
-        end
-        local px, py = faceAX[g], faceAY[g]
-        if abs(faceQ[g] - reach) < best then
-          if lineNear then   -- line f and the arc around vertex g
-            local h = c1 - (x1 * px + y1 * py)   -- from the vertex to the line, along the normal
-            if abs(h) < reach then
-              local w = sqrt(reach * reach - h * h)
-              local mx, my = px + x1 * h, py + y1 * h
-              best, bestX, bestY = tryCircle(mx - y1 * w, my + x1 * w, np, need, best, bestX, bestY)
-              best, bestX, bestY = tryCircle(mx + y1 * w, my - x1 * w, np, need, best, bestX, bestY)
-            end
-          end
-          if arcNear and g > f then   -- the arcs around vertices f and g
-            local ex, ey = px - qx, py - qy
-            local gap = sqrt(ex * ex + ey * ey)
-            if gap > 0 and gap < 2 * reach then
-              local w = sqrt(reach * reach - gap * gap / 4) / gap
-              local mx, my = (qx + px) / 2, (qy + py) / 2
-              best, bestX, bestY = tryCircle(mx - ey * w, my + ex * w, np, need, best, bestX, bestY)
-              best, bestX, bestY = tryCircle(mx + ey * w, my - ex * w, np, need, best, bestX, bestY)
-            end
-          end
-        end
-      end
-    end
-  end
-  return best, bestX, bestY
-end
-
--- The Chebyshev distance from the origin to the box of D for part i of boxes1 and a circle.
-local function circleBoxGap(i, cx, cy, r, k)
-  local a = 4 * i
-  local gx = max((boxes1[a - 3] - cx - r) * k, (cx - r - boxes1[a - 1]) * k, 0.0)
-  local gy = max((boxes1[a - 2] - cy - r) * k, (cy - r - boxes1[a]) * k, 0.0)
-  return max(gx, gy)
-end
-
--- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
-function collideCircleParts(fname, shape, cx, cy, r)
-  checkFinite(cx, fname, "cx", 4)
-  checkFinite(cy, fname, "cy", 4)
-  checkFinite(r, fname, "radius", 4)
-  if r < 0 then error(("%s: radius must not be negative, got %s"):format(fname, tostring(r)), 3) end
-  local info = preparedParts[shape]
-  local count, size, stale, left, top, right, bottom = scanShape(fname, "points", shape, true, boxes1, info)
-  if stale or not info then info = prepareParts(shape) end
-  cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
-  if r == 0 then return false end
-  callStamp = callStamp + 1
-  size = max(size, abs(cx) + r, abs(cy) + r)
-  local k = 1.0
-  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
-  local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
-  local margin = 2^-47 * extent + 2^-52 * size * k   -- as for polygons: 64 eps E + 2 eps S
-  local np, last, hit = 0, 0, false
-  for i = 1, count do
-    if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
-        and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
-      local part = shape[i]
-      local n = #part
-      local turn = partTurn(part, i, turns1, stamps1)
-      if turn ~= 0 then
-        if circleCollision(part, n, cx, cy, r) then hit = true end
-        np = np + 1
-        faceFirst[np] = last + 1
-        last = addCircleFaces(part, n, turn, info.internal[i], cx, cy, k, last)
-        faceFirst[np + 1] = last + 1
-      end
-    end
-  end
-  if not hit then return false end
-  local reach = -huge   -- parts whose grown box is nearer than reach are in already
-  local best, tx, ty = nearestFreeCircle(np, r * k, margin)
-  while true do
-    local nextReach = best + 4 * margin
-    if nextReach <= reach then break end
-    local before = np
-    for i = 1, count do
-      local a = 4 * i
-      if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
-          and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
-        local gap = circleBoxGap(i, cx, cy, r, k)
-        local turn = gap >= reach and gap < nextReach and partTurn(shape[i], i, turns1, stamps1)
-        if turn and turn ~= 0 then
-          np = np + 1
-          faceFirst[np] = last + 1
-          last = addCircleFaces(shape[i], #shape[i], turn, info.internal[i], cx, cy, k, last)
-          faceFirst[np + 1] = last + 1
-        end
-      end
-    end
-    reach = nextReach
-    if np == before then break end
-    -- More parts can only lengthen the least move: if the best point is still free, it stays.
-    if best == huge or not circleFree(tx, ty, np, r * k + margin) then
-      best, tx, ty = nearestFreeCircle(np, r * k, margin)
-    end
-  end
-  if best == huge then
-    -- No candidate checked free (not expected): 2 E along any direction clears every D.
-    best, tx, ty = 2 * extent, 0.0, -2 * extent
-  end
-  return best / k, tx / k + 0.0, ty / k + 0.0
-end
-
---------------------------------------------------------------------------------------------------
 -- Triangulation and convex parts
 --------------------------------------------------------------------------------------------------
 -- Ear clipping over one ring of vertex nodes: holes are first joined to the outer ring by a
@@ -2497,6 +1892,611 @@ function polygon.polygonConvexParts(points, holes)
   end
   releaseNodes()
   return out
+end
+
+--------------------------------------------------------------------------------------------------
+-- Compound shapes: lists of convex parts
+--------------------------------------------------------------------------------------------------
+-- polygonsCollide, polygonsCollideV and polygonCircleCollideV also take, for either shape, a list
+-- of convex parts {part1, part2, ...}: what polygonConvexParts returns, or parts built by hand.
+-- A flat array holds a number at [1], a list of parts a table.
+--
+-- Overlap. Two shapes overlap when some part of one overlaps some part of the other, each pair
+-- decided exactly (touching is not colliding) after a bounding-box test per pair.
+--
+-- The push. Moving the second shape by t makes part A of the first and part B of the second
+-- overlap exactly when t lies inside D = A - B = {a - b}, a convex polygon with one edge per edge
+-- of A and of B. An edge of A from vertex a, with outward unit normal u, bounds D by the open
+-- half-plane u.t < c, c = -min over the vertices v of B of u.(v - a) (how far B reaches past the
+-- edge); an edge of B from b, outward normal u, by -u.t < c, c = -min over the vertices w of A
+-- of u.(w - b). The least push is the point nearest the origin that lies in no open D (over all
+-- pairs of parts). That point is on the boundary of the union of the D, so on an edge of one D:
+-- inside that edge it is the foot of the perpendicular from the origin to the edge's line, else
+-- it is the end of a piece of the edge, where the edge's line crosses another (of the same D, a
+-- corner, or of another D, where two D cross). So the candidates are the feet and the crossings,
+-- and the push is the nearest candidate outside every D: the true least translation, up to the
+-- margin below. Feet need not be tried on an edge shared with another part of the same shape
+-- (internal, see preparedParts): such a foot, if on the edge, has the neighbouring part
+-- overlapping (the other part reaches on past the shared edge, as a half-disc around every point
+-- inside it) and so is never free; off the edge it is on another line, found there. Crossings use
+-- every line, as an end of an internal edge can be a corner of the union.
+--
+-- Which pairs. A pair matters only if its D comes nearer the origin than the push found so far,
+-- and D lies in the box [A's box - B's box]: the pairs whose boxes overlap come first, then the
+-- pairs whose box of D is nearer than the best push found, round after round (each round can
+-- only lengthen the push: a nearer free point would have been free among fewer pairs).
+--
+-- Margin: one push separates. The faces are computed in floating point and the moved vertices
+-- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
+-- are taken on the lines moved out by lift = 1.25 delta (a quarter of delta covers their own
+-- rounding, a few eps E). With E the width plus the height of the box around both shapes and S
+-- their largest coordinate magnitude, every D lies in the box of D's, within 1.5 E of the origin,
+-- so every |v - a| <= E, every push |t| < 1.5 E (a point farther out is free), and the moved
+-- coordinates stay below S + 1.5 E. Errors of the quantities the test u.t >= c + delta compares,
+-- in eps: the unit normal from rounded differences (eps each, then unit's 3) turns by at most
+-- 5 eps, moving u.(v - a) by 5 E and u.t by 7.5 E; the projection rounds by 3 E; the test's own
+-- sums and products by 3 (1.5 E + E) = 7.5 E: 23 E in all, below 64 E, so a candidate found
+-- outside the widened D is in truth at distance 41 eps E or more from D: part B moved by it
+-- exactly keeps that distance from A. Rounding moves each of its coordinates by at most
+-- eps (S + 1.5 E), each vertex by 1.42 eps (S + 1.5 E), so the rounded part (the hull of the
+-- rounded vertices) lies within that of the exact one: still apart when 41 eps E + 2 eps S, the
+-- rest of delta = 64 eps E + 2 eps S, exceeds 1.42 eps (S + 1.5 E). So no pair of parts collides
+-- after the rounded move: one push separates. The push exceeds the least translation by about
+-- lift (80 eps E + 2.5 eps S) on a face, lift / sin(angle / 2) at a crossing of lines meeting at
+-- an angle. Coordinates beyond 2^500 or below 2^-400 are scaled by a power of two k first
+-- (exact), so no product overflows or underflows.
+
+-- Whether shape is a list of parts rather than a flat array of coordinates (declared before the
+-- public collision functions, which dispatch on it).
+function isParts(shape)
+  return type(shape) == "table" and type(shape[1]) == "table"
+end
+
+-- The preparation each list of parts gets once, on first use, kept while the list lives:
+-- internal[k][e] is true when the edge of part k from vertex e to vertex e + 1 (the last to the
+-- first) is covered by edges of other parts running the opposite way along the same line (shared
+-- with the neighbours, whole or in pieces). Recomputed when the number of parts or of a part's
+-- coordinates changes. Moving a shape keeps it right; a stale table after other edits costs at
+-- most a longer push (a foot skipped) or some time (a foot tried), never a wrong one, as every
+-- candidate is checked against every part.
+local preparedParts = setmetatable({}, { __mode = "k" })
+
+-- The interval an edge covers along its line: on x unless the line is vertical (exact).
+local function edgeSpan(ax, ay, bx, by, onX)
+  if onX then return min(ax, bx), max(ax, bx) end
+  return min(ay, by), max(ay, by)
+end
+
+-- Whether the spans in `covers` (pairs lo, hi, any order) cover [lo, hi].
+local function covered(covers, lo, hi)
+  table.sort(covers, function(p, q) return p[1] < q[1] end)
+  local reach = lo
+  for _, span in ipairs(covers) do
+    if span[1] > reach then return false end
+    if span[2] > reach then reach = span[2] end
+    if reach >= hi then return true end
+  end
+  return reach >= hi
+end
+
+-- Builds the preparation of a list of parts (allocates: load time, or after the parts changed).
+local function prepareParts(parts)
+  local count = #parts
+  local info = { count = count, lengths = {}, internal = {} }
+  local edges = {}
+  for k = 1, count do
+    local part = parts[k]
+    local n = #part
+    info.lengths[k], info.internal[k] = n, {}
+    for e = 1, n / 2 do
+      local j = e % (n / 2) + 1
+      local ax, ay = part[2 * e - 1] + 0.0, part[2 * e] + 0.0
+      local bx, by = part[2 * j - 1] + 0.0, part[2 * j] + 0.0
+      if ax ~= bx or ay ~= by then
+        edges[#edges + 1] = { k = k, e = e, ax = ax, ay = ay, bx = bx, by = by,
+                              xmin = min(ax, bx), xmax = max(ax, bx), covers = {} }
+      end
+    end
+  end
+  -- sweep over the edges in order of their smallest x: only edges whose x ranges meet can share
+  table.sort(edges, function(p, q) return p.xmin < q.xmin end)
+  for s = 1, #edges do
+    local E = edges[s]
+    local t = s + 1
+    while edges[t] and edges[t].xmin <= E.xmax do
+      local T = edges[t]
+      if T.k ~= E.k and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.ax, T.ay) == 0
+        and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.bx, T.by) == 0 then
+        local onX = E.ax ~= E.bx   -- then T, on the same line, is not vertical either
+        local forwardE = onX and E.bx > E.ax or not onX and E.by > E.ay
+        local forwardT = onX and T.bx > T.ax or not onX and T.by > T.ay
+        if forwardE ~= forwardT then
+          local elo, ehi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
+          local tlo, thi = edgeSpan(T.ax, T.ay, T.bx, T.by, onX)
+          if tlo < ehi and elo < thi then
+            E.covers[#E.covers + 1] = { tlo, thi }
+            T.covers[#T.covers + 1] = { elo, ehi }
+          end
+        end
+      end
+      t = t + 1
+    end
+  end
+  for _, E in ipairs(edges) do
+    if #E.covers > 0 then
+      local onX = E.ax ~= E.bx
+      local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
+      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = true end
+    end
+  end
+  preparedParts[parts] = info
+  return info
+end
+
+-- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
+local boxes1, boxes2 = {}, {}      -- part boxes: xmin, ymin, xmax, ymax at 4k - 3 .. 4k
+local turns1, turns2 = {}, {}      -- part area signs, valid when stamps[k] == callStamp
+local stamps1, stamps2 = {}, {}
+local callStamp = 0
+local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
+
+-- The part count of a shape, its boxes in `boxes`, the largest coordinate magnitude, whether
+-- `info` (its preparation, if any) no longer matches its parts' lengths, and the box around all
+-- parts (xmin, ymin, xmax, ymax). Raises the
+-- argument errors at the caller of the public function (level 4).
+local function scanShape(fname, argname, shape, parts, boxes, info)
+  if type(shape) ~= "table" then
+    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), 4)
+  end
+  local count = parts and #shape or 1
+  local stale = info and info.count ~= count
+  local size, finite = 0.0, 0.0
+  local left, top, right, bottom = huge, huge, -huge, -huge
+  for k = 1, count do
+    local part = parts and shape[k] or shape
+    if type(part) ~= "table" then
+      error(("%s: %s[%d] must be a table, got %s"):format(fname, argname, k, type(part)), 4)
+    end
+    local n = #part
+    if n % 2 ~= 0 then
+      error(("%s: %s must hold an even number of coordinates, got %d")
+        :format(fname, parts and ("%s[%d]"):format(argname, k) or argname, n), 4)
+    end
+    if info and info.lengths[k] ~= n then stale = true end
+    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    for i = 1, n - 1, 2 do
+      local x, y = part[i] + 0.0, part[i + 1] + 0.0
+      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
+      if x < xmin then xmin = x end
+      if x > xmax then xmax = x end
+      if y < ymin then ymin = y end
+      if y > ymax then ymax = y end
+    end
+    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+    local b = 4 * k
+    boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
+    if n >= 6 then
+      size = max(size, -xmin, xmax, -ymin, ymax)
+      left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
+    end
+  end
+  if finite ~= 0 then
+    error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+  end
+  return count, size, stale, left, top, right, bottom
+end
+
+-- The area sign of part k (1, -1 or 0: signs, never magnitudes, are multiplied), once per call.
+local function partTurn(part, k, turns, stamps)
+  if stamps[k] ~= callStamp then
+    local orientation = areaSign(part, #part)
+    stamps[k], turns[k] = callStamp, orientation > 0 and 1.0 or orientation < 0 and -1.0 or 0.0
+  end
+  return turns[k]
+end
+
+-- Whether two convex parts overlap (exact), by the SAT engine; non-finite input was caught.
+local function overlapsConvex(p1, p2)
+  return convexPenetration(p1, #p1, p2, #p2, true) and true or false
+end
+
+-- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
+-- part give (sense 1 for a part of the first shape, -1 for one of the second, whose outward
+-- normal points the other way in t), with `other` the part it is paired with. Coordinates are
+-- scaled by k. Returns the last index used and whether some edge separates the two parts,
+-- decided exactly (w, h bound the scaled coordinate differences, for projectionTolerance).
+local function addFaces(edges, ne, orientation, other, no, internal, sense, k, w, h, top)
+  local separated = false
+  local e = ne / 2   -- the edge from the last vertex to the first comes first
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  for i = 1, ne - 1, 2 do
+    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = unit((by - ay) * orientation, (ax - bx) * orientation)   -- outward
+      local kax, kay = ax * k, ay * k
+      local lo = huge
+      for j = 1, no - 1, 2 do
+        local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+        if s < lo then lo = s end
+      end
+      if not separated then
+        local tol = projectionTolerance(w, h, ux, uy)
+        if -lo <= tol and (-lo < -tol
+            or clearOfLine(ax, ay, bx, by, ax, ay, orientation, other, no, 0.0, 0.0)) then
+          separated = true
+        end
+      end
+      top = top + 1
+      faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
+      faceOuter[top] = not (internal and internal[e])
+    end
+    ax, ay, e = bx, by, (i + 1) / 2
+  end
+  return top, separated
+end
+
+-- Whether t lies outside every D of pairs 1 .. np widened by margin.
+local function pushFree(tx, ty, np, margin)
+  for p = 1, np do
+    local inside = true
+    for f = faceFirst[p], faceFirst[p + 1] - 1 do
+      if faceX[f] * tx + faceY[f] * ty >= faceC[f] + margin then
+        inside = false
+        break
+      end
+    end
+    if inside then return false end
+  end
+  return true
+end
+
+-- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
+local function nearestFree(np, margin)
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local last = faceFirst[np + 1] - 1
+  local lift = 1.25 * margin
+  for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
+    local d = faceC[f] + lift
+    if faceOuter[f] and abs(d) < best then
+      local tx, ty = faceX[f] * d, faceY[f] * d
+      if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+    end
+  end
+  for f = 1, last - 1 do   -- crossings of two lines, each nearer than the best so far
+    local c1 = faceC[f] + lift
+    if abs(c1) < best then
+      local x1, y1 = faceX[f], faceY[f]
+      for g = f + 1, last do
+        local c2 = faceC[g] + lift
+        if abs(c2) < best then
+          local x2, y2 = faceX[g], faceY[g]
+          local det = x1 * y2 - y1 * x2
+          if det ~= 0 then
+            local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
+            local d = sqrt(tx * tx + ty * ty)
+            if d < best and pushFree(tx, ty, np, margin) then best, bestX, bestY = d, tx, ty end
+          end
+        end
+      end
+    end
+  end
+  return best, bestX, bestY
+end
+
+-- The distance (largest coordinate gap) from the origin to the box of D for parts i and j.
+local function boxGap(i, j, k)
+  local a, b = 4 * i, 4 * j
+  local gx = max((boxes1[a - 3] - boxes2[b - 1]) * k, (boxes2[b - 3] - boxes1[a - 1]) * k, 0.0)
+  local gy = max((boxes1[a - 2] - boxes2[b]) * k, (boxes2[b - 2] - boxes1[a]) * k, 0.0)
+  return max(gx, gy)
+end
+
+-- Whether the boxes of part i of the first shape and part j of the second overlap (not touch).
+local function boxesOverlap(i, j)
+  local a, b = 4 * i, 4 * j
+  return boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
+    and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
+end
+
+-- Appends the faces of D for part p1 (number i of the first shape) and p2 (number j of the
+-- second) as pair np + 1. Returns np, top and whether the parts overlap, decided exactly.
+local function addPair(p1, i, internal1, p2, j, internal2, k, np, top)
+  local n1, n2 = #p1, #p2
+  local turn1 = partTurn(p1, i, turns1, stamps1)
+  local turn2 = partTurn(p2, j, turns2, stamps2)
+  if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  local a, b = 4 * i, 4 * j
+  local w = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
+  local h = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
+  faceFirst[np + 1] = top + 1
+  local apart1, apart2
+  top, apart1 = addFaces(p1, n1, turn1, p2, n2, internal1, 1.0, k, w, h, top)
+  top, apart2 = addFaces(p2, n2, turn2, p1, n1, internal2, -1.0, k, w, h, top)
+  faceFirst[np + 2] = top + 1
+  return np + 1, top, not (apart1 or apart2)
+end
+
+-- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
+-- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
+-- overlap, dx, dy, or false.
+function collideParts(fname, shape1, shape2, wantPush)
+  local parts1, parts2 = isParts(shape1), isParts(shape2)
+  local info1 = wantPush and parts1 and preparedParts[shape1]
+  local info2 = wantPush and parts2 and preparedParts[shape2]
+  local count1, size1, stale1, x1, y1, x2, y2 = scanShape(fname, "points1", shape1, parts1, boxes1, info1)
+  local count2, size2, stale2, x3, y3, x4, y4 = scanShape(fname, "points2", shape2, parts2, boxes2, info2)
+  callStamp = callStamp + 1
+  if not wantPush then
+    for i = 1, count1 do
+      for j = 1, count2 do
+        if boxesOverlap(i, j)
+          and overlapsConvex(parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
+          return true
+        end
+      end
+    end
+    return false
+  end
+  if parts1 and (not info1 or stale1) then info1 = prepareParts(shape1) end
+  if parts2 and (not info2 or stale2) then info2 = prepareParts(shape2) end
+  local size = max(size1, size2)
+  local k = 1.0
+  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  local extent = ((max(x2, x4) - min(x1, x3)) + (max(y2, y4) - min(y1, y3))) * k
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- delta above: 64 eps E + 2 eps S
+  local np, top, hit = 0, 0, false
+  for i = 1, count1 do
+    local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
+    for j = 1, count2 do
+      if boxesOverlap(i, j) then
+        local overlaps
+        np, top, overlaps = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
+          info2 and info2.internal[j], k, np, top)
+        if overlaps then hit = true end
+      end
+    end
+  end
+  if not hit then return false end
+  local reach = -huge   -- the pairs whose box of D is nearer than reach are in already
+  local best, tx, ty = nearestFree(np, margin)
+  while true do
+    local nextReach = best + 4 * margin
+    if nextReach <= reach then break end
+    local before = np
+    for i = 1, count1 do
+      local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
+      for j = 1, count2 do
+        if boxes1[4 * i - 3] <= boxes1[4 * i - 1] and boxes2[4 * j - 3] <= boxes2[4 * j - 1]
+          and not boxesOverlap(i, j) then
+          local gap = boxGap(i, j, k)
+          if gap >= reach and gap < nextReach then
+            np, top = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
+              info2 and info2.internal[j], k, np, top)
+          end
+        end
+      end
+    end
+    reach = nextReach
+    if np == before then break end
+    -- More pairs can only lengthen the least push: if the best point is still free, it stays.
+    if best == huge or not pushFree(tx, ty, np, margin) then best, tx, ty = nearestFree(np, margin) end
+  end
+  if best == huge then
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, faceX[1] * 2 * extent, faceY[1] * 2 * extent
+  end
+  return best / k, tx / k + 0.0, ty / k + 0.0
+end
+
+-- Circles. A circle (c, r) whose centre moves by t meets part A exactly when c + t lies within
+-- r of A: t inside D = (A - c) grown by r, a convex shape bounded by the edges' lines moved out
+-- by r and arcs of radius r around the vertices. The least push is again the point nearest the
+-- origin outside every D. On the boundary of the union it is the foot of the perpendicular on
+-- a moved edge line, or the point of an arc nearest the origin (straight away from a vertex),
+-- or a crossing of two of those pieces: line and line, line and arc, arc and arc. Each candidate
+-- is kept when it is farther than r + delta from every part (the same margins as above, with
+-- the circle's box in E and S), and the nearest kept one is the push.
+
+local faceAX, faceAY, faceBX, faceBY = {}, {}, {}, {}   -- edge ends relative to the centre
+local faceQ = {}                                        -- |faceAX, faceAY|: the vertex's distance
+
+-- Appends the edges of part (area sign orientation) as faces relative to the centre (cx, cy), all
+-- scaled by k: the outward unit normal, the signed distance faceC of the edge's line from the
+-- centre (u.t - faceC is how far t lies beyond it) and the edge's ends. Returns the last index.
+local function addCircleFaces(part, n, orientation, internal, cx, cy, k, top)
+  local e = n / 2   -- the edge from the last vertex to the first comes first
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  local kcx, kcy = cx * k, cy * k
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = unit((by - ay) * orientation, (ax - bx) * orientation)   -- outward
+      local qax, qay = ax * k - kcx, ay * k - kcy
+      top = top + 1
+      faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
+      faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
+      faceQ[top] = sqrt(qax * qax + qay * qay)
+      faceOuter[top] = not (internal and internal[e])
+    end
+    ax, ay, e = bx, by, (i + 1) / 2
+  end
+  return top
+end
+
+-- Whether t lies at least `need` from the part whose faces are first .. last.
+local function farFromPart(tx, ty, first, last, need)
+  local beyond = -huge
+  for f = first, last do beyond = max(beyond, faceX[f] * tx + faceY[f] * ty - faceC[f]) end
+  if beyond >= need then return true end
+  if beyond <= 0 then return false end   -- inside the part
+  -- outside: the nearest point lies on an edge whose line t is beyond
+  local needSq = need * need
+  for f = first, last do
+    if faceX[f] * tx + faceY[f] * ty - faceC[f] > 0 then
+      local ax, ay = faceAX[f], faceAY[f]
+      local ex, ey = faceBX[f] - ax, faceBY[f] - ay
+      local along = ((tx - ax) * ex + (ty - ay) * ey) / (ex * ex + ey * ey)
+      if along < 0 then along = 0 elseif along > 1 then along = 1 end
+      local dx, dy = tx - (ax + along * ex), ty - (ay + along * ey)
+      if dx * dx + dy * dy < needSq then return false end
+    end
+  end
+  return true
+end
+
+-- Whether t lies at least need from every part 1 .. np.
+local function circleFree(tx, ty, np, need)
+  for p = 1, np do
+    if not farFromPart(tx, ty, faceFirst[p], faceFirst[p + 1] - 1, need) then return false end
+  end
+  return true
+end
+
+-- Keeps candidate t when it is nearer than best and free.
+local function tryCircle(tx, ty, np, need, best, bestX, bestY)
+  local d = sqrt(tx * tx + ty * ty)
+  if d < best and circleFree(tx, ty, np, need) then return d, tx, ty end
+  return best, bestX, bestY
+end
+
+-- The nearest free candidate for a circle of (scaled) radius r among parts 1 .. np.
+local function nearestFreeCircle(np, r, margin)
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local last = faceFirst[np + 1] - 1
+  local reach, need = r + 1.25 * margin, r + margin   -- lines and arcs moved out by lift
+  for f = 1, last do   -- feet on the outer edges' moved lines
+    local d = faceC[f] + reach
+    if faceOuter[f] and abs(d) < best then
+      best, bestX, bestY = tryCircle(faceX[f] * d, faceY[f] * d, np, need, best, bestX, bestY)
+    end
+  end
+  for f = 1, last do   -- straight away from each vertex (the start of each edge)
+    local q = faceQ[f]
+    if q > 0 and abs(q - reach) < best then
+      local s = 1 - reach / q
+      best, bestX, bestY = tryCircle(faceAX[f] * s, faceAY[f] * s, np, need, best, bestX, bestY)
+    end
+  end
+  -- Crossings. A point on a line lies at least |its constant| from the origin, one on an arc at
+  -- least |q - reach|: pieces no nearer than the best so far are skipped.
+  for f = 1, last do
+    local c1, x1, y1 = faceC[f] + reach, faceX[f], faceY[f]
+    local qx, qy = faceAX[f], faceAY[f]
+    local lineNear, arcNear = abs(c1) < best, abs(faceQ[f] - reach) < best
+    if lineNear or arcNear then
+      for g = 1, last do
+        local c2 = faceC[g] + reach
+        if lineNear and g > f and abs(c2) < best then   -- line and line
+          local x2, y2 = faceX[g], faceY[g]
+          local det = x1 * y2 - y1 * x2
+          if det ~= 0 then
+            best, bestX, bestY = tryCircle((c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det,
+              np, need, best, bestX, bestY)
+          end
+        end
+        local px, py = faceAX[g], faceAY[g]
+        if abs(faceQ[g] - reach) < best then
+          if lineNear then   -- line f and the arc around vertex g
+            local h = c1 - (x1 * px + y1 * py)   -- from the vertex to the line, along the normal
+            if abs(h) < reach then
+              local w = sqrt(reach * reach - h * h)
+              local mx, my = px + x1 * h, py + y1 * h
+              best, bestX, bestY = tryCircle(mx - y1 * w, my + x1 * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + y1 * w, my - x1 * w, np, need, best, bestX, bestY)
+            end
+          end
+          if arcNear and g > f then   -- the arcs around vertices f and g
+            local ex, ey = px - qx, py - qy
+            local gap = sqrt(ex * ex + ey * ey)
+            if gap > 0 and gap < 2 * reach then
+              local w = sqrt(reach * reach - gap * gap / 4) / gap
+              local mx, my = (qx + px) / 2, (qy + py) / 2
+              best, bestX, bestY = tryCircle(mx - ey * w, my + ex * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + ey * w, my - ex * w, np, need, best, bestX, bestY)
+            end
+          end
+        end
+      end
+    end
+  end
+  return best, bestX, bestY
+end
+
+-- The Chebyshev distance from the origin to the box of D for part i of boxes1 and a circle.
+local function circleBoxGap(i, cx, cy, r, k)
+  local a = 4 * i
+  local gx = max((boxes1[a - 3] - cx - r) * k, (cx - r - boxes1[a - 1]) * k, 0.0)
+  local gy = max((boxes1[a - 2] - cy - r) * k, (cy - r - boxes1[a]) * k, 0.0)
+  return max(gx, gy)
+end
+
+-- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
+function collideCircleParts(fname, shape, cx, cy, r)
+  checkFinite(cx, fname, "cx", 4)
+  checkFinite(cy, fname, "cy", 4)
+  checkFinite(r, fname, "radius", 4)
+  if r < 0 then error(("%s: radius must not be negative, got %s"):format(fname, tostring(r)), 3) end
+  local info = preparedParts[shape]
+  local count, size, stale, left, top, right, bottom = scanShape(fname, "points", shape, true, boxes1, info)
+  if stale or not info then info = prepareParts(shape) end
+  cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
+  if r == 0 then return false end
+  callStamp = callStamp + 1
+  size = max(size, abs(cx) + r, abs(cy) + r)
+  local k = 1.0
+  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- as for polygons: 64 eps E + 2 eps S
+  local np, last, hit = 0, 0, false
+  for i = 1, count do
+    if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
+        and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
+      local part = shape[i]
+      local n = #part
+      local orientation = partTurn(part, i, turns1, stamps1)
+      if orientation ~= 0 then
+        if circleCollision(part, n, cx, cy, r) then hit = true end
+        np = np + 1
+        faceFirst[np] = last + 1
+        last = addCircleFaces(part, n, orientation, info.internal[i], cx, cy, k, last)
+        faceFirst[np + 1] = last + 1
+      end
+    end
+  end
+  if not hit then return false end
+  local reach = -huge   -- parts whose grown box is nearer than reach are in already
+  local best, tx, ty = nearestFreeCircle(np, r * k, margin)
+  while true do
+    local nextReach = best + 4 * margin
+    if nextReach <= reach then break end
+    local before = np
+    for i = 1, count do
+      local a = 4 * i
+      if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
+          and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+        local gap = circleBoxGap(i, cx, cy, r, k)
+        local orientation = gap >= reach and gap < nextReach and partTurn(shape[i], i, turns1, stamps1)
+        if orientation and orientation ~= 0 then
+          np = np + 1
+          faceFirst[np] = last + 1
+          last = addCircleFaces(shape[i], #shape[i], orientation, info.internal[i], cx, cy, k, last)
+          faceFirst[np + 1] = last + 1
+        end
+      end
+    end
+    reach = nextReach
+    if np == before then break end
+    -- More parts can only lengthen the least move: if the best point is still free, it stays.
+    if best == huge or not circleFree(tx, ty, np, r * k + margin) then
+      best, tx, ty = nearestFreeCircle(np, r * k, margin)
+    end
+  end
+  if best == huge then
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, 0.0, -2 * extent
+  end
+  return best / k, tx / k + 0.0, ty / k + 0.0
 end
 
 --------------------------------------------------------------------------------------------------

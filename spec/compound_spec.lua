@@ -266,3 +266,36 @@ describe("compound shapes against circles", function()
       "polygonCircleCollideV: points[2] must be a table, got number")
   end)
 end)
+
+describe("compound shapes from polygonConvexParts", function()
+  it("push a crate out of the issue's U by 5, out of its corner by (5, -10)", function()
+    local u = { 0, 0, 50, 0, 50, 200, 250, 200, 250, 0, 300, 0, 300, 250, 0, 250 }
+    local parts1 = assert(polygon.polygonConvexParts(u))
+    assert_push(parts1, CRATE, 0, -5)
+    assert_push(parts1, parts.box(45, 190, 20, 20), 5, -10)
+    assert_push(CRATE, parts1, 0, 5)
+  end)
+
+  it("push a crate straight up along a floor whose parts meet the top at many seams", function()
+    -- top edge y = 100 from x = 0 to 200 through a vertex every 10; a zigzag underside makes
+    -- the outline concave, so its parts are cut along diagonals that end on the top edge
+    local outline = {}
+    for x = 0, 200, 10 do outline[#outline + 1] = x; outline[#outline + 1] = 100 end
+    for k = 0, 20 do
+      outline[#outline + 1] = 200 - 10 * k
+      outline[#outline + 1] = 130 + (k % 2) * 10
+    end
+    local list = assert(polygon.polygonConvexParts(outline))
+    assert.is_true(#list > 5)
+    for step = 0, 96 do
+      local crate = parts.box(step * 2, 94, 8, 8)   -- sunk 2
+      local overlap, dx, dy = collideV(list, crate)
+      assert.are.equal(0, dx)
+      assert.are.equal(-overlap, dy)
+      assert.is_true(overlap >= 2 and overlap <= 2 + parts.slack(list, { crate }))
+      local ox, cdx, cdy = polygon.polygonCircleCollideV(list, step * 2 + 1, 97, 5)   -- sunk 2
+      assert.are.equal(0, cdx)
+      assert.is_true(ox >= 2 and -cdy == ox)
+    end
+  end)
+end)

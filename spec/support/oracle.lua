@@ -449,6 +449,13 @@ function oracle.discMeetsPolygon(points, cx, cy, r)
       local fx = sub(mul(len2, sub(ecx, xs[i])), mul(k, ex))
       local fy = sub(mul(len2, sub(ecy, ys[i])), mul(k, ey))
       if exact.compare(add(mul(fx, fx), mul(fy, fy)), mul(r2, mul(len2, len2))) < 0 then
+        return true
+      end
+    end
+  end
+  return false
+end
+
 
 ---------------------------------------------------------------------------------------------------
 -- Pieces of a polygon (triangulations, convex decompositions), checked exactly.
