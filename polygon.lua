@@ -834,8 +834,9 @@ local function collides(fname, points1, points2, both)
   return depth ~= false
 end
 
--- Lists of convex parts in place of a polygon: the public functions below hand them to the
--- "Compound shapes" section, which builds on everything up to the circles.
+-- Lists of convex parts in place of a polygon: the public functions below (and the circle's)
+-- hand them to the "Compound shapes" section, defined after the SAT engine, the circles and the
+-- convex parts it builds on; declared here so the public functions stay beside their engine.
 local isParts, collideParts, collideCircleParts
 
 --- Whether the edge normals of points1 show no separating axis between two convex polygons.
@@ -848,6 +849,7 @@ function polygon.polygonCollidesWith(points1, points2)
 end
 
 --- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
+-- Either may be a list of convex parts instead (see "Compound shapes").
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
 -- Raises an error for a non-finite coordinate.
 -- @return true or false
@@ -876,7 +878,7 @@ function polygon.polygonCollidesWithV(points1, points2)
   return push, dx, dy
 end
 
---- As polygonsCollide, with the minimum translation vector.
+--- As polygonsCollide, with the minimum translation vector (lists of parts: see "Compound shapes").
 -- overlap is the penetration depth along the axis of least penetration, right also when one
 -- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
 -- points2), pointing the right way in either argument order and when the centres coincide.
@@ -1276,7 +1278,8 @@ function circleCollision(points, n, cx, cy, r)
   return depth, px, py
 end
 
---- The minimum translation vector of a circle out of a convex polygon (either winding).
+--- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
+-- a list of convex parts (see "Compound shapes").
 -- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
 -- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
 -- is the full penetration (r minus the signed distance from the centre to the polygon), so a
