@@ -1386,6 +1386,11 @@ local function collides(fname, points1, points2, both)
   return depth ~= false
 end
 
+-- Lists of convex parts in place of a polygon: the public functions below (and the circle's)
+-- hand them to the "Compound shapes" section, defined after the SAT engine, the circles and the
+-- convex parts it builds on; declared here so the public functions stay beside their engine.
+local isParts, collideParts, collideCircleParts
+
 --- Whether the edge normals of points1 show no separating axis between two convex polygons.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
 -- Raises an error for a non-finite coordinate.
@@ -1396,10 +1401,15 @@ function polygon.polygonCollidesWith(points1, points2)
 end
 
 --- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
+-- Either may be a list of convex parts instead (see "Compound shapes").
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
 -- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonsCollide(points1, points2)
+  if isParts(points1) or isParts(points2) then
+    local hit = collideParts("polygonsCollide", points1, points2, false)
+    return hit
+  end
   local collided = collides("polygonsCollide", points1, points2, true)
   return collided
 end
@@ -1420,7 +1430,7 @@ function polygon.polygonCollidesWithV(points1, points2)
   return push, dx, dy
 end
 
---- As polygonsCollide, with the minimum translation vector.
+--- As polygonsCollide, with the minimum translation vector (lists of parts: see "Compound shapes").
 -- overlap is the penetration depth along the axis of least penetration, right also when one
 -- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
 -- points2), pointing the right way in either argument order and when the centres coincide.
@@ -1429,6 +1439,10 @@ end
 -- coordinates longer than the exact depth. Raises an error for a non-finite coordinate.
 -- @return overlap, dx, dy or false
 function polygon.polygonsCollideV(points1, points2)
+  if isParts(points1) or isParts(points2) then
+    local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true)
+    return overlap, dx, dy
+  end
   local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true)
   return push, dx, dy
 end
@@ -1953,7 +1967,8 @@ function circleCollision(points, n, cx, cy, r)
   return depth, px, py
 end
 
---- The minimum translation vector of a circle out of a convex polygon (either winding).
+--- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
+-- a list of convex parts (see "Compound shapes").
 -- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
 -- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
 -- is the full penetration (r minus the signed distance from the centre to the polygon), so a
@@ -1963,6 +1978,10 @@ end
 -- @return overlap, dx, dy (move the circle by dx, dy) or false
 function polygon.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"
+  if isParts(points) then
+    local overlap, dx, dy = collideCircleParts(fname, points, cx, cy, radius)
+    return overlap, dx, dy
+  end
   local n = checkPoints(points, fname)
   checkFinite(cx, fname, "cx")
   checkFinite(cy, fname, "cy")
@@ -1972,6 +1991,1204 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
   if overlap == nil then error(fname .. ": points holds a non-finite coordinate", 2) end
   if not overlap then return false end
   return overlap, dx, dy
+end
+
+--------------------------------------------------------------------------------------------------
+-- Triangulation and convex parts
+--------------------------------------------------------------------------------------------------
+-- Ear clipping over one ring of vertex nodes: holes are first joined to the outer ring by a
+-- bridge to a vertex they see (Eberly's method), an ear is a strictly convex vertex whose
+-- triangle no other vertex blocks, and the vertices a triangle's box could hold are found in a
+-- z-order (Morton) list, as earcut does, so an ear test costs about as much at 10,000 vertices
+-- as at 100. Every decision is a sign from cross, exact; coordinates are only ever copied.
+-- The nodes live in arrays indexed by node number, set up by one call and dropped at its end.
+
+local floor, sort = math.floor, table.sort
+
+local nodeX, nodeY      -- coordinates as doubles (+ 0.0), for the predicates
+local inX, inY          -- the caller's values, copied into the output bit for bit
+local origin            -- the input vertex a node stands for (a bridge copies two of them)
+local nextNode, prevNode, nodeCount
+local gone              -- gone[k]: node k has been unlinked
+local zOf, nextZ, prevZ -- the z-order list, built once the holes are joined
+local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
+
+-- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
+local sortKey
+local function bySortKey(a, b) return sortKey[a] < sortKey[b] end
+local function leftmostFirst(a, b)
+  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
+end
+
+-- The sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the interior side
+-- of the directed edge a -> b of a ring wound like the outer one.
+local function orient(a, b, c)
+  local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
+  -- c at b is common (edges meeting at a vertex): 0 at once, as the filter would go exact
+  if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
+  -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
+  -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
+  -- too complex"), which cost polygonConvexParts 50 times its time on a 100-vertex outline
+  local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
+  local s, e = l - r, l + r
+  if e < 0 then e = -e end
+  e = CROSS_BOUND * e
+  if not (s >= e or -s >= e) then   -- also when l and r differ in sign and s is 0: exact, rare
+    s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
+  end
+  if s > 0 then return turn elseif s < 0 then return -turn end
+  return 0
+end
+
+local function same(a, b)
+  return nodeX[a] == nodeX[b] and nodeY[a] == nodeY[b]
+end
+
+local function newNode(x, y, id)
+  nodeCount = nodeCount + 1
+  local k = nodeCount
+  inX[k], inY[k], nodeX[k], nodeY[k], origin[k] = x, y, x + 0.0, y + 0.0, id
+  return k
+end
+
+-- Unlinks node k from the ring and, once built, from the z-order list.
+local function unlink(k)
+  gone[k] = true
+  local p, q = prevNode[k], nextNode[k]
+  nextNode[p], prevNode[q] = q, p
+  if zOf then
+    local pz, nz = prevZ[k], nextZ[k]
+    if pz then nextZ[pz] = nz end
+    if nz then prevZ[nz] = pz end
+  end
+end
+
+-- Links the vertices of a flat array into a ring, in reverse when `reversed`, skipping
+-- repeated consecutive vertices. firstId: the id of the array's first vertex. Returns a node.
+local function linkRing(points, n, firstId, reversed)
+  local first, last
+  for j = 1, n - 1, 2 do
+    local i = reversed and n - j or j
+    local x, y = points[i], points[i + 1]
+    if not last or x + 0.0 ~= nodeX[last] or y + 0.0 ~= nodeY[last] then
+      local k = newNode(x, y, firstId + (i - 1) / 2)
+      if last then nextNode[last], prevNode[k] = k, last else first = k end
+      last = k
+    end
+  end
+  nextNode[last], prevNode[first] = first, last
+  if last ~= first and same(first, last) then unlink(last) end
+  return first
+end
+
+-- Whether segments a-b and c-d cross at one point inside both (a proper crossing).
+local function properlyCross(a, b, c, d)
+  local s1, s2 = orient(a, b, c), orient(a, b, d)
+  if s1 == 0 or s2 == 0 or s1 == s2 then return false end
+  local s3, s4 = orient(c, d, a), orient(c, d, b)
+  return s3 ~= 0 and s4 ~= 0 and s3 ~= s4
+end
+
+-- Whether two edges of the rings starting at the given nodes properly cross. A sweep in x:
+-- the edges sorted by their left end, each compared with the earlier ones still reaching it
+-- (for outlines whose edges are short next to the whole, a handful).
+local function anyCrossing(starts)
+  local edges, left = {}, {}
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local q = nextNode[k]
+      edges[#edges + 1] = k
+      left[k] = min(nodeX[k], nodeX[q])
+      k = q
+    until k == s
+  end
+  sortKey = left
+  sort(edges, bySortKey)
+  local active, count = {}, 0
+  for e = 1, #edges do
+    local a = edges[e]
+    local b = nextNode[a]
+    local x0 = left[a]
+    local y0, y1 = min(nodeY[a], nodeY[b]), max(nodeY[a], nodeY[b])
+    local j = 1
+    while j <= count do
+      local c = active[j]
+      local d = nextNode[c]
+      if max(nodeX[c], nodeX[d]) < x0 then   -- ends before this edge begins: drop it
+        active[j] = active[count]; active[count] = nil; count = count - 1
+      else
+        if max(nodeY[c], nodeY[d]) >= y0 and min(nodeY[c], nodeY[d]) <= y1
+          and properlyCross(a, b, c, d) then
+          return true
+        end
+        j = j + 1
+      end
+    end
+    count = count + 1; active[count] = a
+  end
+  return false
+end
+
+-- -1, 0 or 1: where (x, y) lies against the ring at node s (outside, on it, strictly inside),
+-- by the crossing rule with the exact side test and an exact test for the boundary.
+local function ringSide(s, x, y)
+  local inside = false
+  local k = s
+  repeat
+    local q = nextNode[k]
+    local x1, y1, x2, y2 = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+    local c = cross(x1, y1, x2, y2, x1, y1, x, y)
+    if c == 0 and min(x1, x2) <= x and x <= max(x1, x2) and min(y1, y2) <= y and y <= max(y1, y2) then
+      return 0
+    end
+    if (y1 > y) ~= (y2 > y) and (y2 > y1) == (c > 0) then inside = not inside end
+    k = q
+  until k == s
+  return inside and 1 or -1
+end
+
+-- Whether the direction from node k to node t points strictly into the interior at k.
+local function sectorHolds(k, t)
+  local a, c = prevNode[k], nextNode[k]
+  local s1, s2 = orient(a, k, t), orient(k, c, t)
+  if orient(a, k, c) > 0 then return s1 > 0 and s2 > 0 end
+  return s1 > 0 or s2 > 0
+end
+
+-- Among the nodes of the ring at s at the place of node m, one whose interior holds the
+-- direction towards node t (a pinch point has several; each sees a different side).
+local function copyFacing(s, m, t)
+  local k, found = s, m
+  repeat
+    if same(k, m) and sectorHolds(k, t) then found = k end
+    k = nextNode[k]
+  until k == s
+  return found
+end
+
+-- Which of two edges, each crossing the line y = hy strictly between its ends, meets it further
+-- right: 1 when f does, -1 when e does, 0 when they meet it at one point. The edges do not
+-- properly cross, so one end of either, tested against the other, tells. e and f are the
+-- lower ends' nodes (by y), eh and fh the upper.
+local function rightOf(e, eh, f, fh)
+  local s
+  if nodeY[f] >= nodeY[e] then s = -orient(e, eh, f) else s = orient(f, fh, e) end
+  if s == 0 then
+    if nodeY[fh] <= nodeY[eh] then s = -orient(e, eh, fh) else s = orient(f, fh, eh) end
+  end
+  return s * turn   -- orient's sign times turn is the plain sign of the cross product
+end
+
+-- Whether (x, y), in line with (hx, hy) and (bx, by) on the same side, lies strictly between.
+local function between(hx, hy, x, y, bx, by)
+  if x ~= bx then return (hx < x) == (x < bx) and x ~= hx end
+  return (hy < y) == (y < by) and y ~= hy
+end
+
+-- The node of the ring at s that the hole's leftmost node h joins: the nearest point hit by the
+-- ray from h to the left is a vertex, or lies on an edge whose right end P is seen from h unless
+-- another vertex in the triangle (h, hit, P) is: the one there at the least angle from the ray
+-- (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside).
+local function bridgeTarget(s, h)
+  local hx, hy = nodeX[h], nodeY[h]
+  local vertex, lo, hi   -- the nearest hit so far: a vertex, or an edge lo -> hi (upwards in y)
+  local k = s
+  repeat
+    local q = nextNode[k]
+    local x, y = nodeX[k], nodeY[k]
+    if y == hy and x <= hx then
+      if x == hx then return copyFacing(s, k, nextNode[h]) end   -- the hole touches the ring here
+      if lo then
+        if cross(nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi], nodeX[lo], nodeY[lo], x, y) <= 0 then
+          vertex, lo, hi = k, nil, nil
+        end
+      elseif not vertex or x > nodeX[vertex] then
+        vertex = k
+      end
+    end
+    local qy = nodeY[q]
+    if (y < hy and qy > hy) or (y > hy and qy < hy) then
+      local a, b = k, q
+      if y > qy then a, b = q, k end
+      local ax, ay = nodeX[a], nodeY[a]
+      if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy) <= 0 then   -- meets the ray
+        if vertex then
+          if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
+            vertex, lo, hi = nil, a, b
+          end
+        elseif not lo or rightOf(lo, hi, a, b) > 0 then
+          lo, hi = a, b
+        end
+      end
+    end
+    k = q
+  until k == s
+  if vertex then return copyFacing(s, vertex, h) end
+  if not lo then return nil end
+  local p = nodeX[hi] > nodeX[lo] and hi or lo
+  local side = nodeY[p] > hy and 1 or -1   -- the side of the ray the triangle lies on
+  local lx, ly, ux, uy = nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi]
+  local best = p
+  k = s
+  repeat
+    local x, y = nodeX[k], nodeY[k]
+    if (y - hy) * side > 0 and cross(lx, ly, ux, uy, lx, ly, x, y) <= 0 then
+      local c = cross(hx, hy, nodeX[p], nodeY[p], hx, hy, x, y) * side
+      if c >= 0 then   -- inside the triangle (h, hit, P) or on its sides
+        local t = cross(hx, hy, x, y, hx, hy, nodeX[best], nodeY[best]) * side
+        if t < 0 or (t == 0 and between(hx, hy, x, y, nodeX[best], nodeY[best])) then best = k end
+      end
+    end
+    k = nextNode[k]
+  until k == s
+  return copyFacing(s, best, h)
+end
+
+-- Joins the hole ring at node h to the ring at node m: m -> h ... around the hole ... h' -> m'
+-- with h' and m' new nodes at the places of h and m. A hole touching the ring (m at h) makes
+-- repeated vertices, removed at once.
+local function bridge(m, h)
+  local m2, h2 = newNode(inX[m], inY[m], origin[m]), newNode(inX[h], inY[h], origin[h])
+  local mn, hp = nextNode[m], prevNode[h]
+  nextNode[m], prevNode[h] = h, m
+  nextNode[hp], prevNode[h2] = h2, hp
+  nextNode[h2], prevNode[m2] = m2, h2
+  nextNode[m2], prevNode[mn] = mn, m2
+  if same(m, h) then unlink(h); unlink(m2) end
+end
+
+-- Bit-interleaving of a byte (bit i goes to bit 2 i), for z-order keys without bit operators.
+local SPREAD = {}
+for b = 0, 255 do
+  local v, bit, out = b, 1, 0
+  while v > 0 do
+    if v % 2 == 1 then out = out + bit end
+    v, bit = (v - v % 2) / 2, bit * 4
+  end
+  SPREAD[b] = out
+end
+
+local Z_CELLS = 32767   -- 15 bits per axis: keys below 2^30, exact in doubles and integers
+local zLeft, zTop, zScale
+
+-- The Morton key of a point. Monotone in x and in y (the scaling rounds monotonically), so a
+-- box's corners bound the keys of every point inside it.
+local function zKey(x, y)
+  local ix = floor((x - zLeft) * zScale)
+  local iy = floor((y - zTop) * zScale)
+  local xl, yl = ix % 256, iy % 256
+  return SPREAD[xl] + SPREAD[(ix - xl) / 256] * 65536
+    + 2 * (SPREAD[yl] + SPREAD[(iy - yl) / 256] * 65536)
+end
+
+-- Sorts the ring at s by z-order into nextZ / prevZ.
+local function buildZOrder(s)
+  local list = {}
+  local x0, y0, x1, y1 = huge, huge, -huge, -huge
+  local k = s
+  repeat
+    list[#list + 1] = k
+    x0, y0 = min(x0, nodeX[k]), min(y0, nodeY[k])
+    x1, y1 = max(x1, nodeX[k]), max(y1, nodeY[k])
+    k = nextNode[k]
+  until k == s
+  local size = max(x1 - x0, y1 - y0)
+  zLeft, zTop, zScale = x0, y0, size > 0 and Z_CELLS / size or 0
+  zOf, nextZ, prevZ = {}, {}, {}
+  for i = 1, #list do zOf[list[i]] = zKey(nodeX[list[i]], nodeY[list[i]]) end
+  sortKey = zOf
+  sort(list, bySortKey)
+  for i = 1, #list do
+    nextZ[list[i]], prevZ[list[i]] = list[i + 1], list[i - 1]
+  end
+end
+
+-- Whether node k keeps the triangle (a, b, c) (turning the ring's way) from being an ear: it
+-- lies strictly inside, or on the triangle's boundary with an edge going into it, or (while
+-- `strict`) on the new edge c -> a, which would leave a vertex inside an edge and so a
+-- triangle that cannot merge with its neighbours.
+local strict = true
+local function blocks(k, a, b, c)
+  local s1 = orient(a, b, k)
+  if s1 < 0 then return false end
+  local s2 = orient(b, c, k)
+  if s2 < 0 then return false end
+  local s3 = orient(c, a, k)
+  if s3 < 0 then return false end
+  if s1 > 0 and s2 > 0 and s3 > 0 then return true end
+  if strict and s3 == 0 and not same(k, a) and not same(k, c) then return true end
+  for side = 1, 2 do
+    local t = side == 1 and prevNode[k] or nextNode[k]
+    if same(k, a) then
+      if orient(a, b, t) > 0 and orient(c, a, t) > 0 then return true end
+    elseif same(k, b) then
+      if orient(a, b, t) > 0 and orient(b, c, t) > 0 then return true end
+    elseif same(k, c) then
+      if orient(b, c, t) > 0 and orient(c, a, t) > 0 then return true end
+    elseif (s1 == 0 and orient(a, b, t) > 0) or (s2 == 0 and orient(b, c, t) > 0)
+      or (s3 == 0 and orient(c, a, t) > 0) then
+      return true
+    end
+  end
+  return false
+end
+
+-- Whether node b, strictly convex, is an ear: no node whose z-key lies within the triangle's
+-- box blocks it.
+local function isEar(b)
+  local a, c = prevNode[b], nextNode[b]
+  -- few live values in the loops below: more made LuaJIT 2.1 abort their side traces
+  local x0, y0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
+  local x1, y1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
+  local zLow, zHigh = zKey(x0, y0), zKey(x1, y1)
+  local k = prevZ[b]
+  while k and zOf[k] >= zLow do
+    local x, y = nodeX[k], nodeY[k]
+    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
+      return false
+    end
+    k = prevZ[k]
+  end
+  k = nextZ[b]
+  while k and zOf[k] <= zHigh do
+    local x, y = nodeX[k], nodeY[k]
+    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
+      return false
+    end
+    k = nextZ[k]
+  end
+  return true
+end
+
+-- Clips ears from the ring at s until it is gone, appending each triangle's three nodes to
+-- tris. No node in line with its neighbours is kept (a straight run, a repeated vertex, the tip
+-- of a spike): each is dropped without a triangle, at the start and whenever a clip or a drop
+-- brings one about, so the ring never holds a zero-width spike for an ear to reach across.
+-- A lap that finds no ear is retried with strict off; returns false when that one finds none
+-- either (the ring is not weakly simple).
+local ringCount, pending, pendingTop   -- clipEars' state, for settle
+
+-- Drops the pending nodes that lie in line with their neighbours, and those this brings in line.
+local function settle()
+  while pendingTop > 0 and ringCount > 2 do
+    local j = pending[pendingTop]
+    pending[pendingTop] = nil; pendingTop = pendingTop - 1
+    if not gone[j] and orient(prevNode[j], j, nextNode[j]) == 0 then
+      unlink(j); ringCount = ringCount - 1
+      pending[pendingTop + 1], pending[pendingTop + 2] = prevNode[j], nextNode[j]
+      pendingTop = pendingTop + 2
+    end
+  end
+  for j = pendingTop, 1, -1 do pending[j] = nil end
+  pendingTop = 0
+end
+
+local function clipEars(s, tris)
+  strict = true
+  ringCount, pending = 0, {}
+  local k = s
+  repeat ringCount = ringCount + 1; pending[ringCount] = k; k = nextNode[k] until k == s
+  pendingTop = ringCount
+  settle()
+  local ear = s
+  while gone[ear] do ear = nextNode[ear] end
+  local stop = ear
+  while ringCount > 2 do
+    local a, c = prevNode[ear], nextNode[ear]
+    if orient(a, ear, c) > 0 and isEar(ear) then
+      local t = #tris
+      tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
+      unlink(ear); ringCount = ringCount - 1
+      pending[1], pending[2], pendingTop = a, c, 2
+      settle()
+      ear = c
+      while gone[ear] do ear = nextNode[ear] end
+      stop = ear
+      strict = true
+    else
+      ear = c
+      if ear == stop then
+        if not strict then return false end
+        strict = false
+      end
+    end
+  end
+  return true
+end
+
+-- Checks the arguments and triangulates: the triangles' nodes (a flat array, three per
+-- triangle), or nil and a message. Leaves the node arrays set for the caller to read.
+local function triangulate(fname, points, holes)
+  local n = checkPoints(points, fname, "points", 4)
+  if holes ~= nil and type(holes) ~= "table" then
+    error(("%s: holes must be a table, got %s"):format(fname, type(holes)), 3)
+  end
+  local ok, message = polygon.validate(points)
+  if not ok then
+    if n < 6 then return nil, message end
+    error(fname .. ": " .. message, 3)
+  end
+  for h = 1, holes and #holes or 0 do
+    ok, message = polygon.validate(holes[h])
+    if not ok then error(("%s: holes[%d]: %s"):format(fname, h, message), 3) end
+  end
+  turn = areaSign(points, n)
+  if turn == 0 then return nil, "points have zero area" end
+  turn = turn > 0 and 1 or -1
+  nodeX, nodeY, inX, inY, origin, nextNode, prevNode, nodeCount = {}, {}, {}, {}, {}, {}, {}, 0
+  gone = {}
+  zOf, nextZ, prevZ = nil, nil, nil
+  local outer = linkRing(points, n, 1, false)
+  local starts, firstId = { outer }, n / 2 + 1
+  for h = 1, holes and #holes or 0 do
+    local hole = holes[h]
+    local m = #hole
+    local s = areaSign(hole, m)
+    if s == 0 then return nil, ("holes[%d] has zero area"):format(h) end
+    -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
+    starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0))
+    firstId = firstId + m / 2
+  end
+  if anyCrossing(starts) then return nil, "edges cross" end
+  for h = 2, #starts do
+    local k, side = starts[h]
+    repeat
+      side = ringSide(outer, nodeX[k], nodeY[k])
+      k = nextNode[k]
+    until side ~= 0 or k == starts[h]
+    if side < 0 then return nil, ("holes[%d] is outside the polygon"):format(h - 1) end
+    for g = 2, #starts do
+      if g ~= h then
+        k = starts[h]
+        repeat
+          side = ringSide(starts[g], nodeX[k], nodeY[k])
+          k = nextNode[k]
+        until side ~= 0 or k == starts[h]
+        if side > 0 then return nil, ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1) end
+      end
+    end
+  end
+  -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
+  local lefts = {}
+  for h = 2, #starts do
+    local best, k = starts[h], starts[h]
+    repeat
+      if nodeX[k] < nodeX[best] or (nodeX[k] == nodeX[best] and nodeY[k] < nodeY[best]) then best = k end
+      k = nextNode[k]
+    until k == starts[h]
+    lefts[#lefts + 1] = best
+  end
+  sort(lefts, leftmostFirst)
+  for i = 1, #lefts do
+    local m = bridgeTarget(outer, lefts[i])
+    if not m then return nil, "a hole is outside the polygon" end
+    bridge(m, lefts[i])
+  end
+  buildZOrder(outer)
+  local tris = {}
+  if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
+  return tris
+end
+
+-- Drops the node arrays of the last call.
+local function releaseNodes()
+  nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
+  zOf, nextZ, prevZ, sortKey = nil, nil, nil, nil
+end
+
+--- Splits a polygon, optionally with holes, into triangles. Builds new tables: for load time,
+-- not for every frame.
+-- points: a flat array; holes: nil or an array of flat arrays inside the polygon (a hole may
+-- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
+-- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
+-- Every decision is an exact sign; no triangle has zero area. O(n log n) for ordinary outlines.
+-- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
+-- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
+-- outside the polygon)
+function polygon.polygonTriangulate(points, holes)
+  local tris, message = triangulate("polygonTriangulate", points, holes)
+  if not tris then releaseNodes(); return nil, message end
+  local out = {}
+  for t = 1, #tris, 3 do
+    local a, b, c = tris[t], tris[t + 1], tris[t + 2]
+    out[#out + 1] = { inX[a], inY[a], inX[b], inY[b], inX[c], inY[c] }
+  end
+  releaseNodes()
+  return out
+end
+
+--- Splits a polygon, optionally with holes, into convex parts: the triangulation's triangles
+-- merged greedily across their shared edges while both ends stay convex (Hertel and Mehlhorn:
+-- at most four times the fewest parts possible). Builds new tables: for load time.
+-- Arguments and errors as polygonTriangulate; a convex polygon gives one part.
+-- @return an array of convex polygons (flat arrays of input vertices, wound like points), or
+-- nil and a message
+function polygon.polygonConvexParts(points, holes)
+  local tris, message = triangulate("polygonConvexParts", points, holes)
+  if not tris then releaseNodes(); return nil, message end
+  -- corners: three per triangle, linked around their part; a part is the triangles joined so far
+  local node, nextCorner, prevCorner, part = {}, {}, {}, {}
+  local edgeAt, joins = {}, {}
+  local idLimit = 0
+  for k = 1, nodeCount do idLimit = max(idLimit, origin[k]) end
+  idLimit = idLimit + 1
+  for c = 1, #tris do
+    local first = c - (c - 1) % 3
+    node[c], part[c] = tris[c], first   -- part: a corner's union-find link, the first of a triangle
+    nextCorner[c] = c % 3 == 0 and first or c + 1
+    prevCorner[c] = c == first and first + 2 or c - 1
+  end
+  -- edges meet by the input vertices they join, so a bridge is an edge like any other
+  for c = 1, #tris do
+    local u, v = origin[node[c]], origin[node[nextCorner[c]]]
+    local other = edgeAt[v * idLimit + u]
+    if other then
+      joins[#joins + 1] = other; joins[#joins + 1] = c
+      edgeAt[v * idLimit + u] = nil
+    else
+      edgeAt[u * idLimit + v] = c
+    end
+  end
+  local heir = {}   -- a dropped corner's outgoing edge now starts at heir[corner]
+  for j = 1, #joins, 2 do
+    local pu, qv = joins[j], joins[j + 1]
+    while heir[pu] do pu = heir[pu] end
+    while heir[qv] do qv = heir[qv] end
+    local pv, qu = nextCorner[pu], nextCorner[qv]
+    -- the parts' roots (union-find with path halving)
+    local rp, rq = pu, qv
+    while part[rp] ~= rp do part[rp] = part[part[rp]]; rp = part[rp] end
+    while part[rq] ~= rq do part[rq] = part[part[rq]]; rq = part[rq] end
+    if rp ~= rq and origin[node[pv]] == origin[node[qv]] and origin[node[qu]] == origin[node[pu]]
+      and orient(node[prevCorner[pu]], node[pu], node[nextCorner[qu]]) >= 0
+      and orient(node[prevCorner[qv]], node[pv], node[nextCorner[pv]]) >= 0 then
+      local un, vp = nextCorner[qu], prevCorner[qv]
+      nextCorner[pu], prevCorner[un] = un, pu
+      prevCorner[pv], nextCorner[vp] = vp, pv
+      heir[qu], heir[qv] = pu, pu
+      part[rq] = rp
+    end
+  end
+  local out, seen = {}, {}
+  for c = 1, #tris do
+    if not heir[c] and not seen[c] then
+      local poly, k = {}, c
+      repeat
+        seen[k] = true
+        poly[#poly + 1] = inX[node[k]]; poly[#poly + 1] = inY[node[k]]
+        k = nextCorner[k]
+      until k == c
+      out[#out + 1] = poly
+    end
+  end
+  releaseNodes()
+  return out
+end
+
+--------------------------------------------------------------------------------------------------
+-- Compound shapes: lists of convex parts
+--------------------------------------------------------------------------------------------------
+-- polygonsCollide, polygonsCollideV and polygonCircleCollideV also take, for either shape, a list
+-- of convex parts {part1, part2, ...}: what polygonConvexParts returns, or parts built by hand.
+-- A flat array holds a number at [1], a list of parts a table.
+--
+-- Overlap. Two shapes overlap when some part of one overlaps some part of the other, each pair
+-- decided exactly (touching is not colliding) after a bounding-box test per pair.
+--
+-- The push. Moving the second shape by t makes part A of the first and part B of the second
+-- overlap exactly when t lies inside D = A - B = {a - b}, a convex polygon with one edge per edge
+-- of A and of B. An edge of A from vertex a, with outward unit normal u, bounds D by the open
+-- half-plane u.t < c, c = -min over the vertices v of B of u.(v - a) (how far B reaches past the
+-- edge); an edge of B from b, outward normal u, by -u.t < c, c = -min over the vertices w of A
+-- of u.(w - b). The least push is the point nearest the origin that lies in no open D (over all
+-- pairs of parts). That point is on the boundary of the union of the D, so on an edge of one D:
+-- inside that edge it is the foot of the perpendicular from the origin to the edge's line, else
+-- it is the end of a piece of the edge, where the edge's line crosses another (of the same D, a
+-- corner, or of another D, where two D cross). So the candidates are the feet and the crossings,
+-- and the push is the nearest candidate outside every D: the true least translation, up to the
+-- margin below. Feet need not be tried on an edge shared with another part of the same shape
+-- (internal, see preparedParts): such a foot, if on the edge, has the neighbouring part
+-- overlapping (the other part reaches on past the shared edge, as a half-disc around every point
+-- inside it) and so is never free; off the edge it is on another line, found there. Crossings use
+-- every line, as an end of an internal edge can be a corner of the union.
+--
+-- Which pairs. A pair matters only if its D comes nearer the origin than the push found so far,
+-- and D lies in the box [A's box - B's box]: the pairs whose boxes overlap come first, then the
+-- pairs whose box of D is nearer than the best push found, round after round (each round can
+-- only lengthen the push: a nearer free point would have been free among fewer pairs).
+--
+-- Margin: one push separates. The faces are computed in floating point and the moved vertices
+-- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
+-- are taken on the lines moved out by lift = 1.25 delta (a quarter of delta covers their own
+-- rounding, a few eps E). With E the width plus the height of the box around both shapes and S
+-- their largest coordinate magnitude, every D lies in the box of D's, within 1.5 E of the origin,
+-- so every |v - a| <= E, every push |t| < 1.5 E (a point farther out is free), and the moved
+-- coordinates stay below S + 1.5 E. Errors of the quantities the test u.t >= c + delta compares,
+-- in eps: the unit normal from rounded differences (eps each, then unit's 3) turns by at most
+-- 5 eps, moving u.(v - a) by 5 E and u.t by 7.5 E; the projection rounds by 3 E; the test's own
+-- sums and products by 3 (1.5 E + E) = 7.5 E: 23 E in all, below 64 E, so a candidate found
+-- outside the widened D is in truth at distance 41 eps E or more from D: part B moved by it
+-- exactly keeps that distance from A. Rounding moves each of its coordinates by at most
+-- eps (S + 1.5 E), each vertex by 1.42 eps (S + 1.5 E), so the rounded part (the hull of the
+-- rounded vertices) lies within that of the exact one: still apart when 41 eps E + 2 eps S, the
+-- rest of delta = 64 eps E + 2 eps S, exceeds 1.42 eps (S + 1.5 E). So no pair of parts collides
+-- after the rounded move: one push separates. The push exceeds the least translation by about
+-- lift (80 eps E + 2.5 eps S) on a face, lift / sin(angle / 2) at a crossing of lines meeting at
+-- an angle. Coordinates beyond 2^500 or below 2^-400 are scaled by a power of two k first
+-- (exact), so no product overflows or underflows.
+
+-- Whether shape is a list of parts rather than a flat array of coordinates (declared before the
+-- public collision functions, which dispatch on it).
+function isParts(shape)
+  return type(shape) == "table" and type(shape[1]) == "table"
+end
+
+-- The preparation each list of parts gets once, on first use, kept while the list lives:
+-- internal[k][e] is true when the edge of part k from vertex e to vertex e + 1 (the last to the
+-- first) is covered by edges of other parts running the opposite way along the same line (shared
+-- with the neighbours, whole or in pieces). Recomputed when the number of parts or of a part's
+-- coordinates changes. Moving a shape keeps it right; a stale table after other edits costs at
+-- most a longer push (a foot skipped) or some time (a foot tried), never a wrong one, as every
+-- candidate is checked against every part.
+local preparedParts = setmetatable({}, { __mode = "k" })
+
+-- The interval an edge covers along its line: on x unless the line is vertical (exact).
+local function edgeSpan(ax, ay, bx, by, onX)
+  if onX then return min(ax, bx), max(ax, bx) end
+  return min(ay, by), max(ay, by)
+end
+
+-- Whether the spans in `covers` (pairs lo, hi, any order) cover [lo, hi].
+local function covered(covers, lo, hi)
+  table.sort(covers, function(p, q) return p[1] < q[1] end)
+  local reach = lo
+  for _, span in ipairs(covers) do
+    if span[1] > reach then return false end
+    if span[2] > reach then reach = span[2] end
+    if reach >= hi then return true end
+  end
+  return reach >= hi
+end
+
+-- Builds the preparation of a list of parts (allocates: load time, or after the parts changed).
+local function prepareParts(parts)
+  local count = #parts
+  local info = { count = count, lengths = {}, internal = {} }
+  local edges = {}
+  for k = 1, count do
+    local part = parts[k]
+    local n = #part
+    info.lengths[k], info.internal[k] = n, {}
+    for e = 1, n / 2 do
+      local j = e % (n / 2) + 1
+      local ax, ay = part[2 * e - 1] + 0.0, part[2 * e] + 0.0
+      local bx, by = part[2 * j - 1] + 0.0, part[2 * j] + 0.0
+      if ax ~= bx or ay ~= by then
+        edges[#edges + 1] = { k = k, e = e, ax = ax, ay = ay, bx = bx, by = by,
+                              xmin = min(ax, bx), xmax = max(ax, bx), covers = {} }
+      end
+    end
+  end
+  -- sweep over the edges in order of their smallest x: only edges whose x ranges meet can share
+  table.sort(edges, function(p, q) return p.xmin < q.xmin end)
+  for s = 1, #edges do
+    local E = edges[s]
+    local t = s + 1
+    while edges[t] and edges[t].xmin <= E.xmax do
+      local T = edges[t]
+      if T.k ~= E.k and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.ax, T.ay) == 0
+        and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.bx, T.by) == 0 then
+        local onX = E.ax ~= E.bx   -- then T, on the same line, is not vertical either
+        local forwardE = onX and E.bx > E.ax or not onX and E.by > E.ay
+        local forwardT = onX and T.bx > T.ax or not onX and T.by > T.ay
+        if forwardE ~= forwardT then
+          local elo, ehi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
+          local tlo, thi = edgeSpan(T.ax, T.ay, T.bx, T.by, onX)
+          if tlo < ehi and elo < thi then
+            E.covers[#E.covers + 1] = { tlo, thi }
+            T.covers[#T.covers + 1] = { elo, ehi }
+          end
+        end
+      end
+      t = t + 1
+    end
+  end
+  for _, E in ipairs(edges) do
+    if #E.covers > 0 then
+      local onX = E.ax ~= E.bx
+      local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
+      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = true end
+    end
+  end
+  preparedParts[parts] = info
+  return info
+end
+
+-- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
+local boxes1, boxes2 = {}, {}      -- part boxes: xmin, ymin, xmax, ymax at 4k - 3 .. 4k
+local turns1, turns2 = {}, {}      -- part area signs, valid when stamps[k] == callStamp
+local stamps1, stamps2 = {}, {}
+local callStamp = 0
+local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
+
+-- The part count of a shape, its boxes in `boxes`, the largest coordinate magnitude, whether
+-- `info` (its preparation, if any) no longer matches its parts' lengths, and the box around all
+-- parts (xmin, ymin, xmax, ymax). Raises the
+-- argument errors at the caller of the public function (level 4).
+local function scanShape(fname, argname, shape, parts, boxes, info)
+  if type(shape) ~= "table" then
+    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), 4)
+  end
+  local count = parts and #shape or 1
+  local stale = info and info.count ~= count
+  local size, finite = 0.0, 0.0
+  local left, top, right, bottom = huge, huge, -huge, -huge
+  for k = 1, count do
+    local part = parts and shape[k] or shape
+    if type(part) ~= "table" then
+      error(("%s: %s[%d] must be a table, got %s"):format(fname, argname, k, type(part)), 4)
+    end
+    local n = #part
+    if n % 2 ~= 0 then
+      error(("%s: %s must hold an even number of coordinates, got %d")
+        :format(fname, parts and ("%s[%d]"):format(argname, k) or argname, n), 4)
+    end
+    if info and info.lengths[k] ~= n then stale = true end
+    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    for i = 1, n - 1, 2 do
+      local x, y = part[i] + 0.0, part[i + 1] + 0.0
+      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
+      if x < xmin then xmin = x end
+      if x > xmax then xmax = x end
+      if y < ymin then ymin = y end
+      if y > ymax then ymax = y end
+    end
+    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+    local b = 4 * k
+    boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
+    if n >= 6 then
+      size = max(size, -xmin, xmax, -ymin, ymax)
+      left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
+    end
+  end
+  if finite ~= 0 then
+    error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+  end
+  return count, size, stale, left, top, right, bottom
+end
+
+-- The area sign of part k (1, -1 or 0: signs, never magnitudes, are multiplied), once per call.
+local function partTurn(part, k, turns, stamps)
+  if stamps[k] ~= callStamp then
+    local orientation = areaSign(part, #part)
+    stamps[k], turns[k] = callStamp, orientation > 0 and 1.0 or orientation < 0 and -1.0 or 0.0
+  end
+  return turns[k]
+end
+
+-- Whether two convex parts overlap (exact), by the SAT engine; non-finite input was caught.
+local function overlapsConvex(p1, p2)
+  return convexPenetration(p1, #p1, p2, #p2, true) and true or false
+end
+
+-- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
+-- part give (sense 1 for a part of the first shape, -1 for one of the second, whose outward
+-- normal points the other way in t), with `other` the part it is paired with. Coordinates are
+-- scaled by k. Returns the last index used and whether some edge separates the two parts,
+-- decided exactly (w, h bound the scaled coordinate differences, for projectionTolerance).
+local function addFaces(edges, ne, orientation, other, no, internal, sense, k, w, h, top)
+  local separated = false
+  local e = ne / 2   -- the edge from the last vertex to the first comes first
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  for i = 1, ne - 1, 2 do
+    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = unit((by - ay) * orientation, (ax - bx) * orientation)   -- outward
+      local kax, kay = ax * k, ay * k
+      local lo = huge
+      for j = 1, no - 1, 2 do
+        local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+        if s < lo then lo = s end
+      end
+      if not separated then
+        local tol = projectionTolerance(w, h, ux, uy)
+        if -lo <= tol and (-lo < -tol
+            or clearOfLine(ax, ay, bx, by, ax, ay, orientation, other, no, 0.0, 0.0)) then
+          separated = true
+        end
+      end
+      top = top + 1
+      faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
+      faceOuter[top] = not (internal and internal[e])
+    end
+    ax, ay, e = bx, by, (i + 1) / 2
+  end
+  return top, separated
+end
+
+-- Whether t lies outside every D of pairs 1 .. np widened by margin.
+local function pushFree(tx, ty, np, margin)
+  for p = 1, np do
+    local inside = true
+    for f = faceFirst[p], faceFirst[p + 1] - 1 do
+      if faceX[f] * tx + faceY[f] * ty >= faceC[f] + margin then
+        inside = false
+        break
+      end
+    end
+    if inside then return false end
+  end
+  return true
+end
+
+-- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
+local function nearestFree(np, margin)
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local last = faceFirst[np + 1] - 1
+  local lift = 1.25 * margin
+  for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
+    local d = faceC[f] + lift
+    if faceOuter[f] and abs(d) < best then
+      local tx, ty = faceX[f] * d, faceY[f] * d
+      if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+    end
+  end
+  for f = 1, last - 1 do   -- crossings of two lines, each nearer than the best so far
+    local c1 = faceC[f] + lift
+    if abs(c1) < best then
+      local x1, y1 = faceX[f], faceY[f]
+      for g = f + 1, last do
+        local c2 = faceC[g] + lift
+        if abs(c2) < best then
+          local x2, y2 = faceX[g], faceY[g]
+          local det = x1 * y2 - y1 * x2
+          if det ~= 0 then
+            local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
+            local d = sqrt(tx * tx + ty * ty)
+            if d < best and pushFree(tx, ty, np, margin) then best, bestX, bestY = d, tx, ty end
+          end
+        end
+      end
+    end
+  end
+  return best, bestX, bestY
+end
+
+-- The distance (largest coordinate gap) from the origin to the box of D for parts i and j.
+local function boxGap(i, j, k)
+  local a, b = 4 * i, 4 * j
+  local gx = max((boxes1[a - 3] - boxes2[b - 1]) * k, (boxes2[b - 3] - boxes1[a - 1]) * k, 0.0)
+  local gy = max((boxes1[a - 2] - boxes2[b]) * k, (boxes2[b - 2] - boxes1[a]) * k, 0.0)
+  return max(gx, gy)
+end
+
+-- Whether the boxes of part i of the first shape and part j of the second overlap (not touch).
+local function boxesOverlap(i, j)
+  local a, b = 4 * i, 4 * j
+  return boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
+    and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
+end
+
+-- Appends the faces of D for part p1 (number i of the first shape) and p2 (number j of the
+-- second) as pair np + 1. Returns np, top and whether the parts overlap, decided exactly.
+local function addPair(p1, i, internal1, p2, j, internal2, k, np, top)
+  local n1, n2 = #p1, #p2
+  local turn1 = partTurn(p1, i, turns1, stamps1)
+  local turn2 = partTurn(p2, j, turns2, stamps2)
+  if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  local a, b = 4 * i, 4 * j
+  local w = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
+  local h = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
+  faceFirst[np + 1] = top + 1
+  local apart1, apart2
+  top, apart1 = addFaces(p1, n1, turn1, p2, n2, internal1, 1.0, k, w, h, top)
+  top, apart2 = addFaces(p2, n2, turn2, p1, n1, internal2, -1.0, k, w, h, top)
+  faceFirst[np + 2] = top + 1
+  return np + 1, top, not (apart1 or apart2)
+end
+
+-- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
+-- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
+-- overlap, dx, dy, or false.
+function collideParts(fname, shape1, shape2, wantPush)
+  local parts1, parts2 = isParts(shape1), isParts(shape2)
+  local info1 = wantPush and parts1 and preparedParts[shape1]
+  local info2 = wantPush and parts2 and preparedParts[shape2]
+  local count1, size1, stale1, x1, y1, x2, y2 = scanShape(fname, "points1", shape1, parts1, boxes1, info1)
+  local count2, size2, stale2, x3, y3, x4, y4 = scanShape(fname, "points2", shape2, parts2, boxes2, info2)
+  callStamp = callStamp + 1
+  if not wantPush then
+    for i = 1, count1 do
+      for j = 1, count2 do
+        if boxesOverlap(i, j)
+          and overlapsConvex(parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
+          return true
+        end
+      end
+    end
+    return false
+  end
+  if parts1 and (not info1 or stale1) then info1 = prepareParts(shape1) end
+  if parts2 and (not info2 or stale2) then info2 = prepareParts(shape2) end
+  local size = max(size1, size2)
+  local k = 1.0
+  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  local extent = ((max(x2, x4) - min(x1, x3)) + (max(y2, y4) - min(y1, y3))) * k
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- delta above: 64 eps E + 2 eps S
+  local np, top, hit = 0, 0, false
+  for i = 1, count1 do
+    local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
+    for j = 1, count2 do
+      if boxesOverlap(i, j) then
+        local overlaps
+        np, top, overlaps = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
+          info2 and info2.internal[j], k, np, top)
+        if overlaps then hit = true end
+      end
+    end
+  end
+  if not hit then return false end
+  local reach = -huge   -- the pairs whose box of D is nearer than reach are in already
+  local best, tx, ty = nearestFree(np, margin)
+  while true do
+    local nextReach = best + 4 * margin
+    if nextReach <= reach then break end
+    local before = np
+    for i = 1, count1 do
+      local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
+      for j = 1, count2 do
+        if boxes1[4 * i - 3] <= boxes1[4 * i - 1] and boxes2[4 * j - 3] <= boxes2[4 * j - 1]
+          and not boxesOverlap(i, j) then
+          local gap = boxGap(i, j, k)
+          if gap >= reach and gap < nextReach then
+            np, top = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
+              info2 and info2.internal[j], k, np, top)
+          end
+        end
+      end
+    end
+    reach = nextReach
+    if np == before then break end
+    -- More pairs can only lengthen the least push: if the best point is still free, it stays.
+    if best == huge or not pushFree(tx, ty, np, margin) then best, tx, ty = nearestFree(np, margin) end
+  end
+  if best == huge then
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, faceX[1] * 2 * extent, faceY[1] * 2 * extent
+  end
+  return best / k, tx / k + 0.0, ty / k + 0.0
+end
+
+-- Circles. A circle (c, r) whose centre moves by t meets part A exactly when c + t lies within
+-- r of A: t inside D = (A - c) grown by r, a convex shape bounded by the edges' lines moved out
+-- by r and arcs of radius r around the vertices. The least push is again the point nearest the
+-- origin outside every D. On the boundary of the union it is the foot of the perpendicular on
+-- a moved edge line, or the point of an arc nearest the origin (straight away from a vertex),
+-- or a crossing of two of those pieces: line and line, line and arc, arc and arc. Each candidate
+-- is kept when it is farther than r + delta from every part (the same margins as above, with
+-- the circle's box in E and S), and the nearest kept one is the push.
+
+local faceAX, faceAY, faceBX, faceBY = {}, {}, {}, {}   -- edge ends relative to the centre
+local faceQ = {}                                        -- |faceAX, faceAY|: the vertex's distance
+
+-- Appends the edges of part (area sign orientation) as faces relative to the centre (cx, cy), all
+-- scaled by k: the outward unit normal, the signed distance faceC of the edge's line from the
+-- centre (u.t - faceC is how far t lies beyond it) and the edge's ends. Returns the last index.
+local function addCircleFaces(part, n, orientation, internal, cx, cy, k, top)
+  local e = n / 2   -- the edge from the last vertex to the first comes first
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  local kcx, kcy = cx * k, cy * k
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = unit((by - ay) * orientation, (ax - bx) * orientation)   -- outward
+      local qax, qay = ax * k - kcx, ay * k - kcy
+      top = top + 1
+      faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
+      faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
+      faceQ[top] = sqrt(qax * qax + qay * qay)
+      faceOuter[top] = not (internal and internal[e])
+    end
+    ax, ay, e = bx, by, (i + 1) / 2
+  end
+  return top
+end
+
+-- Whether t lies at least `need` from the part whose faces are first .. last.
+local function farFromPart(tx, ty, first, last, need)
+  local beyond = -huge
+  for f = first, last do beyond = max(beyond, faceX[f] * tx + faceY[f] * ty - faceC[f]) end
+  if beyond >= need then return true end
+  if beyond <= 0 then return false end   -- inside the part
+  -- outside: the nearest point lies on an edge whose line t is beyond
+  local needSq = need * need
+  for f = first, last do
+    if faceX[f] * tx + faceY[f] * ty - faceC[f] > 0 then
+      local ax, ay = faceAX[f], faceAY[f]
+      local ex, ey = faceBX[f] - ax, faceBY[f] - ay
+      local along = ((tx - ax) * ex + (ty - ay) * ey) / (ex * ex + ey * ey)
+      if along < 0 then along = 0 elseif along > 1 then along = 1 end
+      local dx, dy = tx - (ax + along * ex), ty - (ay + along * ey)
+      if dx * dx + dy * dy < needSq then return false end
+    end
+  end
+  return true
+end
+
+-- Whether t lies at least need from every part 1 .. np.
+local function circleFree(tx, ty, np, need)
+  for p = 1, np do
+    if not farFromPart(tx, ty, faceFirst[p], faceFirst[p + 1] - 1, need) then return false end
+  end
+  return true
+end
+
+-- Keeps candidate t when it is nearer than best and free.
+local function tryCircle(tx, ty, np, need, best, bestX, bestY)
+  local d = sqrt(tx * tx + ty * ty)
+  if d < best and circleFree(tx, ty, np, need) then return d, tx, ty end
+  return best, bestX, bestY
+end
+
+-- The nearest free candidate for a circle of (scaled) radius r among parts 1 .. np.
+local function nearestFreeCircle(np, r, margin)
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local last = faceFirst[np + 1] - 1
+  local reach, need = r + 1.25 * margin, r + margin   -- lines and arcs moved out by lift
+  for f = 1, last do   -- feet on the outer edges' moved lines
+    local d = faceC[f] + reach
+    if faceOuter[f] and abs(d) < best then
+      best, bestX, bestY = tryCircle(faceX[f] * d, faceY[f] * d, np, need, best, bestX, bestY)
+    end
+  end
+  for f = 1, last do   -- straight away from each vertex (the start of each edge)
+    local q = faceQ[f]
+    if q > 0 and abs(q - reach) < best then
+      local s = 1 - reach / q
+      best, bestX, bestY = tryCircle(faceAX[f] * s, faceAY[f] * s, np, need, best, bestX, bestY)
+    end
+  end
+  -- Crossings. A point on a line lies at least |its constant| from the origin, one on an arc at
+  -- least |q - reach|: pieces no nearer than the best so far are skipped.
+  for f = 1, last do
+    local c1, x1, y1 = faceC[f] + reach, faceX[f], faceY[f]
+    local qx, qy = faceAX[f], faceAY[f]
+    local lineNear, arcNear = abs(c1) < best, abs(faceQ[f] - reach) < best
+    if lineNear or arcNear then
+      for g = 1, last do
+        local c2 = faceC[g] + reach
+        if lineNear and g > f and abs(c2) < best then   -- line and line
+          local x2, y2 = faceX[g], faceY[g]
+          local det = x1 * y2 - y1 * x2
+          if det ~= 0 then
+            best, bestX, bestY = tryCircle((c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det,
+              np, need, best, bestX, bestY)
+          end
+        end
+        local px, py = faceAX[g], faceAY[g]
+        if abs(faceQ[g] - reach) < best then
+          if lineNear then   -- line f and the arc around vertex g
+            local h = c1 - (x1 * px + y1 * py)   -- from the vertex to the line, along the normal
+            if abs(h) < reach then
+              local w = sqrt(reach * reach - h * h)
+              local mx, my = px + x1 * h, py + y1 * h
+              best, bestX, bestY = tryCircle(mx - y1 * w, my + x1 * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + y1 * w, my - x1 * w, np, need, best, bestX, bestY)
+            end
+          end
+          if arcNear and g > f then   -- the arcs around vertices f and g
+            local ex, ey = px - qx, py - qy
+            local gap = sqrt(ex * ex + ey * ey)
+            if gap > 0 and gap < 2 * reach then
+              local w = sqrt(reach * reach - gap * gap / 4) / gap
+              local mx, my = (qx + px) / 2, (qy + py) / 2
+              best, bestX, bestY = tryCircle(mx - ey * w, my + ex * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + ey * w, my - ex * w, np, need, best, bestX, bestY)
+            end
+          end
+        end
+      end
+    end
+  end
+  return best, bestX, bestY
+end
+
+-- The Chebyshev distance from the origin to the box of D for part i of boxes1 and a circle.
+local function circleBoxGap(i, cx, cy, r, k)
+  local a = 4 * i
+  local gx = max((boxes1[a - 3] - cx - r) * k, (cx - r - boxes1[a - 1]) * k, 0.0)
+  local gy = max((boxes1[a - 2] - cy - r) * k, (cy - r - boxes1[a]) * k, 0.0)
+  return max(gx, gy)
+end
+
+-- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
+function collideCircleParts(fname, shape, cx, cy, r)
+  checkFinite(cx, fname, "cx", 4)
+  checkFinite(cy, fname, "cy", 4)
+  checkFinite(r, fname, "radius", 4)
+  if r < 0 then error(("%s: radius must not be negative, got %s"):format(fname, tostring(r)), 3) end
+  local info = preparedParts[shape]
+  local count, size, stale, left, top, right, bottom = scanShape(fname, "points", shape, true, boxes1, info)
+  if stale or not info then info = prepareParts(shape) end
+  cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
+  if r == 0 then return false end
+  callStamp = callStamp + 1
+  size = max(size, abs(cx) + r, abs(cy) + r)
+  local k = 1.0
+  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- as for polygons: 64 eps E + 2 eps S
+  local np, last, hit = 0, 0, false
+  for i = 1, count do
+    if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
+        and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
+      local part = shape[i]
+      local n = #part
+      local orientation = partTurn(part, i, turns1, stamps1)
+      if orientation ~= 0 then
+        if circleCollision(part, n, cx, cy, r) then hit = true end
+        np = np + 1
+        faceFirst[np] = last + 1
+        last = addCircleFaces(part, n, orientation, info.internal[i], cx, cy, k, last)
+        faceFirst[np + 1] = last + 1
+      end
+    end
+  end
+  if not hit then return false end
+  local reach = -huge   -- parts whose grown box is nearer than reach are in already
+  local best, tx, ty = nearestFreeCircle(np, r * k, margin)
+  while true do
+    local nextReach = best + 4 * margin
+    if nextReach <= reach then break end
+    local before = np
+    for i = 1, count do
+      local a = 4 * i
+      if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
+          and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+        local gap = circleBoxGap(i, cx, cy, r, k)
+        local orientation = gap >= reach and gap < nextReach and partTurn(shape[i], i, turns1, stamps1)
+        if orientation and orientation ~= 0 then
+          np = np + 1
+          faceFirst[np] = last + 1
+          last = addCircleFaces(shape[i], #shape[i], orientation, info.internal[i], cx, cy, k, last)
+          faceFirst[np + 1] = last + 1
+        end
+      end
+    end
+    reach = nextReach
+    if np == before then break end
+    -- More parts can only lengthen the least move: if the best point is still free, it stays.
+    if best == huge or not circleFree(tx, ty, np, r * k + margin) then
+      best, tx, ty = nearestFreeCircle(np, r * k, margin)
+    end
+  end
+  if best == huge then
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, 0.0, -2 * extent
+  end
+  return best / k, tx / k + 0.0, ty / k + 0.0
 end
 
 --------------------------------------------------------------------------------------------------

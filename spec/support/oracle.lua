@@ -410,6 +410,27 @@ function oracle.push(p1, p2, both)
 end
 
 ---------------------------------------------------------------------------------------------------
+-- Depth bounds without rounding.
+
+--- Whether the exact least penetration depth (min over the tested axes of overlap / |n|) is at
+-- least a - b, for doubles a and b, decided exactly: x <= overlap / |n| <=> x <= 0 or
+-- x^2 |n|^2 <= overlap^2 (every overlap is >= 0 when the polygons collide; call it only then).
+function oracle.depthAtLeast(p1, p2, both, a, b)
+  local x = sub(new(a), new(b))
+  if sign(x) <= 0 then
+    return true
+  end
+  local xx = mul(x, x)
+  for _, o in ipairs(oracle.axisOverlaps(p1, p2, both)) do
+    local nn = add(mul(o.nx, o.nx), mul(o.ny, o.ny))
+    if sign(o.overlap) < 0 or exact.compare(mul(xx, nn), mul(o.overlap, o.overlap)) > 0 then
+      return false
+    end
+  end
+  return true
+end
+
+---------------------------------------------------------------------------------------------------
 -- Circles, exactly: the open disc against another disc or against a convex polygon's interior.
 
 -- (x - a)^2 + (y - b)^2 for exact values.
@@ -476,25 +497,168 @@ function oracle.discMeetsPolygon(points, cx, cy, r)
   return false
 end
 
----------------------------------------------------------------------------------------------------
--- Depth bounds without rounding.
 
---- Whether the exact least penetration depth (min over the tested axes of overlap / |n|) is at
--- least a - b, for doubles a and b, decided exactly: x <= overlap / |n| <=> x <= 0 or
--- x^2 |n|^2 <= overlap^2 (every overlap is >= 0 when the polygons collide; call it only then).
-function oracle.depthAtLeast(p1, p2, both, a, b)
-  local x = sub(new(a), new(b))
-  if sign(x) <= 0 then
-    return true
+---------------------------------------------------------------------------------------------------
+-- Pieces of a polygon (triangulations, convex decompositions), checked exactly.
+
+-- The sign of (b - a) x (c - a): the product in doubles when it clears Shewchuk's error bound
+-- for it ((3 + 16 eps) eps (|l| + |r|) < 1e-15 (|l| + |r|)), else the exact oracle.orient. The
+-- filter is the oracle's own; a point equal to a or b gives 0 at once.
+local function orientFiltered(ax, ay, bx, by, cx, cy)
+  if (cx == ax and cy == ay) or (cx == bx and cy == by) then
+    return 0
   end
-  local xx = mul(x, x)
-  for _, o in ipairs(oracle.axisOverlaps(p1, p2, both)) do
-    local nn = add(mul(o.nx, o.nx), mul(o.ny, o.ny))
-    if sign(o.overlap) < 0 or exact.compare(mul(xx, nn), mul(o.overlap, o.overlap)) > 0 then
-      return false
+  local l = ((bx + 0.0) - ax) * ((cy + 0.0) - ay)
+  local r = ((by + 0.0) - ay) * ((cx + 0.0) - ax)
+  local det, bound = l - r, 1e-15 * (math.abs(l) + math.abs(r))
+  if det > bound then
+    return 1
+  elseif det < -bound then
+    return -1
+  end
+  return oracle.orient(ax, ay, bx, by, cx, cy)
+end
+oracle.orientFiltered = orientFiltered
+
+-- Whether an edge of convex p (wound by w: 1 for "cw", -1 for "ccw") has every vertex of q on its
+-- outer side or on its line: then the interiors of p and q are disjoint.
+local function edgeSeparates(p, q, w)
+  local n = #p
+  for i = 1, n - 1, 2 do
+    local j = i + 2 > n and 1 or i + 2
+    local ax, ay, bx, by = p[i], p[i + 1], p[j], p[j + 1]
+    if ax ~= bx or ay ~= by then
+      local all = true
+      for k = 1, #q - 1, 2 do
+        if w * orientFiltered(ax, ay, bx, by, q[k], q[k + 1]) > 0 then
+          all = false
+          break
+        end
+      end
+      if all then
+        return true
+      end
     end
   end
+  return false
+end
+
+--- Checks pieces (flat arrays) against a polygon with optional holes, exactly: every piece
+-- vertex is an input vertex bit for bit, every piece is wound like points (nonzero area) and,
+-- with `convex`, oracle.polygonType says "convex" (triangles always are), the pieces' signed
+-- areas add up to the polygon's (holes subtracted) exactly, and no two pieces' interiors
+-- overlap (two convex polygons are disjoint when an edge of one has the other on its outer
+-- side: tested for every pair whose boxes overlap, found by a sweep in x).
+-- @return true, or false and what failed
+function oracle.checkPieces(points, holes, pieces, convex)
+  holes = holes or {}
+  local key = function(x, y)
+    return ("%.17g %.17g"):format(x, y)
+  end
+  local known = {}
+  local rings = { points }
+  for _, hole in ipairs(holes) do
+    rings[#rings + 1] = hole
+  end
+  for _, ring in ipairs(rings) do
+    for i = 1, #ring - 1, 2 do
+      known[key(ring[i], ring[i + 1])] = true
+    end
+  end
+  local winding = oracle.winding(points)
+  local w = winding == "cw" and 1 or -1
+  for p, piece in ipairs(pieces) do
+    for i = 1, #piece - 1, 2 do
+      if not known[key(piece[i], piece[i + 1])] then
+        return false, ("piece %d: vertex %s is not an input vertex"):format(p, key(piece[i], piece[i + 1]))
+      end
+    end
+    if #piece == 6 then
+      if orientFiltered(piece[1], piece[2], piece[3], piece[4], piece[5], piece[6]) ~= w then
+        return false, ("piece %d is not wound %s"):format(p, winding)
+      end
+    elseif oracle.winding(piece) ~= winding then
+      return false, ("piece %d is not wound %s"):format(p, winding)
+    end
+    if convex and #piece > 6 and oracle.polygonType(piece) ~= "convex" then
+      return false, ("piece %d is not convex"):format(p)
+    end
+  end
+  -- area: sum over pieces of their shoelace terms minus the polygon's, holes subtracted
+  local as, bs, signs = {}, {}, {}
+  local function terms(ring, s)
+    local n = #ring / 2
+    for i = 1, n do
+      local j = i % n + 1
+      local m = #as
+      as[m + 1], bs[m + 1], signs[m + 1] = ring[2 * i - 1], ring[2 * j], s
+      as[m + 2], bs[m + 2], signs[m + 2] = ring[2 * j - 1], ring[2 * i], -s
+    end
+  end
+  for _, piece in ipairs(pieces) do
+    terms(piece, 1)
+  end
+  terms(points, -1)
+  for _, hole in ipairs(holes) do
+    -- a hole takes away its area whatever its winding: add its terms with the sign against points
+    terms(hole, oracle.winding(hole) == winding and 1 or -1)
+  end
+  if sign(exact.sumOfProducts(as, bs, signs)) ~= 0 then
+    return false, "the pieces' areas do not add up to the polygon's"
+  end
+  -- overlaps
+  local order, box = {}, {}
+  for p, piece in ipairs(pieces) do
+    local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+    for i = 1, #piece - 1, 2 do
+      x0, x1 = math.min(x0, piece[i]), math.max(x1, piece[i])
+      y0, y1 = math.min(y0, piece[i + 1]), math.max(y1, piece[i + 1])
+    end
+    box[p], order[p] = { x0, y0, x1, y1 }, p
+  end
+  table.sort(order, function(a, b)
+    return box[a][1] < box[b][1]
+  end)
+  local active = {}
+  for _, p in ipairs(order) do
+    local bp = box[p]
+    local kept = {}
+    for _, q in ipairs(active) do
+      local bq = box[q]
+      if bq[3] > bp[1] then
+        kept[#kept + 1] = q
+        if bq[2] < bp[4] and bp[2] < bq[4]
+          and not edgeSeparates(pieces[p], pieces[q], w) and not edgeSeparates(pieces[q], pieces[p], w) then
+          return false, ("pieces %d and %d overlap"):format(q, p)
+        end
+      end
+    end
+    kept[#kept + 1] = p
+    active = kept
+  end
   return true
+end
+
+--- The number of reflex vertices of a polygon (turning against its winding), exactly; repeated
+-- consecutive vertices are skipped.
+function oracle.reflexCount(points)
+  local w = oracle.winding(points) == "cw" and 1 or -1
+  local xs, ys = {}, {}
+  local n = #points / 2
+  for i = 1, n do
+    local j = i % n + 1
+    if points[2 * i - 1] ~= points[2 * j - 1] or points[2 * i] ~= points[2 * j] then
+      xs[#xs + 1], ys[#ys + 1] = points[2 * i - 1], points[2 * i]
+    end
+  end
+  local count = 0
+  for i = 1, #xs do
+    local a, c = (i - 2) % #xs + 1, i % #xs + 1
+    if w * orientFiltered(xs[a], ys[a], xs[i], ys[i], xs[c], ys[c]) < 0 then
+      count = count + 1
+    end
+  end
+  return count
 end
 
 return oracle

@@ -1,0 +1,288 @@
+-- polygonTriangulate and polygonConvexParts on hard input: pinched tile-map outlines, spirals,
+-- combs, stars with near-collinear runs, 1e-9 dents, a fine 256-gon far from the origin, all of
+-- them again translated by 1e5, 1e9 and 1e12 plus a fraction, holes, 10,000-vertex outlines and
+-- invalid input. Every result is held to the exact oracle (oracle.checkPieces).
+
+local polygon = require "polygon"
+local oracle = require "oracle"
+local prng = require "prng"
+local shapes = require "shapes"
+local tiles = require "tiles"
+
+local triangulate, convexParts = polygon.polygonTriangulate, polygon.polygonConvexParts
+
+local OFFSETS = { 1e5 + 0.375, 1e9 + 0.375, 1e12 + 0.375 }
+
+-- A thick spiral strip: out along the outer edge, back along the inner; n vertices.
+local function spiral(n, turns)
+  local half = n / 2
+  local outer, inner = {}, {}
+  for i = 0, half - 1 do
+    local t = i / (half - 1) * turns * 2 * math.pi
+    -- turns 50 apart (8 * 2 pi), the strip 30 wide: a gap of 20 between turns
+    local r = 40 + 8 * t
+    outer[#outer + 1], outer[#outer + 2] = r * math.cos(t), r * math.sin(t)
+    inner[#inner + 1], inner[#inner + 2] = (r - 30) * math.cos(t), (r - 30) * math.sin(t)
+  end
+  local points = outer
+  for i = #inner - 1, 1, -2 do
+    points[#points + 1], points[#points + 2] = inner[i], inner[i + 1]
+  end
+  return points
+end
+
+-- A comb: a spine along the bottom and `teeth` teeth of width 2 with gaps of 1, pointing up.
+local function comb(teeth)
+  local points = { 0, 10, 0, 0 }
+  for k = 0, teeth - 1 do
+    local x = 3 * k + 1
+    points[#points + 1], points[#points + 2] = x, 0
+    points[#points + 1], points[#points + 2] = x, -40
+    points[#points + 1], points[#points + 2] = x + 2, -40
+    points[#points + 1], points[#points + 2] = x + 2, 0
+  end
+  points[#points + 1], points[#points + 2] = 3 * teeth + 1, 0
+  points[#points + 1], points[#points + 2] = 3 * teeth + 1, 10
+  return points
+end
+
+-- A star of `spikes` spikes whose edges are cut into `steps` pieces, each cut point moved off
+-- the straight line by a few ulps: runs of vertices almost, but not exactly, in line.
+local function nearCollinearStar(spikes, steps, rng)
+  local points = {}
+  for k = 0, 2 * spikes - 1 do
+    local a0, a1 = k * math.pi / spikes, (k + 1) * math.pi / spikes
+    local r0, r1 = k % 2 == 0 and 100 or 40, k % 2 == 0 and 40 or 100
+    local x0, y0, x1, y1 = r0 * math.cos(a0), r0 * math.sin(a0), r1 * math.cos(a1), r1 * math.sin(a1)
+    for s = 0, steps - 1 do
+      local f = s / steps
+      local wobble = 1 + (rng:int(-4, 4) * 2 ^ -52)
+      points[#points + 1] = (x0 + (x1 - x0) * f) * wobble
+      points[#points + 1] = (y0 + (y1 - y0) * f) * wobble
+    end
+  end
+  return points
+end
+
+-- The unit square with a dent of depth 1e-9 in its bottom edge and a bump of 1e-9 on its top.
+local DENTED = { 0, 0, 0.5, 1e-9, 1, 0, 1, 1, 0.5, 1 + 1e-9, 0, 1 }
+
+-- A convex n-gon of radius r centred at (cx, cy).
+local function regular(n, r, cx, cy)
+  local points = {}
+  for i = 0, n - 1 do
+    local t = 2 * math.pi * i / n
+    points[#points + 1], points[#points + 2] = cx + r * math.cos(t), cy + r * math.sin(t)
+  end
+  return points
+end
+
+-- A star-shaped outline of n vertices with random radii in [0.6 R, 1.4 R]: simple, concave.
+local function noisyCircle(n, rng)
+  local points = {}
+  for i = 0, n - 1 do
+    local t = 2 * math.pi * i / n
+    local r = 1000 * (0.6 + 0.8 * rng:float())
+    points[#points + 1], points[#points + 2] = r * math.cos(t), r * math.sin(t)
+  end
+  return points
+end
+
+-- Checks both functions on one polygon against the oracle; returns the parts.
+local function checkBoth(points, holes)
+  local tris, message = triangulate(points, holes)
+  assert.is_truthy(tris, message)
+  local ok, why = oracle.checkPieces(points, holes, tris, false)
+  assert.is_true(ok, why)
+  local parts
+  parts, message = convexParts(points, holes)
+  assert.is_truthy(parts, message)
+  ok, why = oracle.checkPieces(points, holes, parts, true)
+  assert.is_true(ok, why)
+  -- Hertel and Mehlhorn's bound: every diagonal left is needed at a reflex vertex, at most two
+  -- per reflex vertex, so at most 2 r + 1 parts (every hole vertex counts as reflex)
+  local r = oracle.reflexCount(points)
+  for _, hole in ipairs(holes or {}) do r = r + #hole / 2 end
+  assert.is_true(#parts <= 2 * r + 1, ("%d parts for %d reflex vertices"):format(#parts, r))
+  assert.is_true(#parts <= #tris)
+  return parts, tris
+end
+
+describe("the oracle for pieces", function()
+  it("catches an overlap, a gap, a foreign vertex and a wrong winding", function()
+    local square = { 0, 0, 10, 0, 10, 10, 0, 10 }
+    local tris = triangulate(square)
+    assert.is_true(oracle.checkPieces(square, nil, tris))
+    -- the square's two halves along the other diagonal, plus one overlapping triangle
+    local halves = { { 0, 0, 10, 0, 10, 10 }, { 0, 0, 10, 10, 0, 10 } }
+    assert.is_true(oracle.checkPieces(square, nil, halves))
+    assert.is_false(oracle.checkPieces(square, nil, { halves[1], { 0, 0, 10, 0, 0, 10 } }))
+    assert.is_false(oracle.checkPieces(square, nil, { halves[1] }))
+    assert.is_false(oracle.checkPieces(square, nil, { halves[1], { 0, 0, 10, 10, 0, 10.5 } }))
+    assert.is_false(oracle.checkPieces(square, nil, { halves[1], shapes.reverse(halves[2]) }))
+    -- equal area, but the pieces overlap and leave a gap
+    assert.is_false(oracle.checkPieces(square, nil, { { 0, 0, 10, 0, 10, 10 }, { 0, 0, 10, 0, 10, 10 } }))
+  end)
+end)
+
+describe("polygonTriangulate and polygonConvexParts on hard input", function()
+  describe("when given pinched tile-map outlines", function()
+    it("cover every outline of random tile sets exactly, holes included", function()
+      local rng = prng.new(4242)
+      local shapesSeen, holesSeen, pinches = 0, 0, 0
+      for round = 1, 36 do
+        local set = tiles.random(rng, 6, 6, ({ 0.55, 0.7, 0.8 })[round % 3 + 1])
+        for _, shape in ipairs(tiles.shapes(set, 10, 0, 0)) do
+          local outline, holes = shape[1], shape[2]
+          checkBoth(outline, holes)
+          shapesSeen, holesSeen = shapesSeen + 1, holesSeen + #holes
+          local seen = {}
+          for i = 1, #outline - 1, 2 do
+            local key = outline[i] .. "," .. outline[i + 1]
+            if seen[key] then pinches = pinches + 1 end
+            seen[key] = true
+          end
+        end
+      end
+      -- the generator does make the cases this is about
+      assert.is_true(shapesSeen > 40 and holesSeen > 5 and pinches > 20,
+        ("%d outlines, %d holes, %d pinch points"):format(shapesSeen, holesSeen, pinches))
+    end)
+
+    it("do the same far from the origin", function()
+      local rng = prng.new(777)
+      for _ = 1, 6 do
+        local set = tiles.random(rng, 5, 5, 0.7)
+        for _, offset in ipairs(OFFSETS) do
+          for _, shape in ipairs(tiles.shapes(set, 10, offset, -offset)) do
+            checkBoth(shape[1], shape[2])
+          end
+        end
+      end
+    end)
+
+    it("split the issue's two tiles meeting at a corner into the two tiles", function()
+      local parts = checkBoth({ 0, 0, 10, 0, 10, 10, 20, 10, 20, 20, 10, 20, 10, 10, 0, 10 })
+      assert.are.equal(2, #parts)
+    end)
+  end)
+
+  describe("when given spirals, combs and near-collinear stars", function()
+    it("cover a spiral of 400 vertices", function()
+      checkBoth(spiral(400, 3))
+    end)
+
+    it("cover a comb of 40 teeth, in as many parts as teeth plus the spine", function()
+      local parts = checkBoth(comb(40))
+      assert.is_true(#parts <= 2 * 40 + 1)
+    end)
+
+    it("cover stars whose edges are runs of almost collinear vertices", function()
+      local rng = prng.new(99)
+      for _ = 1, 4 do
+        checkBoth(nearCollinearStar(7, 6, rng))
+      end
+    end)
+
+    it("cover a square with dents of 1e-9", function()
+      local parts = checkBoth(DENTED)
+      -- the dent is a reflex vertex, the bump a convex one: two parts
+      assert.are.equal(2, #parts)
+    end)
+
+    it("cover all of them translated by 1e5, 1e9 and 1e12 plus a fraction", function()
+      local rng = prng.new(5)
+      local cases = { spiral(200, 2), comb(12), nearCollinearStar(5, 4, rng), DENTED }
+      for _, offset in ipairs(OFFSETS) do
+        for _, points in ipairs(cases) do
+          checkBoth(shapes.translate(points, offset, offset * 0.75))
+        end
+      end
+    end)
+  end)
+
+  describe("when given a convex 256-gon of radius 1 at (5e5, 5e5)", function()
+    it("gives 254 triangles and one part", function()
+      local points = regular(256, 1, 5e5, 5e5)
+      assert.are.equal("convex", oracle.polygonType(points))
+      local parts, tris = checkBoth(points)
+      assert.are.equal(254, #tris)
+      assert.are.equal(1, #parts)
+      assert.are.equal(#points, #parts[1])
+    end)
+  end)
+
+  describe("when given holes", function()
+    it("cover a comb with holes, one touching the outline at a vertex", function()
+      local outline = { 0, 0, 100, 0, 100, 100, 0, 100 }
+      local holes = {
+        { 0, 0, 20, 10, 10, 20 },                 -- touches the outline at (0, 0)
+        { 40, 40, 60, 40, 60, 60, 40, 60 },
+        { 60, 60, 80, 70, 70, 80 },               -- touches the square hole at (60, 60)
+        { 20, 70, 30, 75, 25, 90 },
+      }
+      checkBoth(outline, holes)
+      for _, offset in ipairs(OFFSETS) do
+        local moved = {}
+        for i, hole in ipairs(holes) do moved[i] = shapes.translate(hole, offset, offset) end
+        checkBoth(shapes.translate(outline, offset, offset), moved)
+      end
+    end)
+
+    it("cover a 64-gon with 20 square holes", function()
+      local outline = regular(64, 1000, 0, 0)
+      local holes = {}
+      for i = 0, 19 do
+        local x, y = -500 + (i % 5) * 220, -450 + math.floor(i / 5) * 250
+        holes[#holes + 1] = { x, y, x + 100, y, x + 100, y + 100, x, y + 100 }
+      end
+      checkBoth(outline, holes)
+    end)
+  end)
+
+  describe("when given 10,000-vertex outlines", function()
+    it("cover a noisy circle of 10,000 vertices", function()
+      local parts, tris = checkBoth(noisyCircle(10000, prng.new(31)))
+      assert.are.equal(9998, #tris)
+      assert.is_true(#parts < 9998)
+    end)
+
+    it("cover a spiral of 10,000 vertices with 9,998 triangles", function()
+      -- the triangulation only: checking 5,000 convex parts exactly would double the spec's time
+      local points = spiral(10000, 6)
+      local tris = triangulate(points)
+      assert.are.equal(9998, #tris)
+      assert.is_true(oracle.checkPieces(points, nil, tris))
+    end)
+  end)
+
+  describe("when given invalid input", function()
+    it("returns nil and a message for a bow-tie", function()
+      local tris, message = triangulate({ 0, 0, 10, 10, 10, 0, 0, 20, -10, 20, -10, 10 })
+      assert.is_nil(tris)
+      assert.are.equal("edges cross", message)
+    end)
+
+    it("returns nil and a message for a comb with one tooth bent across its neighbour", function()
+      local points = comb(10)
+      -- the third tooth's top right corner (9, -40) moved to x = 14, past the fourth tooth
+      -- (x from 10 to 12): tooth k's corners start at index 5 + 8 k, this one is the third
+      assert.are.equal(9, points[5 + 8 * 2 + 4])
+      points[5 + 8 * 2 + 4] = 14
+      local tris, message = triangulate(points)
+      assert.is_nil(tris)
+      assert.are.equal("edges cross", message)
+      assert.is_nil(convexParts(points))
+    end)
+
+    it("returns nil and a message for a hole outside, far from the origin too", function()
+      for _, offset in ipairs({ 0, 1e12 + 0.375 }) do
+        local outline = shapes.translate({ 0, 0, 10, 0, 10, 10, 0, 10 }, offset, offset)
+        local hole = shapes.translate({ 20, 0, 30, 0, 30, 10 }, offset, offset)
+        local tris, message = triangulate(outline, { hole })
+        assert.is_nil(tris)
+        assert.truthy(message:find("outside"))
+      end
+    end)
+  end)
+end)
