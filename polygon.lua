@@ -1407,7 +1407,7 @@ end
 -- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
 local sweepLeft, sweepRight
 
-local function before(a, b)   -- nodes in (x, y) order
+local function precedes(a, b)   -- nodes in (x, y) order
   return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
 end
 
@@ -1423,7 +1423,7 @@ end
 -- edges in line: the later left end tested against the other edge, then its right end.
 local function edgeOrder(s, t)
   local flip = 1
-  if before(sweepLeft[s], sweepLeft[t]) then s, t, flip = t, s, -1 end
+  if precedes(sweepLeft[s], sweepLeft[t]) then s, t, flip = t, s, -1 end
   local a, b = sweepLeft[t], sweepRight[t]
   local side = orient(a, b, sweepLeft[s])
   if side == 0 then side = orient(a, b, sweepRight[s]) end
@@ -1439,7 +1439,7 @@ local function sweepCrossing(starts)
     local k = s
     repeat
       local q = nextNode[k]
-      if before(k, q) then sweepLeft[k], sweepRight[k] = k, q else sweepLeft[k], sweepRight[k] = q, k end
+      if precedes(k, q) then sweepLeft[k], sweepRight[k] = k, q else sweepLeft[k], sweepRight[k] = q, k end
       events[#events + 1], events[#events + 2] = k, -k
       k = q
     until k == s
