@@ -1999,8 +1999,9 @@ end
 -- Ear clipping over one ring of vertex nodes: holes are first joined to the outer ring by a
 -- bridge to a vertex they see (Eberly's method), an ear is a strictly convex vertex whose
 -- triangle no other vertex blocks, and the vertices a triangle's box could hold are found in a
--- z-order (Morton) list, as earcut does, so an ear test costs about as much at 10,000 vertices
--- as at 100. Every decision is a sign from cross, exact; coordinates are only ever copied.
+-- z-order (Morton) list, as earcut does, so an ear test looks at the vertices near its triangle,
+-- not at all of them. Every decision is an exact sign (orient: cross's filter, then crossExact);
+-- coordinates are only ever copied.
 -- The nodes live in arrays indexed by node number, set up by one call and dropped at its end.
 
 local floor, sort = math.floor, table.sort
@@ -2020,8 +2021,9 @@ local function leftmostFirst(a, b)
   return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
 end
 
--- The sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the interior side
--- of the directed edge a -> b of a ring wound like the outer one.
+-- A number with the sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the
+-- interior side of the directed edge a -> b of a ring wound like the outer one. Only its sign
+-- means anything.
 local function orient(a, b, c)
   local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
   -- c at b is common (edges meeting at a vertex): 0 at once, as the filter would go exact
@@ -2029,15 +2031,14 @@ local function orient(a, b, c)
   -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
   -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
   -- too complex"), which cost polygonConvexParts 50 times its time on a 100-vertex outline
+  -- (Branches taken half the time, as an if for |l + r| or for the sign returned, made more.)
   local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
-  local s, e = l - r, l + r
-  if e < 0 then e = -e end
-  e = CROSS_BOUND * e
+  local s = l - r
+  local e = CROSS_BOUND * abs(l + r)
   if not (s >= e or -s >= e) then   -- also when l and r differ in sign and s is 0: exact, rare
     s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
   end
-  if s > 0 then return turn elseif s < 0 then return -turn end
-  return 0
+  return s * turn
 end
 
 local function same(a, b)
@@ -2084,14 +2085,86 @@ end
 -- Whether segments a-b and c-d cross at one point inside both (a proper crossing).
 local function properlyCross(a, b, c, d)
   local s1, s2 = orient(a, b, c), orient(a, b, d)
-  if s1 == 0 or s2 == 0 or s1 == s2 then return false end
+  if not ((s1 > 0 and s2 < 0) or (s1 < 0 and s2 > 0)) then return false end
   local s3, s4 = orient(c, d, a), orient(c, d, b)
-  return s3 ~= 0 and s4 ~= 0 and s3 ~= s4
+  return (s3 > 0 and s4 < 0) or (s3 < 0 and s4 > 0)
 end
 
--- Whether two edges of the rings starting at the given nodes properly cross. A sweep in x:
--- the edges sorted by their left end, each compared with the earlier ones still reaching it
--- (for outlines whose edges are short next to the whole, a handful).
+-- Shamos and Hoey's sweep: the edges in order along a vertical line moving right; a proper
+-- crossing shows up between two edges next to each other in that order before the line reaches
+-- it, so each edge is tested only against its neighbours when it comes in and when it leaves.
+-- Edge k runs from node k to nextNode[k]; sweepLeft[k] and sweepRight[k] are its ends in (x, y)
+-- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
+local sweepLeft, sweepRight
+
+local function precedes(a, b)   -- nodes in (x, y) order
+  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
+end
+
+local function eventOrder(e, f)   -- by place, and at one place an edge leaves before one comes in
+  local a = e > 0 and sweepLeft[e] or sweepRight[-e]
+  local b = f > 0 and sweepLeft[f] or sweepRight[-f]
+  if nodeX[a] ~= nodeX[b] then return nodeX[a] < nodeX[b] end
+  if nodeY[a] ~= nodeY[b] then return nodeY[a] < nodeY[b] end
+  return e < 0 and f > 0
+end
+
+-- > 0 when edge s lies above edge t where the line meets both (in y-up terms), < 0 below, 0 for
+-- edges in line: the later left end tested against the other edge, then its right end.
+local function edgeOrder(s, t)
+  local flip = 1
+  if precedes(sweepLeft[s], sweepLeft[t]) then s, t, flip = t, s, -1 end
+  local a, b = sweepLeft[t], sweepRight[t]
+  local side = orient(a, b, sweepLeft[s])
+  if side == 0 then side = orient(a, b, sweepRight[s]) end
+  return side * turn * flip
+end
+
+-- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
+-- order came out inconsistent (then the caller asks anyCrossing).
+local function sweepCrossing(starts)
+  sweepLeft, sweepRight = {}, {}
+  local events = {}
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local q = nextNode[k]
+      if precedes(k, q) then sweepLeft[k], sweepRight[k] = k, q else sweepLeft[k], sweepRight[k] = q, k end
+      events[#events + 1], events[#events + 2] = k, -k
+      k = q
+    until k == s
+  end
+  sort(events, eventOrder)
+  local status, m = {}, 0
+  for i = 1, #events do
+    local e = events[i]
+    local s = e > 0 and e or -e
+    -- the first place whose edge does not lie below s
+    local lo, hi = 1, m + 1
+    while lo < hi do
+      local mid = (lo + hi - (lo + hi) % 2) / 2
+      if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+    end
+    if e > 0 then
+      table.insert(status, lo, s); m = m + 1
+      local below, above = status[lo - 1], status[lo + 1]
+      if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
+      if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
+    else
+      while lo <= m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
+      if status[lo] ~= s then return nil end
+      table.remove(status, lo); m = m - 1
+      local below, above = status[lo - 1], status[lo]
+      if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
+        return true
+      end
+    end
+  end
+  return false
+end
+
+-- The same answer by a plainer sweep, should sweepCrossing find its order inconsistent: the
+-- edges sorted by their left end, each compared with the earlier ones still reaching it.
 local function anyCrossing(starts)
   local edges, left = {}, {}
   for _, s in ipairs(starts) do
@@ -2450,7 +2523,10 @@ local function triangulate(fname, points, holes)
     starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0))
     firstId = firstId + m / 2
   end
-  if anyCrossing(starts) then return nil, "edges cross" end
+  local crossing = sweepCrossing(starts)
+  sweepLeft, sweepRight = nil, nil
+  if crossing == nil then crossing = anyCrossing(starts) end
+  if crossing then return nil, "edges cross" end
   for h = 2, #starts do
     local k, side = starts[h]
     repeat
@@ -2502,7 +2578,9 @@ end
 -- points: a flat array; holes: nil or an array of flat arrays inside the polygon (a hole may
 -- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
 -- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
--- Every decision is an exact sign; no triangle has zero area. O(n log n) for ordinary outlines.
+-- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
+-- found by a sweep in O(n log n); the ears cost a few microseconds per vertex on LuaJIT, growing
+-- slowly with n (bench/concave.lua).
 -- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
 -- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
 -- outside the polygon)

@@ -1,8 +1,9 @@
--- The polygon tutorial's five interactive figures, run against the real polygon.lua in LÖVE 11.
+-- The polygon tutorial's five interactive figures and a sixth for concave shapes, run against
+-- the real polygon.lua in LÖVE 11.
 --
---   love examples/love                        from the repository root: keys 1-5 switch scenes
+--   love examples/love                        from the repository root: keys 1-6 switch scenes
 --   love examples/love --screenshots DIR      headless: play a scripted drag in every scene, write
---                                             DIR/scene1.png ... DIR/scene5.png, exit with status 0
+--                                             DIR/scene1.png ... DIR/scene6.png, exit with status 0
 --
 -- Every value drawn comes from polygon.lua; this file and the scenes only draw and drag.
 
@@ -42,6 +43,7 @@ local ui = require "ui"
 
 local SCENES = {
   "scenes.convex", "scenes.contains", "scenes.collision", "scenes.resolution", "scenes.circle",
+  "scenes.concave",
 }
 local scenes = {}
 for i, name in ipairs(SCENES) do
@@ -100,7 +102,7 @@ local function drawFrame()
   end
 
   ui.label(scenes[current].help, 24, ui.HEIGHT - 46, colors.text, "small")
-  ui.label("Keys 1-5: scene    R: reset    Esc: quit    " .. origin, 24, ui.HEIGHT - 26, colors.dim, "small")
+  ui.label("Keys 1-6: scene    R: reset    Esc: quit    " .. origin, 24, ui.HEIGHT - 26, colors.dim, "small")
 end
 
 -- Screenshots ------------------------------------------------------------------------------------
