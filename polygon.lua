@@ -785,6 +785,40 @@ end
 --------------------------------------------------------------------------------------------------
 -- Circles
 --------------------------------------------------------------------------------------------------
+-- A disc collides with a shape when the OPEN disc meets the shape's interior: touching is not
+-- colliding and a radius of 0 never collides. The answer compares squared distances exactly
+-- (degree 2 against a vertex or another circle, degree 4 against an edge), first in floating
+-- point with an error bound, then, only when that bound cannot vouch, as expansions.
+
+-- shared helper: lead moves it to the kernels
+-- Adds sign * (hi + lo)^2 = sign * (hi^2 + 2 hi lo + lo^2) to the expansion exactly.
+local function expAddSquare(hi, lo, sign)
+  expAddProduct(sign * hi, hi)
+  expAddProduct(sign * 2 * hi, lo)
+  expAddProduct(sign * lo, lo)
+end
+
+-- The exact tests scale their differences by a power of two into [2^186, 2^250]: a product of
+-- four such numbers stays below 2^1000 (no overflow), and a term 2^400 times smaller than the
+-- largest still has all its bits above the underflow threshold after four multiplications.
+local SCALE_LO, SCALE_HI = 2^186, 2^250
+
+-- Checks that v is a finite number (NaN and infinities say so in the message).
+local function checkFinite(v, fname, argname, level)
+  if type(v) ~= "number" then
+    error(("%s: %s must be a number, got %s"):format(fname, argname, type(v)), level or 3)
+  end
+  if v ~= v or v == huge or v == -huge then
+    error(("%s: %s must be finite, got %s"):format(fname, argname, tostring(v)), level or 3)
+  end
+end
+
+local function checkRadius(r, fname, argname, level)
+  checkFinite(r, fname, argname, (level or 3) + 1)
+  if r < 0 then
+    error(("%s: %s must not be negative, got %s"):format(fname, argname, tostring(r)), level or 3)
+  end
+end
 
 --- The range of a circle projected on the axis (nx, ny) (unit length), relative to (x, y).
 -- @return min, max
@@ -800,6 +834,79 @@ function polygon.projectCircle(cx, cy, radius, x, y, nx, ny)
   if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
   local s = ((cx + 0.0) - x) * nx + ((cy + 0.0) - y) * ny
   return s - radius, s + radius
+end
+
+-- The exact sign of (r1 + r2)^2 - ((x2 - x1)^2 + (y2 - y1)^2): > 0 when two circles collide.
+-- Every difference and the sum of the radii are split exactly into hi + lo first.
+local function circlesOverlapExact(x1, y1, r1, x2, y2, r2)
+  local dxh, dxl = twoDiff(x2, x1)
+  local dyh, dyl = twoDiff(y2, y1)
+  local rh, rl = twoDiff(r1, -r2)
+  local s = powerScale(max(abs(dxh), abs(dyh), rh), SCALE_LO, SCALE_HI)
+  expLen = 0
+  expAddSquare(rh * s, rl * s, 1)
+  expAddSquare(dxh * s, dxl * s, -1)
+  expAddSquare(dyh * s, dyl * s, -1)
+  return expSign()
+end
+
+-- Whether two circles collide (the open discs meet), exactly. The float difference of the
+-- squares is off by less than 8 eps times their sum (each square is within 3 eps, the
+-- differences and the sum of the radii within one more rounding); beyond the range where the
+-- squares neither overflow nor lose bits to underflow the exact path decides alone.
+local function circlesCollide(x1, y1, r1, x2, y2, r2)
+  local dx, dy, sum = x2 - x1, y2 - y1, r1 + r2
+  local distSq, reachSq = dx * dx + dy * dy, sum * sum
+  local gap = reachSq - distSq
+  local bound = 8 * EPS * (reachSq + distSq)
+  if gap > bound and reachSq < 2^1000 and bound > 2^-900 then return true end
+  if -gap > bound and distSq < 2^1000 and bound > 2^-900 then return false end
+  return circlesOverlapExact(x1, y1, r1, x2, y2, r2) > 0
+end
+
+--- Whether two circles overlap, with the push that separates them.
+-- Touching is not colliding, and a circle of radius 0 never collides; decided exactly.
+-- (dx, dy) moves the second circle: after x2 + dx, y2 + dy (rounded as a game adds them) the
+-- circles no longer collide. Its length exceeds overlap by a few ulps of the coordinates at
+-- most. Circles with the same centre are pushed along +x.
+-- @return overlap, dx, dy (overlap = r1 + r2 - distance) or false
+function polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
+  local fname = "circlesCollideV"
+  checkFinite(x1, fname, "x1")
+  checkFinite(y1, fname, "y1")
+  checkRadius(r1, fname, "r1")
+  checkFinite(x2, fname, "x2")
+  checkFinite(y2, fname, "y2")
+  checkRadius(r2, fname, "r2")
+  x1, y1, r1, x2, y2, r2 = x1 + 0.0, y1 + 0.0, r1 + 0.0, x2 + 0.0, y2 + 0.0, r2 + 0.0
+  -- Far from 1 in magnitude the squares would overflow or underflow: work on copies scaled by a
+  -- power of two (exact, and rounding commutes with it), then scale the answer back.
+  local m = max(abs(x1), abs(y1), abs(x2), abs(y2), r1 + r2)
+  local k = 1.0
+  if m > 2^500 or m < 2^-400 then
+    -- small ones go to 2^-200: every scale factor 2^(64 j) below it stays a finite double
+    k = m > 1 and powerScale(m, 2^-32, 2^32) or powerScale(m, 2^-200, 2^-136)
+    x1, y1, r1, x2, y2, r2 = x1 * k, y1 * k, r1 * k, x2 * k, y2 * k, r2 * k
+    m = m * k
+  end
+  if not circlesCollide(x1, y1, r1, x2, y2, r2) then return false end
+  local dx, dy = x2 - x1, y2 - y1
+  local ux, uy, dist = 1.0, 0.0, 0.0
+  if dx ~= 0 or dy ~= 0 then ux, uy, dist = unit(dx, dy) end
+  local overlap = (r1 + r2) - dist
+  -- Moving by exactly overlap would leave the circles touching at best, and rounding x2 + dx
+  -- can lose up to half an ulp of x2 on each axis. So the push is longer by half an ulp of the
+  -- largest magnitude, doubled until the moved circle clears for certain (usually at once).
+  local step = EPS * m
+  for _ = 1, 64 do
+    local length = overlap + step
+    local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
+    if not circlesCollide(x1, y1, r1, x2 + px, y2 + py, r2) then
+      return overlap / k, px / k, py / k
+    end
+    step = step * 2
+  end
+  error("circlesCollideV: no push separates the circles (an internal defect)", 2)
 end
 
 --- The minimum translation vector of a circle out of a convex polygon.

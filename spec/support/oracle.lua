@@ -389,4 +389,71 @@ function oracle.circleDepth(points, cx, cy, r)
   return best, bux, buy
 end
 
+---------------------------------------------------------------------------------------------------
+-- Circles, exactly: the open disc against another disc or against a convex polygon's interior.
+
+-- (x - a)^2 + (y - b)^2 for exact values.
+local function distanceSquared(x, y, a, b)
+  local dx, dy = sub(x, a), sub(y, b)
+  return add(mul(dx, dx), mul(dy, dy))
+end
+
+--- The sign of (r1 + r2)^2 - ((x2 - x1)^2 + (y2 - y1)^2): 1 when two circles collide.
+function oracle.circlesOverlapSign(x1, y1, r1, x2, y2, r2)
+  local reach = add(new(r1), new(r2))
+  return sign(sub(mul(reach, reach), distanceSquared(new(x2), new(y2), new(x1), new(y1))))
+end
+
+--- The penetration depth r1 + r2 - |c2 - c1| of two circles: the exact sum of the radii less the
+-- square root of the exact squared distance rounded once (a few ulps of the larger term).
+function oracle.circlesDepth(x1, y1, r1, x2, y2, r2)
+  local d2 = exact.tonumber(distanceSquared(new(x2), new(y2), new(x1), new(y1)))
+  return exact.tonumber(add(new(r1), new(r2))) - math.sqrt(d2)
+end
+
+--- Whether the open disc (cx, cy, r) meets the interior of a convex polygon of nonzero area:
+-- r > 0 and the squared distance from the centre to the closed polygon is below r^2. The
+-- distance to a segment a -> b is found by the parameter t = (c - a).(b - a) / |b - a|^2 of the
+-- foot: with L = |b - a|^2 and k = (c - a).(b - a), the foot is a + (k / L)(b - a), and
+-- |c - foot|^2 < r^2 <=> |L (c - a) - k (b - a)|^2 < r^2 L^2, all integers times powers of two.
+function oracle.discMeetsPolygon(points, cx, cy, r)
+  if not solid(points) or r <= 0 then
+    return false
+  end
+  local xs, ys = vertices(points)
+  local ecx, ecy, er = new(cx), new(cy), new(r)
+  local r2 = mul(er, er)
+  local n = #xs
+  -- inside or on the boundary: the centre is on the inner side of (or on) every edge's line
+  local turn = sign(oracle.shoelace(points))
+  local inside = true
+  for i = 1, n do
+    local j = i % n + 1
+    if sign(cross(xs[i], ys[i], xs[j], ys[j], ecx, ecy)) * turn < 0 then
+      inside = false
+    end
+  end
+  if inside then
+    return true
+  end
+  for i = 1, n do
+    if exact.compare(distanceSquared(ecx, ecy, xs[i], ys[i]), r2) < 0 then
+      return true
+    end
+    local j = i % n + 1
+    local ex, ey = sub(xs[j], xs[i]), sub(ys[j], ys[i])
+    local len2 = add(mul(ex, ex), mul(ey, ey))
+    local k = add(mul(sub(ecx, xs[i]), ex), mul(sub(ecy, ys[i]), ey))
+    -- the foot lies strictly between a and b: 0 < k < L
+    if sign(k) > 0 and exact.compare(k, len2) < 0 then
+      local fx = sub(mul(len2, sub(ecx, xs[i])), mul(k, ex))
+      local fy = sub(mul(len2, sub(ecy, ys[i])), mul(k, ey))
+      if exact.compare(add(mul(fx, fx), mul(fy, fy)), mul(r2, mul(len2, len2))) < 0 then
+        return true
+      end
+    end
+  end
+  return false
+end
+
 return oracle
