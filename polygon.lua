@@ -1023,14 +1023,6 @@ local function checkParts(parts, fname, level)
   return count
 end
 
--- A number that is neither infinite nor NaN (v - v is 0 exactly then, NaN otherwise).
-local function checkFinite(v, fname, argname, level)
-  checkNumber(v, fname, argname, level and level + 1 or 4)
-  if v - v ~= 0 then
-    error(("%s: %s must be a finite number, got %s"):format(fname, argname, tostring(v)), level or 3)
-  end
-end
-
 -- The caller's out table, or a new one when none was given.
 local function checkOut(out, fname)
   if out == nil then return {} end

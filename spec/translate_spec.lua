@@ -93,8 +93,8 @@ describe("polygonTranslate", function()
       { { SQUARE, "1", 2 }, "polygonTranslate: dx must be a number, got string" },
       { { SQUARE, 1, nil }, "polygonTranslate: dy must be a number, got nil" },
       { { SQUARE, math.huge, 2 },
-        "polygonTranslate: dx must be a finite number, got " .. tostring(math.huge) },
-      { { SQUARE, 1, 0 / 0 }, "polygonTranslate: dy must be a finite number, got " .. tostring(0 / 0) },
+        "polygonTranslate: dx must be finite, got " .. tostring(math.huge) },
+      { { SQUARE, 1, 0 / 0 }, "polygonTranslate: dy must be finite, got " .. tostring(0 / 0) },
       { { SQUARE, 1, 2, 5 }, "polygonTranslate: out must be a table, got number" },
       { { { SQUARE }, 1, 2, { "x" } }, "polygonTranslate: out[1] must be a table, got string" },
     }
