@@ -51,7 +51,7 @@ function Grid:clear()
   self.nused = 0
 end
 
--- Puts shape `id` (ids must be inserted in increasing order) into every cell its box touches.
+-- Puts shape `id` into every cell its box touches (pairs come out in the order of insertion).
 function Grid:insert(id, minx, miny, maxx, maxy)
   local size, cols = self.size, self.cols
   local cx0, cx1 = cellOf(minx, self.x0, size, cols - 1), cellOf(maxx, self.x0, size, cols - 1)
