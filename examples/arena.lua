@@ -101,10 +101,19 @@ end
 -- shape about its centroid at angle 0) or a circle; invMass is 0 for the static walls.
 --------------------------------------------------------------------------------------------------
 
--- Moves a body by (dx, dy): its position and, for a polygon, its world points in place.
+-- Moves a body by (dx, dy): its position, its box and, for a polygon, its world points in place.
+-- The polygon's box moves with it exactly: rounding keeps order, so min(x_i) + dx rounds to
+-- min(x_i + dx) rounded.
 local function move(body, dx, dy)
   body.x, body.y = body.x + dx, body.y + dy
-  if body.kind == "polygon" then polygon.polygonTranslate(body.points, dx, dy, body.points) end
+  if body.kind == "polygon" then
+    polygon.polygonTranslate(body.points, dx, dy, body.points)
+    body.minx, body.miny, body.maxx, body.maxy = body.minx + dx, body.miny + dy, body.maxx + dx,
+      body.maxy + dy
+  else
+    body.minx, body.miny, body.maxx, body.maxy = body.x - body.r, body.y - body.r, body.x + body.r,
+      body.y + body.r
+  end
 end
 
 -- Applies the push (dx, dy) that separates `b` from `a`, split by mass: b moves by the share
@@ -138,9 +147,12 @@ local function collidePair(a, b)
   return overlap, dx, dy
 end
 
--- Resolves one candidate pair; returns the overlap found (0 when apart).
+-- Resolves one candidate pair; returns the overlap found (0 when apart). Boxes that do not
+-- overlap (or just touch: touching is not colliding) rule the pair out before the exact test:
+-- most grid neighbours are apart.
 local function resolvePair(a, b)
   if a.invMass == 0 and b.invMass == 0 then return 0 end
+  if a.maxx <= b.minx or b.maxx <= a.minx or a.maxy <= b.miny or b.maxy <= a.miny then return 0 end
   local overlap, dx, dy = collidePair(a, b)
   if not overlap then return 0 end
   push(a, b, dx, dy)

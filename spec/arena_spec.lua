@@ -41,12 +41,12 @@ describe("examples/arena.lua", function()
     assert.are.equal(254, stats.bodies)
   end)
 
-  it("resolves real contacts: hundreds of candidate pairs, over 100000 module calls", function()
+  it("resolves real contacts: hundreds of candidate pairs, over 50000 module calls", function()
     assert.is_true(stats.pairs > 200, tostring(stats.pairs))
-    assert.is_true(stats.calls > 100000, tostring(stats.calls))
+    assert.is_true(stats.calls > 50000, tostring(stats.calls))
   end)
 
-  -- A call that built one table would grow the heap by 16+ bytes per call, 2+ MB in all; what
+  -- A call that built one table would grow the heap by 16+ bytes per call, 1+ MB in all; what
   -- does grow is a few one-time reallocations in the first frames (the interpreter's stack, the
   -- exact path's scratch array), measured at 0 to 3.4 KB on the five interpreters.
   it("grows the heap by less than 8 KB over all the module's calls, in at most 8 calls", function()
