@@ -1168,10 +1168,11 @@ end
 -- of parts, the parts' centroids weighted by their areas; the vertex mean when the area is 0).
 -- In screen coordinates (y down) a positive angle turns CLOCKWISE on screen: (1, 0) about (0, 0)
 -- by pi / 2 goes to (0, 1), straight down.
--- Rounding: cos and sin are rounded (and pi / 2 is not pi / 2), and each new coordinate is
--- x' = ox + (c (x - ox) - s (y - oy)) in four roundings, so a vertex at distance r from the pivot
--- lands within about 4 eps (r + |x'|) of the exact rotation per coordinate plus 2 eps r from cos
--- and sin (eps = 2^-53): a few ulps. Angle 0 copies the points unchanged. Rotating a convex
+-- Rounding: each new coordinate is x' = ox + (c (x - ox) - s (y - oy)) in five roundings, so a
+-- vertex at distance r from the pivot lands within 4 eps (r + |x'|) (eps = 2^-53) of the exact
+-- rotation by the doubles c = cos(angle), s = sin(angle); those are rounded too (and math.pi / 2
+-- is not exactly pi / 2), a further 2 eps r or so: a few ulps. Angle 0 copies the points
+-- unchanged. Rotating a convex
 -- polygon keeps it convex only up to that rounding: a vertex (nearly) on the line through its
 -- neighbours, within a few ulps of it, may land on either side, so polygonType (exact) can call
 -- the result concave; a vertex that turns by more than the rounding keeps its turn.

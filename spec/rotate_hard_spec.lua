@@ -9,10 +9,11 @@ local rotate = polygon.polygonRotate
 local EPS = 2 ^ -53
 
 describe("polygonRotate rounding", function()
-  -- x' = ox + (c (x - ox) - s (y - oy)) rounds four times: the difference x - ox (error at most
-  -- eps |x - ox|, carried on with a factor |c| or |s| <= 1), the two products, their difference and
-  -- the final sum. With |x - ox| + |y - oy| <= sqrt 2 r and |c dx| + |s dy| <= r that is at most
-  -- (sqrt 2 + 2) eps r + eps |x'| < 4 eps (r + |x'|), to first order.
+  -- x' = ox + (c (x - ox) - s (y - oy)) rounds five times: the differences x - ox and y - oy
+  -- (errors eps |dx|, eps |dy|, carried on with factors |c|, |s|), the two products, their
+  -- difference, and the final sum. Since |c dx| + |s dy| <= r (Cauchy-Schwarz, c^2 + s^2 = 1 up to
+  -- rounding) the first four add at most 3 eps r and the sum eps |x'|: under 4 eps (r + |x'|) to
+  -- first order.
   it("lands within 4 eps (r + |x'|) of the exact rotation by the doubles cos(angle), sin(angle)",
     function()
       local rng = prng.new(20261122)

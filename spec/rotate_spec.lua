@@ -10,7 +10,7 @@ local rotate = polygon.polygonRotate
 local EPS = 2 ^ -53
 
 -- The documented rounding of one rotation, for a vertex at distance r from the pivot landing at
--- coordinate x': 4 eps (r + |x'|) from the four roundings, 2 eps r from cos and sin, plus r times
+-- coordinate x': 4 eps (r + |x'|) from the five roundings, 2 eps r from cos and sin, plus r times
 -- the angle's own error (pi / 2 as a double is off by 6e-17 < eps r): 4 eps (r + |x'|) + 3 eps r.
 local function bound(r, x)
   return 4 * EPS * (r + math.abs(x)) + 3 * EPS * r
