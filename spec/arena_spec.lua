@@ -1,6 +1,7 @@
 -- examples/arena.lua as a module: 30 frames of its 254 shapes, run through arena.run.
 local arena = require "examples.arena"
 local polygon = require "polygon"
+local prng = require "prng"
 
 local FRAMES = 30
 -- Recorded once from a real run, `lua5.4 examples/arena.lua 30` ("checksum 21451653.958041474"),
@@ -68,5 +69,48 @@ describe("examples/arena.lua", function()
     local half = thinnestWidth(arena.newWorld().bodies) / 2
     assert.is_true(half > 1, tostring(half))
     assert.is_true(stats.maxOverlap < half, ("%.4f >= %.4f"):format(stats.maxOverlap, half))
+  end)
+end)
+
+describe("the arena's grid broadphase", function()
+  -- every pair of boxes that overlap (or touch) shares a cell, so the grid must list it, once
+  it("lists every overlapping pair of 300 random boxes once, in the same order twice", function()
+    local rng = prng.new(99)
+    local boxes = {}
+    for i = 1, 300 do
+      -- some beyond the grid (x past 860, y past 700): clamped into its border cells
+      local x, y, w, h = rng:range(-150, 950), rng:range(-150, 750), rng:range(1, 40), rng:range(1, 40)
+      boxes[i] = { x, y, x + w, y + h }
+    end
+    local grid = arena.Grid.new(32, -100, -100, 30, 25)
+    local function listed()
+      grid:clear()
+      for i, b in ipairs(boxes) do grid:insert(i, b[1], b[2], b[3], b[4]) end
+      local pairA, pairB = {}, {}
+      local n = grid:pairs(#boxes, pairA, pairB)
+      local seen, order = {}, {}
+      for k = 1, n do
+        local key = pairA[k] .. ":" .. pairB[k]
+        assert.is_nil(seen[key], "listed twice: " .. key)
+        assert.is_true(pairA[k] < pairB[k])
+        seen[key], order[k] = true, key
+      end
+      return seen, order, n
+    end
+    local seen, order, n = listed()
+    local overlapping = 0
+    for i = 1, #boxes do
+      for j = i + 1, #boxes do
+        local a, b = boxes[i], boxes[j]
+        if a[1] <= b[3] and b[1] <= a[3] and a[2] <= b[4] and b[2] <= a[4] then
+          overlapping = overlapping + 1
+          assert.is_true(seen[i .. ":" .. j], "missing " .. i .. ":" .. j)
+        end
+      end
+    end
+    assert.is_true(overlapping > 50, tostring(overlapping))
+    assert.is_true(n >= overlapping)
+    local _, again = listed()
+    assert.are.same(order, again)
   end)
 end)
