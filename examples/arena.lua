@@ -159,13 +159,16 @@ local function resolvePair(a, b)
   return overlap
 end
 
--- Rebuilds a moving polygon's world points from its base shape, angle and position (two calls
--- writing into the same reused table: nothing allocated), and sets every body's box.
+-- Rebuilds a moving polygon's world points from its base shape, angle and position, into the
+-- same reused table every frame (nothing allocated), and sets every body's box. Turning the base
+-- by the whole angle, rather than last frame's points by the step, keeps rounding from piling up.
 local function place(body)
   if body.kind == "polygon" then
-    if body.invMass > 0 then
+    if body.spin ~= 0 then
       polygon.polygonRotate(body.base, body.angle, 0, 0, body.points)
       polygon.polygonTranslate(body.points, body.x, body.y, body.points)
+    elseif body.invMass > 0 then   -- a shape that does not spin was turned once, in newWorld
+      polygon.polygonTranslate(body.base, body.x, body.y, body.points)
     end
     body.minx, body.miny, body.maxx, body.maxy = polygon.polygonBounds(body.points)
   else
@@ -193,7 +196,7 @@ local function newShape(rng, m, radius)
 end
 
 local function newStatic(points)
-  return { kind = "polygon", points = points, invMass = 0, x = 0, y = 0 }
+  return { kind = "polygon", points = points, invMass = 0, x = 0, y = 0, spin = 0 }
 end
 
 --- A new world: the four walls, 200 polygons (50 of them spinning) and 50 circles, laid out on a
@@ -220,6 +223,7 @@ local function newWorld(seed)
       body.points = {}
       body.angle = rng:range(0, 2 * math.pi)
       body.spin = (k % 4 == 1) and rng:range(-0.05, 0.05) or 0   -- 50 spin (radians per frame)
+      if body.spin == 0 then body.base = polygon.polygonRotate(body.base, body.angle, 0, 0) end
       body.invMass = 1 / polygon.polygonArea(body.base)
     end
     bodies[#bodies + 1] = body
