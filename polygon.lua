@@ -570,158 +570,129 @@ end
 
 -- The projections above are taken relative to a vertex a of one polygon so that far from the
 -- origin they stay as accurate as near it. Their rounding error is at most 4 eps (w |nx| + h |ny|)
--- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that is decided
+-- where w and h bound every |vx - ax| and |vy - ay|; a gap within four times that (16 eps: the
+-- bound of two projections subtracted, doubled for the rounding of the bound itself) is decided
 -- again exactly, with the cross kernel.
 local function projectionTolerance(w, h, nx, ny)
   return 16 * EPS * (w * abs(nx) + h * abs(ny))
 end
 
--- The vertex of points extreme along the normal of edge a -> b: the largest projection when
--- want is -1, the smallest when it is 1. Compared exactly: n.(w - v) has the sign of
--- -(b - a) x (w - v).
-local function extreme(ax, ay, bx, by, points, n, want)
-  local ex, ey = points[1], points[2]
-  for i = 3, n - 1, 2 do
-    local vx, vy = points[i], points[i + 1]
-    if cross(ax, ay, bx, by, ex, ey, vx, vy) * want > 0 then ex, ey = vx, vy end
+-- shared helper: lead moves it to the kernels
+-- Whether points[1..n] holds a NaN or an infinity. Called only where a sum came out non-finite.
+local function holdsNonFinite(points, n)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v ~= v or v == huge or v == -huge then return true end
   end
-  return ex, ey
+  return false
 end
 
--- Whether the edge a -> b has a normal on which the ranges of p1 and p2 are separated or just
--- touch, decided exactly: max1 <= min2 <=> (b - a) x (min2 - max1) <= 0, and likewise below.
-local function separatedExact(ax, ay, bx, by, p1, n1, p2, n2)
-  local hx1, hy1 = extreme(ax, ay, bx, by, p1, n1, -1)
-  local lx2, ly2 = extreme(ax, ay, bx, by, p2, n2, 1)
-  if cross(ax, ay, bx, by, hx1, hy1, lx2, ly2) <= 0 then return true end
-  local lx1, ly1 = extreme(ax, ay, bx, by, p1, n1, 1)
-  local hx2, hy2 = extreme(ax, ay, bx, by, p2, n2, -1)
-  return cross(ax, ay, bx, by, hx2, hy2, lx1, ly1) <= 0
+-- shared helper: lead moves it to the kernels
+-- The largest coordinate magnitude of points[1..n], or m if that is larger.
+local function largestMagnitude(points, n, m)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v < 0 then v = -v end
+    if v > m then m = v end
+  end
+  return m
 end
 
--- The tutorial's test, on the edge normals of `axes` (p1 here): both polygons projected on each
--- normal, and both ends of the ranges compared. Used by the one-sided functions.
--- Returns false on a separating axis; otherwise the least penetration so far: bq, the squared
--- depth, the overlap o >= 0 along the normal (nx, ny) (depth o / |n|), and that normal turned
--- the way the second polygon must move. The squared depth is o (o / |n|^2), which neither
--- overflows nor underflows while the coordinates stay in the exact range.
--- w, h: see projectionTolerance.
-local function leastPenetration(axes, na, p1, n1, p2, n2, w, h, bq, bo, bnx, bny)
-  local ax, ay = axes[na - 1] + 0.0, axes[na] + 0.0
-  for i = 1, na - 1, 2 do
-    local bx, by = axes[i] + 0.0, axes[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = by - ay, ax - bx
-      local min1, max1 = projectRange(p1, n1, ax, ay, nx, ny)
-      local min2, max2 = projectRange(p2, n2, ax, ay, nx, ny)
-      -- up: how far p2 must move along +n to clear p1; down: along -n
-      local up, down = max1 - min2, max2 - min1
-      local tol = projectionTolerance(w, h, nx, ny)
-      if up <= tol or down <= tol then
-        if up < -tol or down < -tol then return false end
-        if separatedExact(ax, ay, bx, by, p1, n1, p2, n2) then return false end
-        -- overlapping by less than the rounding: the float depth may have come out negative
-        if up < 0 then up = 0 end
-        if down < 0 then down = 0 end
-      end
-      local q = (up < down and up or down) / (nx * nx + ny * ny)
-      if up < down then
-        q = q * up
-        if q < bq then bq, bo, bnx, bny = q, up, nx, ny end
-      else
-        q = q * down
-        if q < bq then bq, bo, bnx, bny = q, down, -nx, -ny end
-      end
+-- The SAT engine's one exact fallback: whether no vertex of points, each moved by (dx, dy) and
+-- rounded as a caller's `p[i] + dx` rounds, lies strictly on the side `inside` (1 or -1, the
+-- sign of the cross product) of the line through c parallel to a -> b. Signs are multiplied by
+-- the sign +-1, never by an area, so nothing underflows.
+local function clearOfLine(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
+  for i = 1, n - 1, 2 do
+    if cross(ax, ay, bx, by, cx, cy, points[i] + dx, points[i + 1] + dy) * inside > 0 then
+      return false
     end
-    ax, ay = bx, by
-  end
-  return bq, bo, bnx, bny
-end
-
--- Whether no vertex of `other` lies strictly inside the edge a -> b of a polygon whose area has
--- the sign `turn` (> 0 clockwise on screen), decided exactly.
-local function outsideExact(ax, ay, bx, by, turn, other, no)
-  for i = 1, no - 1, 2 do
-    if turn * cross(ax, ay, bx, by, ax, ay, other[i], other[i + 1]) > 0 then return false end
   end
   return true
 end
 
--- The separating axis test of two convex polygons, face by face: for each edge of `edges`, how
--- deep `other` reaches past it, measured on the edge's outward normal. Two convex polygons
--- overlap exactly when every edge of both is reached past, and the least such depth is the
--- least penetration over all the tutorial's axes and both ends of their ranges (the overlap of
--- the far ends is never smaller: it is the support of the Minkowski difference in a direction
--- that is not a face of it). So one polygon is projected per axis where the tutorial projects
--- both, and the other polygon's own projection is known: its edge, at 0.
--- turn: the sign of the area of `edges`; push: 1 when `other` is the polygon the displacement
--- moves, -1 when `edges` is. Returns false or the best (bq, bo, bnx, bny) as leastPenetration.
-local function deepestReach(edges, ne, turn, other, no, push, w, h, bq, bo, bnx, bny)
-  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
-  for i = 1, ne - 1, 2 do
-    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = (by - ay) * sign, (ax - bx) * sign
-      local depth = -minProjection(other, no, ax, ay, nx, ny)
-      local tol = projectionTolerance(w, h, nx, ny)
-      if depth <= tol then
-        if depth < -tol or outsideExact(ax, ay, bx, by, turn, other, no) then return false end
-        if depth < 0 then depth = 0 end
-      end
-      local q = depth * (depth / (nx * nx + ny * ny))
-      if q < bq then bq, bo, bnx, bny = q, depth, nx * push, ny * push end
-    end
-    ax, ay = bx, by
+-- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
+-- exactly: v lies deeper than e when (b - a) x (v - e) has the sign `inside`.
+local function deepestVertex(ax, ay, bx, by, inside, points, n)
+  local best, ex, ey = 1, points[1], points[2]
+  for i = 3, n - 1, 2 do
+    local vx, vy = points[i], points[i + 1]
+    if cross(ax, ay, bx, by, ex, ey, vx, vy) * inside > 0 then best, ex, ey = i, vx, vy end
   end
-  return bq, bo, bnx, bny
+  return best
 end
 
--- The shared body of the four polygon collision functions: false, or the least penetration as
--- leastPenetration returns it and a size that bounds the coordinates' magnitudes.
--- both: the axes of both polygons, else those of p1 only.
-local collide
-function collide(fname, p1, p2, both)
-  local n1 = checkPoints(p1, fname, "points1", 4)
-  local n2 = checkPoints(p2, fname, "points2", 4)
-  if n1 < 6 or n2 < 6 then return false end
-  local a1, sx1, sd1 = shoelace(p1, n1)
-  local turn1 = areaSignOf(p1, n1, a1, sx1, sd1)
-  if turn1 == 0 then return false end
-  local a2, sx2, sd2 = shoelace(p2, n2)
-  local turn2 = areaSignOf(p2, n2, a2, sx2, sd2)
-  if turn2 == 0 then return false end
-  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
-  -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
-  -- between the two first vertices covers a vertex of one polygon seen from one of the other.
-  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
-  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
-  if not (w + h <= EXACT_TOP) then   -- luacheck: ignore 581 (true for inf and NaN too)
-    -- Far beyond the exact range the projections (products of two sizes) would overflow into
-    -- infinities and NaN. Collide copies scaled by a power of two k instead, to coordinates
-    -- below 2^464, so sizes below 2^500 (this rare path allocates the copies). A projection o
-    -- scales by k^2 and a normal by k, so the normal times k again gives back the depth o / |n|.
-    local m = 0.0
-    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
-    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
-    local k = powerScale(m, 2^400, 2^464)
-    local s1, s2 = {}, {}
-    for i = 1, n1 do s1[i] = p1[i] * k end
-    for i = 1, n2 do s2[i] = p2[i] * k end
-    local q, o, nx, ny, size = collide(fname, s1, s2, both)
-    if not q then return false end
-    return q, o, nx * k, ny * k, size / k, p1, n1, p2, n2
+-- The separating axis test of two convex polygons, face by face: for each edge a -> b of
+-- `edges` (turn: the sign of its area, 1 or -1), how deep `other` reaches past it along its
+-- outward normal n. Two convex polygons overlap exactly when every edge of both is reached past,
+-- and the least such depth is the least penetration over all the tutorial's axes and both ends
+-- of their ranges (the overlap of the far ends is never smaller: it is the support of the
+-- Minkowski difference in a direction that is not a face of it). So one polygon is projected
+-- per axis where the tutorial projects both; the edge itself is the other's range end, at 0.
+-- farEnds (the one-sided functions, which test the axes of one polygon only): the far end of
+-- the ranges too, other reaching beyond the vertex of `edges` deepest inside.
+-- Returns false on a separating or touching axis. Otherwise the least penetration: its squared
+-- depth q = o (o / |n|^2) (neither overflows nor underflows in the exact range), the overlap
+-- o >= 0 along (nx, ny), the normal turned the way `other` must move, and the line the move
+-- must clear: the edge ending at vertex index edgeEnd, moved to pass through vertex index base,
+-- with `inside` the sign of the cross product on the side where `other` must not stay.
+-- w, h: see projectionTolerance.
+local function reachPast(edges, ne, turn, other, no, w, h, farEnds)
+  local leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside =
+    huge, 0.0, 0.0, 0.0, 1, 1, turn
+  local ia = ne - 1
+  local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+  for ib = 1, ne - 1, 2 do
+    local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
+      local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
+      local tol = projectionTolerance(w, h, nx, ny)
+      local depth   -- set on both paths below
+      local base, inside = ia, turn
+      if farEnds then
+        local lo, hi = projectRange(other, no, ax, ay, nx, ny)
+        -- face: how far other must move along n to clear the edge; far: against n, past the
+        -- deepest vertex of edges
+        local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+        if face <= tol then
+          if face < -tol or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+            return false
+          end
+          if face < 0 then face = 0.0 end
+        end
+        if far <= tol then
+          local ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
+          if far < -tol or clearOfLine(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
+                                        other, no, 0.0, 0.0) then
+            return false
+          end
+          if far < 0 then far = 0.0 end
+        end
+        if far < face then
+          depth, nx, ny, inside = far, -nx, -ny, -turn
+          base = deepestVertex(ax, ay, bx, by, turn, edges, ne)
+        else
+          depth = face
+        end
+      else
+        depth = -minProjection(other, no, ax, ay, nx, ny)
+        if depth <= tol then
+          if depth < -tol or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+            return false
+          end
+          if depth < 0 then depth = 0.0 end
+        end
+      end
+      -- keep the least penetration
+      local q = depth * (depth / (nx * nx + ny * ny))
+      if q < leastQ then
+        leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside =
+          q, depth, nx, ny, ib, base, inside
+      end
+    end
+    ia, ax, ay = ib, bx, by
   end
-  local q, o, nx, ny
-  if both then
-    q, o, nx, ny = deepestReach(p1, n1, turn1, p2, n2, 1, w, h, huge, 0, 0, 0)
-    if q then q, o, nx, ny = deepestReach(p2, n2, turn2, p1, n1, -1, w, h, q, o, nx, ny) end
-  else
-    q, o, nx, ny = leastPenetration(p1, n1, p1, n1, p2, n2, w, h, huge, 0, 0, 0)
-  end
-  if not q then return false end
-  -- a bound on the largest coordinate magnitude: |x1| + |y1| + w + h
-  return q, o, nx, ny, abs(p1[1] + 0.0) + abs(p1[2] + 0.0) + w + h, p1, n1, p2, n2
+  return leastQ, leastO, leastNx, leastNy, leastEnd, leastBase, leastInside
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -733,62 +704,203 @@ local function unit(nx, ny)
   return nx / len, ny / len, len * m
 end
 
--- overlap, dx, dy from collide's least penetration. Adding (dx, dy) to the second polygon rounds
--- its coordinates, which can leave an overlap of an ulp that the exact test still sees; so a
--- depth below 2 eps M, M the largest coordinate magnitude (about an ulp of it), is raised to it.
--- Such a push moves every coordinate by at least an ulp along its larger component, so a loop
--- that resolves until nothing collides ends, instead of being told forever to move by zero.
-local function displacement(q, o, nx, ny, size, p1, n1, p2, n2)
-  if not q then return false end
-  -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
-  if nx == 0 and ny == 0 then return 0.0, 0.0, 0.0 end
-  local ux, uy, len = unit(nx, ny)
-  local depth = o / len
-  if depth < 2 * EPS * size then   -- size >= M: only then is M worth finding
-    local m = 0.0
-    for i = 1, n1 do m = max(m, abs(p1[i] + 0.0)) end
-    for i = 1, n2 do m = max(m, abs(p2[i] + 0.0)) end
-    if depth < 2 * EPS * m then depth = 2 * EPS * m end
+-- Below 2^464 the products of two coordinate differences (each below 2^466 after scaling)
+-- cannot overflow; from 2^400 up the scaled copies keep 64 binades of headroom below it.
+local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
+
+--- THE SAT ENGINE. convexPenetration(p1, n1, p2, n2, both) decides exactly whether the
+-- convex polygons p1[1..n1] and p2[1..n2] (flat arrays, either winding) overlap: touching is not
+-- overlapping; fewer than 3 points or zero area never overlaps. both: the axes of both
+-- polygons (polygonsCollide); false: the axes of p1 only, both ends of each range
+-- (polygonCollidesWith). Allocates nothing (except on the rare path beyond 2^500).
+-- Returns
+--   false                                  no overlap (exact);
+--   nil, "points1" or "points2"            that polygon holds a NaN or infinite coordinate;
+--   depth, ux, uy, owner, edgeEnd, base, inside
+--     the least penetration: depth >= 0 (accurate to rounding) along the unit vector (ux, uy)
+--     that p2 must move, and the line the move must clear, for separatingPush: in polygon
+--     `owner` (1 or 2), the edge ending at vertex index edgeEnd moved to pass through vertex
+--     index base, with `inside` the cross product's sign on the side the other must leave.
+local function convexPenetration(p1, n1, p2, n2, both, rescaled)
+  if n1 < 6 or n2 < 6 then return false end
+  local area1, sx1, sd1 = shoelace(p1, n1)
+  -- a NaN or infinity makes these sums non-finite; so does overflow, which is not an error
+  -- luacheck: ignore 581 (NaN must count as non-finite)
+  if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+  local area2, sx2, sd2 = shoelace(p2, n2)
+  -- luacheck: ignore 581 (NaN must count as non-finite)
+  if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
+  if turn1 == 0 then return false end
+  local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
+  if turn2 == 0 then return false end
+  turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0   -- signs, not magnitudes
+  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: within a polygon of m
+  -- vertices |x_i - x_1| <= sqrt(sx) and |y_i - y_1| <= sqrt(m sd); twice that and the distance
+  -- between the two first vertices covers a vertex of one polygon seen from one of the other.
+  local w = 2 * (sqrt(sx1) + sqrt(sx2) + abs((p2[1] + 0.0) - p1[1]))
+  local h = 2 * (sqrt(n1 / 2 * sd1) + sqrt(n2 / 2 * sd2) + abs((p2[2] + 0.0) - p1[2]))
+  if not (w + h <= EXACT_TOP) and not rescaled then   -- luacheck: ignore 581 (inf is too big)
+    -- Far beyond the exact range the projections (products of two sizes) would overflow into
+    -- infinities and NaN. Collide copies scaled by a power of two k instead (this rare path
+    -- allocates them); the scaled engine does not rescale again, so this recurses once.
+    local k = powerScale(largestMagnitude(p2, n2, largestMagnitude(p1, n1, 0.0)),
+      RESCALE_LOW, RESCALE_HIGH)
+    local s1, s2 = {}, {}
+    for i = 1, n1 do s1[i] = p1[i] * k end
+    for i = 1, n2 do s2[i] = p2[i] * k end
+    local depth, ux, uy, owner, edgeEnd, base, inside = convexPenetration(s1, n1, s2, n2, both, true)
+    if not depth then return false end
+    return depth / k, ux, uy, owner, edgeEnd, base, inside
   end
-  return depth, ux * depth + 0.0, uy * depth + 0.0   -- + 0.0 turns -0 into 0
+  local q, o, nx, ny, edgeEnd, base, inside = reachPast(p1, n1, turn1, p2, n2, w, h, not both)
+  if not q then return false end
+  local owner = 1
+  if both then
+    local q2, o2, nx2, ny2, edgeEnd2, base2, inside2 = reachPast(p2, n2, turn2, p1, n1, w, h, false)
+    if not q2 then return false end
+    if q2 < q then   -- keep the least penetration; p2's normals point the way p1 must move
+      q, o, nx, ny, edgeEnd, base, inside, owner = q2, o2, -nx2, -ny2, edgeEnd2, base2, inside2, 2
+    end
+  end
+  -- Only outside the exact range can every axis's squared normal underflow, leaving none chosen
+  if q == huge then return 0.0, 0.0, 0.0, owner, edgeEnd, base, inside end
+  local ux, uy, len = unit(nx, ny)
+  return o / len, ux, uy, owner, edgeEnd, base, inside
 end
+
+-- How many times separatingPush may lengthen a push before it gives up (each round doubles the
+-- lengthening, which starts at an ulp of the coordinates: 64 rounds outgrow any double).
+local PUSH_ROUNDS = 64
+
+--- The push that separates, from convexPenetration's least penetration: the smallest push found
+-- of length >= depth along (ux, uy) after which, with p2's coordinates moved by (dx, dy) and
+-- rounded the way a game moves them, the chosen line separates the polygons exactly (touching
+-- allowed). A rounded move can fall short of the exact depth by the rounding of the moved
+-- coordinates (up to eps times their magnitude along the normal) and of the depth itself; the
+-- exact check sees that, and the push grows by an ulp of the coordinates involved, doubling,
+-- until it clears. Returns push length, dx, dy.
+local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+  if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
+  local lines, nl, others, no = p1, n1, p2, n2
+  if owner == 2 then lines, nl, others, no = p2, n2, p1, n1 end
+  local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+  local ax, ay, bx, by = lines[ia] + 0.0, lines[ia + 1] + 0.0, lines[edgeEnd] + 0.0,
+    lines[edgeEnd + 1] + 0.0
+  local cx, cy = lines[base] + 0.0, lines[base + 1] + 0.0
+  local push, grow = depth, nil
+  for _ = 1, PUSH_ROUNDS do
+    local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
+    local clear
+    if owner == 2 then   -- the line belongs to p2 and moves with it
+      clear = clearOfLine(ax + dx, ay + dy, bx + dx, by + dy, cx + dx, cy + dy, inside,
+        others, no, 0.0, 0.0)
+    else
+      clear = clearOfLine(ax, ay, bx, by, cx, cy, inside, others, no, dx, dy)
+    end
+    if clear then return push, dx, dy end
+    if not grow then
+      -- an ulp of the largest coordinate the check read, at least
+      local m = largestMagnitude(others, no, largestMagnitude(lines, nl, 0.0))
+      grow = EPS * (m + abs(dx) + abs(dy))
+    else
+      grow = grow * 2
+    end
+    push = push + grow
+  end
+  return push, ux * push + 0.0, uy * push + 0.0
+end
+
+--- convexPush(p1, n1, p2, n2, both): convexPenetration, then separatingPush. Returns false, or
+-- nil and the argument name for a non-finite coordinate, or push length, dx, dy: adding (dx, dy)
+-- to every vertex of p2 leaves the polygons touching or apart, exactly.
+local function convexPush(p1, n1, p2, n2, both)
+  local depth, ux, uy, owner, edgeEnd, base, inside = convexPenetration(p1, n1, p2, n2, both)
+  if not depth then return depth, ux end
+  return separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+end
+
+-- Raises the error for a non-finite coordinate at the caller of the public function, which
+-- called the private function that calls this one.
+local function raiseNonFinite(fname, argname)
+  error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+end
+
+local function collides(fname, points1, points2, both)
+  local n1 = checkPoints(points1, fname, "points1", 4)
+  local n2 = checkPoints(points2, fname, "points2", 4)
+  local depth, argname = convexPenetration(points1, n1, points2, n2, both)
+  if depth == nil then raiseNonFinite(fname, argname) end
+  return depth ~= false
+end
+
+-- Lists of convex parts in place of a polygon: the public functions below hand them to the
+-- "Compound shapes" section, which builds on everything up to the circles.
+local isParts, collideParts, collideCircleParts
 
 --- Whether the edge normals of points1 show no separating axis between two convex polygons.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonCollidesWith(points1, points2)
-  return collide("polygonCollidesWith", points1, points2, false) ~= false
+  local collided = collides("polygonCollidesWith", points1, points2, false)
+  return collided
 end
 
 --- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonsCollide(points1, points2)
-  return collide("polygonsCollide", points1, points2, true) ~= false
+  if isParts(points1) or isParts(points2) then
+    local hit = collideParts("polygonsCollide", points1, points2, false)
+    return hit
+  end
+  local collided = collides("polygonsCollide", points1, points2, true)
+  return collided
+end
+
+local function pushOut(fname, points1, points2, both)
+  local n1 = checkPoints(points1, fname, "points1", 4)
+  local n2 = checkPoints(points2, fname, "points2", 4)
+  local push, dx, dy = convexPush(points1, n1, points2, n2, both)
+  if push == nil then raiseNonFinite(fname, dx) end
+  return push, dx, dy
 end
 
 --- As polygonCollidesWith, with the minimum translation vector over the axes of points1.
--- @return overlap, dx, dy (moving points2 by dx, dy makes the polygons just touch) or false
+-- @return overlap, dx, dy or false: after adding (dx, dy) to every vertex of points2,
+-- polygonCollidesWith(points1, moved) is false (see polygonsCollideV)
 function polygon.polygonCollidesWithV(points1, points2)
-  return displacement(collide("polygonCollidesWithV", points1, points2, false))
+  local push, dx, dy = pushOut("polygonCollidesWithV", points1, points2, false)
+  return push, dx, dy
 end
 
 --- As polygonsCollide, with the minimum translation vector.
 -- overlap is the penetration depth along the axis of least penetration, right also when one
 -- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
 -- points2), pointing the right way in either argument order and when the centres coincide.
+-- One push separates: after p[i] = p[i] + dx (and + dy) on points2, rounded,
+-- polygonsCollide(points1, moved) is false, and the push is at most a few ulps of the
+-- coordinates longer than the exact depth. Raises an error for a non-finite coordinate.
 -- @return overlap, dx, dy or false
 function polygon.polygonsCollideV(points1, points2)
-  return displacement(collide("polygonsCollideV", points1, points2, true))
+  if isParts(points1) or isParts(points2) then
+    local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true)
+    return overlap, dx, dy
+  end
+  local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true)
+  return push, dx, dy
 end
 
 --------------------------------------------------------------------------------------------------
 -- Circles
 --------------------------------------------------------------------------------------------------
--- A disc collides with a shape when the OPEN disc meets the shape's interior: touching is not
--- colliding and a radius of 0 never collides. The answer compares squared distances exactly
--- (degree 2 against a vertex or another circle, degree 4 against an edge), first in floating
--- point with an error bound, then, only when that bound cannot vouch, as expansions.
+-- A circle collides with a shape when the OPEN disc meets the shape's interior: touching is not
+-- colliding. Every such answer compares squared distances exactly: against a point (a vertex, or
+-- another circle's centre) r^2 with |c - v|^2, degree 2; against an edge's line r^2 |b - a|^2
+-- with ((b - a) x (c - a))^2, degree 4. Each is first decided in floating point with an error
+-- bound and redone as an expansion only when the bound cannot vouch for the sign.
 
 -- shared helper: lead moves it to the kernels
 -- Adds sign * (hi + lo)^2 = sign * (hi^2 + 2 hi lo + lo^2) to the expansion exactly.
@@ -799,24 +911,139 @@ local function expAddSquare(hi, lo, sign)
 end
 
 -- The exact tests scale their differences by a power of two into [2^186, 2^250]: a product of
--- four such numbers stays below 2^1000 (no overflow), and a term 2^400 times smaller than the
--- largest still has all its bits above the underflow threshold after four multiplications.
+-- four such numbers stays below 2^1010 (no overflow), and a term up to 2^400 times smaller than
+-- the largest keeps every bit above the underflow threshold through four multiplications.
 local SCALE_LO, SCALE_HI = 2^186, 2^250
 
--- Checks that v is a finite number (NaN and infinities say so in the message).
-local function checkFinite(v, fname, argname, level)
-  if type(v) ~= "number" then
-    error(("%s: %s must be a number, got %s"):format(fname, argname, type(v)), level or 3)
+-- The float filters below trust a result only inside [2^-900, 2^1000]: there no square or
+-- product of theirs has overflowed or lost bits to underflow.
+local FILTER_LO, FILTER_HI = 2^-900, 2^1000
+
+-- The exact sign of (rh + rl)^2 - |(x2, y2) - (x1, y1)|^2: > 0 when the point (x2, y2) lies
+-- strictly within rh + rl of (x1, y1). rh + rl is a radius or an exact sum of two.
+local function reachesExact(x1, y1, x2, y2, rh, rl)
+  local dxh, dxl = twoDiff(x2, x1)
+  local dyh, dyl = twoDiff(y2, y1)
+  local s = powerScale(max(abs(dxh), abs(dyh), abs(rh)), SCALE_LO, SCALE_HI)
+  expLen = 0
+  expAddSquare(rh * s, rl * s, 1)
+  expAddSquare(dxh * s, dxl * s, -1)
+  expAddSquare(dyh * s, dyl * s, -1)
+  return expSign()
+end
+
+-- A number with the sign of (rh + rl)^2 - |(x2, y2) - (x1, y1)|^2, exact. The float difference
+-- is off by less than 8 eps times the sum of the squares: each square is within 3 eps, the
+-- differences and the radius within one more rounding.
+local function reaches(x1, y1, x2, y2, rh, rl)
+  local dx, dy = x2 - x1, y2 - y1
+  local distSq, reachSq = dx * dx + dy * dy, rh * rh
+  local gap = reachSq - distSq
+  local bound = 8 * EPS * (reachSq + distSq)
+  if (gap > bound or -gap > bound) and bound > FILTER_LO and bound < FILTER_HI then return gap end
+  return reachesExact(x1, y1, x2, y2, rh, rl)
+end
+
+-- Scratch expansions for the degree-4 test: the cross product and the squared edge length.
+local crossParts, lengthParts = {}, {}
+
+-- The exact sign of r^2 |b - a|^2 - ((b - a) x (c - a))^2: > 0 when the centre c lies strictly
+-- within r of the line through a and b. The differences are split exactly, the cross product
+-- and the squared length summed as compressed expansions, then their products expanded.
+local function lineWithinExact(ax, ay, bx, by, cx, cy, r)
+  local exh, exl = twoDiff(bx, ax)
+  local eyh, eyl = twoDiff(by, ay)
+  local wxh, wxl = twoDiff(cx, ax)
+  local wyh, wyl = twoDiff(cy, ay)
+  local s = powerScale(max(abs(exh), abs(eyh), abs(wxh), abs(wyh), r), SCALE_LO, SCALE_HI)
+  exh, exl, eyh, eyl = exh * s, exl * s, eyh * s, eyl * s
+  wxh, wxl, wyh, wyl = wxh * s, wxl * s, wyh * s, wyl * s
+  expLen = 0
+  expAddProduct(exh, wyh); expAddProduct(exh, wyl); expAddProduct(exl, wyh); expAddProduct(exl, wyl)
+  expAddProduct(-eyh, wxh); expAddProduct(-eyh, wxl); expAddProduct(-eyl, wxh); expAddProduct(-eyl, wxl)
+  expCompress()
+  local crossLen = expLen
+  for i = 1, crossLen do crossParts[i] = EXP[i] end
+  expLen = 0
+  expAddSquare(exh, exl, 1)
+  expAddSquare(eyh, eyl, 1)
+  expCompress()
+  local lengthLen = expLen
+  for i = 1, lengthLen do lengthParts[i] = EXP[i] end
+  local radiusSqHi, radiusSqLo = twoProduct(r * s, r * s)
+  expLen = 0
+  for i = 1, lengthLen do
+    expAddProduct(lengthParts[i], radiusSqLo)
+    expAddProduct(lengthParts[i], radiusSqHi)
   end
+  for i = 1, crossLen do
+    for j = 1, crossLen do expAddProduct(-crossParts[i], crossParts[j]) end
+  end
+  return expSign()
+end
+
+-- A number with the sign of r^2 |b - a|^2 - ((b - a) x (c - a))^2, exact. The cross product is
+-- off by at most 4 eps t, t = |ex wy| + |ey wx|, so its square by 9 eps t^2; the other side by
+-- 6 eps of itself: 16 eps times the sum bounds the error of the difference.
+local function lineWithin(ax, ay, bx, by, cx, cy, r)
+  local ex, ey, wx, wy = bx - ax, by - ay, cx - ax, cy - ay
+  local left, right = ex * wy, ey * wx
+  local crossed = left - right
+  local t = abs(left) + abs(right)
+  local reachSq = r * r * (ex * ex + ey * ey)
+  local gap = reachSq - crossed * crossed
+  local bound = 16 * EPS * (reachSq + t * t)
+  if (gap > bound or -gap > bound) and bound > FILTER_LO and bound < FILTER_HI then return gap end
+  return lineWithinExact(ax, ay, bx, by, cx, cy, r)
+end
+
+-- A number with the sign of (c - a).(b - a), exact: it is the cross product of c - a with
+-- b - a turned a quarter, (c - a) x (ay - by, bx - ax).
+local function dot(ax, ay, cx, cy, bx, by)
+  return cross(ax, ay, cx, cy, by, ax, ay, bx)
+end
+
+-- Whether the circle (cx, cy, r) stays on the outer side of the line through a -> b, touching at
+-- most, for a polygon whose area has the sign `sign`: then it cannot meet the interior. Exact.
+local function clearOfEdge(ax, ay, bx, by, sign, cx, cy, r)
+  if cross(ax, ay, bx, by, ax, ay, cx, cy) * sign > 0 then return false end
+  return lineWithin(ax, ay, bx, by, cx, cy, r) <= 0
+end
+
+-- Whether the open disc (cx, cy, r), r > 0, meets the interior of the convex polygon, exactly:
+-- the centre is in the closed polygon, or within r of a vertex, or within r of an edge's line
+-- with the foot of its perpendicular strictly between the edge's ends. The slow path of
+-- circleCollision, for circles within rounding of touching.
+local function discMeetsExact(points, n, sign, cx, cy, r)
+  local inside = true
+  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
+    if reaches(bx, by, cx, cy, r, 0.0) > 0 then return true end
+    if bx ~= ax or by ~= ay then
+      if cross(ax, ay, bx, by, ax, ay, cx, cy) * sign < 0 then inside = false end
+      if dot(ax, ay, cx, cy, bx, by) > 0 and dot(bx, by, cx, cy, ax, ay) > 0
+          and lineWithin(ax, ay, bx, by, cx, cy, r) > 0 then
+        return true
+      end
+    end
+    ax, ay = bx, by
+  end
+  return inside
+end
+
+-- Checks that v is a number and finite (NaN and infinities named as such).
+local function checkFinite(v, fname, argname, level)
+  checkNumber(v, fname, argname, (level or 3) + 1)
   if v ~= v or v == huge or v == -huge then
     error(("%s: %s must be finite, got %s"):format(fname, argname, tostring(v)), level or 3)
   end
 end
 
-local function checkRadius(r, fname, argname, level)
-  checkFinite(r, fname, argname, (level or 3) + 1)
+local function checkRadius(r, fname, argname)
+  checkFinite(r, fname, argname, 4)
   if r < 0 then
-    error(("%s: %s must not be negative, got %s"):format(fname, argname, tostring(r)), level or 3)
+    error(("%s: %s must not be negative, got %s"):format(fname, argname, tostring(r)), 3)
   end
 end
 
@@ -836,36 +1063,14 @@ function polygon.projectCircle(cx, cy, radius, x, y, nx, ny)
   return s - radius, s + radius
 end
 
--- The exact sign of (r1 + r2)^2 - ((x2 - x1)^2 + (y2 - y1)^2): > 0 when two circles collide.
--- Every difference and the sum of the radii are split exactly into hi + lo first.
-local function circlesOverlapExact(x1, y1, r1, x2, y2, r2)
-  local dxh, dxl = twoDiff(x2, x1)
-  local dyh, dyl = twoDiff(y2, y1)
-  local rh, rl = twoDiff(r1, -r2)
-  local s = powerScale(max(abs(dxh), abs(dyh), rh), SCALE_LO, SCALE_HI)
-  expLen = 0
-  expAddSquare(rh * s, rl * s, 1)
-  expAddSquare(dxh * s, dxl * s, -1)
-  expAddSquare(dyh * s, dyl * s, -1)
-  return expSign()
-end
-
--- Whether two circles collide (the open discs meet), exactly. The float difference of the
--- squares is off by less than 8 eps times their sum (each square is within 3 eps, the
--- differences and the sum of the radii within one more rounding); beyond the range where the
--- squares neither overflow nor lose bits to underflow the exact path decides alone.
+-- Whether two circles collide: |c2 - c1|^2 < (r1 + r2)^2, the sum of the radii exact.
 local function circlesCollide(x1, y1, r1, x2, y2, r2)
-  local dx, dy, sum = x2 - x1, y2 - y1, r1 + r2
-  local distSq, reachSq = dx * dx + dy * dy, sum * sum
-  local gap = reachSq - distSq
-  local bound = 8 * EPS * (reachSq + distSq)
-  if gap > bound and reachSq < 2^1000 and bound > 2^-900 then return true end
-  if -gap > bound and distSq < 2^1000 and bound > 2^-900 then return false end
-  return circlesOverlapExact(x1, y1, r1, x2, y2, r2) > 0
+  return reaches(x1, y1, x2, y2, twoDiff(r1, -r2)) > 0
 end
 
 --- Whether two circles overlap, with the push that separates them.
--- Touching is not colliding, and a circle of radius 0 never collides; decided exactly.
+-- Touching is not colliding; decided exactly ((x2 - x1)^2 + (y2 - y1)^2 < (r1 + r2)^2), so a
+-- circle of radius 0 is a point, colliding only strictly inside the other circle.
 -- (dx, dy) moves the second circle: after x2 + dx, y2 + dy (rounded as a game adds them) the
 -- circles no longer collide. Its length exceeds overlap by a few ulps of the coordinates at
 -- most. Circles with the same centre are pushed along +x.
@@ -894,103 +1099,811 @@ function polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
   local ux, uy, dist = 1.0, 0.0, 0.0
   if dx ~= 0 or dy ~= 0 then ux, uy, dist = unit(dx, dy) end
   local overlap = (r1 + r2) - dist
-  -- Moving by exactly overlap would leave the circles touching at best, and rounding x2 + dx
-  -- can lose up to half an ulp of x2 on each axis. So the push is longer by half an ulp of the
-  -- largest magnitude, doubled until the moved circle clears for certain (usually at once).
-  local step = EPS * m
+  -- Moving by overlap leaves the circles touching at best, and rounding x2 + dx can lose half
+  -- an ulp of x2 on each axis. So unless that push already clears them, it grows by half an
+  -- ulp of the largest magnitude, doubled until the moved circle clears for certain.
+  local extra, step = 0.0, EPS * m
   for _ = 1, 64 do
-    local length = overlap + step
+    local length = overlap + extra
     local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
     if not circlesCollide(x1, y1, r1, x2 + px, y2 + py, r2) then
       return overlap / k, px / k, py / k
     end
-    step = step * 2
+    extra, step = step, step * 2
   end
-  error("circlesCollideV: no push separates the circles (an internal defect)", 2)
+  -- not reached: 64 doublings lengthen the push by 2^11 times the largest magnitude
+  return overlap / k, ux * (overlap + extra) / k, uy * (overlap + extra) / k
 end
 
---- The minimum translation vector of a circle out of a convex polygon.
--- The axes are the edge normals and the axis from the vertex nearest the centre (by distance;
--- the tutorial compares dot products) to the centre. The depth is the full penetration, so a
--- circle deep inside is pushed out in one step. Touching is not colliding, and since a unit
--- normal cannot be exact, neither is an overlap below the rounding error of the projections
--- (8 eps times the sizes involved): a circle moved by the returned vector no longer collides.
--- @return overlap, dx, dy (move the circle by dx, dy) or false
-function polygon.polygonCircleCollideV(points, cx, cy, radius)
-  local fname = "polygonCircleCollideV"
-  local n = checkPoints(points, fname)
-  checkNumber(cx, fname, "cx")
-  checkNumber(cy, fname, "cy")
-  checkNumber(radius, fname, "radius")
-  if radius < 0 then error(("%s: radius must not be negative, got %s"):format(fname, radius), 2) end
-  if n < 6 then return false end
-  local turn = areaSign(points, n)
-  if turn == 0 then return false end
-  local sign = turn > 0 and 1.0 or -1.0   -- makes (by - ay, ax - bx) point outwards
-  cx, cy = cx + 0.0, cy + 0.0
-  -- The projections' rounding error is a few eps times the polygon's extent plus the centre's
-  -- distance from it plus the radius; an overlap below 8 eps times that counts as touching.
-  local xmin, xmax, ymin, ymax = huge, -huge, huge, -huge
-  for i = 1, n - 1, 2 do
-    local x, y = points[i] + 0.0, points[i + 1] + 0.0
-    if x < xmin then xmin = x end
-    if x > xmax then xmax = x end
-    if y < ymin then ymin = y end
-    if y > ymax then ymax = y end
+-- The neighbour of vertex i (an odd index) distinct from it, walking by `dir` (2 or -2) around
+-- the n coordinates; i itself when every vertex is the same point.
+local function distinctNeighbour(points, n, i, dir)
+  local x, y = points[i] + 0.0, points[i + 1] + 0.0
+  local j = i
+  for _ = 1, n / 2 - 1 do
+    j = j + dir
+    if j > n then j = 1 elseif j < 1 then j = n - 1 end
+    if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
   end
-  local reach = max(abs(cx - xmin), abs(cx - xmax)) + max(abs(cy - ymin), abs(cy - ymax))
-  local tol = 8 * EPS * ((xmax - xmin) + (ymax - ymin) + reach + radius)
-  local best, bux, buy = huge, 0.0, 0.0
-  local nearX, nearY, nearD = 0.0, 0.0, huge
-  -- On an edge's outward normal a convex polygon spans [-width, 0]: its edge is the near end.
-  -- The vertex at the far end moves forward around the polygon as the edges do (rotating
-  -- calipers), so each edge walks on from the previous one's far vertex instead of projecting
-  -- every vertex. The walk goes on through steps within the rounding and stops at the first
-  -- certain rise, past which a convex polygon's projections only rise.
-  local far = 0   -- index of the far vertex, 0 until the first edge has scanned them all
-  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
-  for i = 1, n - 1, 2 do
-    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
-    local d = (bx - cx) * (bx - cx) + (by - cy) * (by - cy)
-    if d < nearD then nearX, nearY, nearD = bx, by, d end
-    if bx ~= ax or by ~= ay then
-      local nx, ny = unit((by - ay) * sign, (ax - bx) * sign)
-      local lo
-      if far == 0 then
-        lo = huge
-        for j = 1, n - 1, 2 do
-          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
-          if s < lo then lo, far = s, j end
-        end
-      else
-        lo = nx * (points[far] - ax) + ny * (points[far + 1] - ay)
-        local j = far
-        for _ = 1, n / 2 do
-          j = j + 2
-          if j > n then j = 1 end
-          local s = nx * (points[j] - ax) + ny * (points[j + 1] - ay)
-          if s > lo + tol then break end
-          if s < lo then lo, far = s, j end
-        end
+  return j
+end
+
+-- The push (px, py) from the circle at (cx, cy) out of the polygon, found by lengthening the
+-- least penetration `depth` along (ux, uy) until a certificate of separation holds for the moved
+-- centre, rounded as the caller will round it: the moved circle lies beyond the winning edge's
+-- line (index e: the edge ending at vertex e), or, when the winning axis is from vertex v, in
+-- v's corner region at distance r or more, or beyond one of the two edges meeting at v.
+local function separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, e, v)
+  local extra, step = 0.0, EPS * max(abs(cx), abs(cy), r)
+  for _ = 1, 64 do
+    local length = depth + extra
+    local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
+    local mx, my = cx + px, cy + py
+    if e > 0 then
+      local a = e == 1 and n - 1 or e - 2
+      if clearOfEdge(points[a] + 0.0, points[a + 1] + 0.0, points[e] + 0.0, points[e + 1] + 0.0,
+          sign, mx, my, r) then
+        return px, py
       end
-      local s = nx * (cx - ax) + ny * (cy - ay)
-      local up, down = radius - s, (s + radius) - lo
-      if up <= tol or down <= tol then return false end
-      if up < best then best, bux, buy = up, nx, ny end
-      if down < best then best, bux, buy = down, -nx, -ny end
+    else
+      local vx, vy = points[v] + 0.0, points[v + 1] + 0.0
+      local p = distinctNeighbour(points, n, v, -2)
+      local q = distinctNeighbour(points, n, v, 2)
+      local px0, py0, qx, qy = points[p] + 0.0, points[p + 1] + 0.0, points[q] + 0.0, points[q + 1] + 0.0
+      if dot(vx, vy, mx, my, px0, py0) <= 0 and dot(vx, vy, mx, my, qx, qy) <= 0
+          and reaches(vx, vy, mx, my, r, 0.0) <= 0
+          or clearOfEdge(px0, py0, vx, vy, sign, mx, my, r)
+          or clearOfEdge(vx, vy, qx, qy, sign, mx, my, r) then
+        return px, py
+      end
+    end
+    extra, step = step, step * 2
+  end
+  -- only a concave polygon or sizes outside the exact range get here: the longest push tried
+  return ux * (depth + extra) + 0.0, uy * (depth + extra) + 0.0
+end
+
+local circleCollision
+
+-- circleCollision on a copy of the polygon, the centre and the radius scaled by a power of two
+-- into the range where its squares neither overflow nor underflow, the answer scaled back; nil
+-- for a non-finite coordinate. Rare (coordinates beyond 2^500 or all below 2^-400), so this
+-- path allocates the copy.
+local function circleCollisionScaled(points, n, cx, cy, r)
+  local m = max(abs(cx), abs(cy), r)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v ~= v or v == huge or v == -huge then return nil end
+    m = max(m, abs(v))
+  end
+  local k = m > 1 and powerScale(m, 2^-32, 2^32) or powerScale(m, 2^-200, 2^-136)
+  if k == 1 then
+    -- Scaling cannot help: sizes more than 2^400 apart (a polygon of size 1e-200 against a
+    -- radius of 1), outside the exact range. Decide as exactly as the kernels can, and push
+    -- along +x by the radius, so that nothing loops or returns NaN.
+    local turn = areaSign(points, n)
+    if turn == 0 or not discMeetsExact(points, n, turn > 0 and 1.0 or -1.0, cx, cy, r) then
+      return false
+    end
+    return r, r, 0.0
+  end
+  local scaled = {}
+  for i = 1, n do scaled[i] = points[i] * k end
+  local overlap, px, py = circleCollision(scaled, n, cx * k, cy * k, r * k)
+  if not overlap then return overlap end
+  return overlap / k, px / k, py / k
+end
+
+-- The collision of the circle (cx, cy, r), r > 0 and every number finite, with the convex
+-- polygon points[1..n], n >= 6: overlap, px, py (move the circle by px, py), false, or nil
+-- when the polygon holds a non-finite coordinate. One convex polygon; polygonCircleCollideV
+-- is a thin wrapper around it, so that a compound shape can call it once per part.
+--
+-- A disc against a convex polygon needs no projections. The least penetration is r minus the
+-- signed distance from the centre to the polygon, and that distance is the centre's largest
+-- signed distance beyond an edge's line, unless the centre lies in the corner region of its
+-- nearest vertex, where it is the distance to that vertex (the tutorial's axes, edge normals
+-- and the nearest vertex's axis, give the same least overlap: the far ends of their ranges
+-- are never the least). Three ideas, in order:
+--   the edge walk: one pass for the nearest vertex and the edge line farthest behind the centre,
+--   the nearest-vertex axis: whether the centre is in that vertex's corner region,
+--   the exact filter: within rounding of touching, discMeetsExact decides.
+function circleCollision(points, n, cx, cy, r)
+  local area, sumX2, sumD2 = shoelace(points, n)
+  if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
+    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+    return overlap, px, py
+  end
+  local turn = areaSignOf(points, n, area, sumX2, sumD2)
+  if turn == 0 then return false end
+  local sign = turn > 0 and 1.0 or -1.0   -- makes the signed distances positive outside
+  -- The edge walk, in coordinates relative to the centre. An edge's signed distance from the
+  -- centre is its cross product over |b - a|; edges are compared by its signed square,
+  -- outside |outside| / |b - a|^2, so the loop takes no square root.
+  local nearSq, farSq, near = huge, 0.0, 1
+  local bestKey, best = -huge, 0
+  local ax, ay = points[n - 1] - cx, points[n] - cy
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] - cx, points[i + 1] - cy
+    local distSq = bx * bx + by * by
+    if distSq < nearSq then nearSq, near = distSq, i end
+    if distSq > farSq then farSq = distSq end
+    local ex, ey = bx - ax, by - ay
+    local lengthSq = ex * ex + ey * ey
+    if lengthSq > 0 then   -- a repeated vertex gives no edge
+      local outside = (ex * ay - ey * ax) * sign
+      local key = outside * (abs(outside) / lengthSq)
+      if key > bestKey then bestKey, best = key, i end
     end
     ax, ay = bx, by
   end
-  if nearD > 0 then
-    -- the axis from the nearest vertex to the centre, where the centre projects at |c - v|
-    local nx, ny, len = unit(cx - nearX, cy - nearY)
-    local min1, max1 = projectRange(points, n, nearX, nearY, nx, ny)
-    local up, down = max1 - (len - radius), (len + radius) - min1
-    if up <= tol or down <= tol then return false end
-    if up < best then best, bux, buy = up, nx, ny end
-    if down < best then best, bux, buy = down, -nx, -ny end
+  -- luacheck: ignore 581 (NaN too)
+  if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
+    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+    return overlap, px, py
   end
-  return best, bux * best + 0.0, buy * best + 0.0
+  -- the winning edge a -> b, its outward unit normal and the centre's signed distance
+  local a = best == 1 and n - 1 or best - 2
+  ax, ay = points[a] - cx, points[a + 1] - cy
+  local ex, ey = (points[best] - cx) - ax, (points[best + 1] - cy) - ay
+  local ux, uy, length = unit(ey * sign, -ex * sign)
+  local distance = (ex * ay - ey * ax) * sign / length
+  local edge, vertex = best, 0
+  -- The nearest-vertex axis: the centre is in the corner region of vertex v when it lies behind
+  -- neither edge meeting there, (c - v).(p - v) <= 0 for both distinct neighbours p.
+  local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
+  if nearSq > 0 then
+    local p = distinctNeighbour(points, n, near, -2)
+    local q = distinctNeighbour(points, n, near, 2)
+    if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
+        and vx * (vx - (points[q] - cx)) + vy * (vy - (points[q + 1] - cy)) <= 0 then
+      local vux, vuy, nearDistance = unit(-vx, -vy)
+      if nearDistance > distance then
+        ux, uy, distance, edge, vertex = vux, vuy, nearDistance, 0, near
+      end
+    end
+  end
+  -- The exact filter: distance is off by at most a few eps times the farthest vertex's distance
+  -- (the coordinates relative to the centre are rounded, then multiplied by edges no longer).
+  local depth = r - distance
+  local tol = 16 * EPS * (sqrt(farSq) + r)
+  if depth <= tol then
+    if depth < -tol then return false end
+    if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
+    if depth < 0 then depth = 0 end
+  end
+  local px, py = separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex)
+  return depth, px, py
+end
+
+--- The minimum translation vector of a circle out of a convex polygon (either winding).
+-- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
+-- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
+-- is the full penetration (r minus the signed distance from the centre to the polygon), so a
+-- circle deep inside is pushed out in one step, and the push separates for certain: after
+-- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than overlap by
+-- a few ulps of the coordinates at most.
+-- @return overlap, dx, dy (move the circle by dx, dy) or false
+function polygon.polygonCircleCollideV(points, cx, cy, radius)
+  local fname = "polygonCircleCollideV"
+  if isParts(points) then
+    local overlap, dx, dy = collideCircleParts(fname, points, cx, cy, radius)
+    return overlap, dx, dy
+  end
+  local n = checkPoints(points, fname)
+  checkFinite(cx, fname, "cx")
+  checkFinite(cy, fname, "cy")
+  checkRadius(radius, fname, "radius")
+  if n < 6 or radius == 0 then return false end
+  local overlap, dx, dy = circleCollision(points, n, cx + 0.0, cy + 0.0, radius + 0.0)
+  if overlap == nil then error(fname .. ": points holds a non-finite coordinate", 2) end
+  if not overlap then return false end
+  return overlap, dx, dy
+end
+
+--------------------------------------------------------------------------------------------------
+-- Compound shapes: lists of convex parts
+--------------------------------------------------------------------------------------------------
+-- polygonsCollide, polygonsCollideV and polygonCircleCollideV also take, for either shape, a list
+-- of convex parts {part1, part2, ...}: what polygonConvexParts returns, or parts built by hand.
+-- A flat array holds a number at [1], a list of parts a table.
+--
+-- Overlap. Two shapes overlap when some part of one overlaps some part of the other, each pair
+-- decided exactly (touching is not colliding) after a bounding-box test per pair.
+--
+-- The push. Moving the second shape by t makes part A of the first and part B of the second
+-- overlap exactly when t lies inside D = A - B = {a - b}, a convex polygon with one edge per edge
+-- of A and of B. An edge of A from vertex a, with outward unit normal u, bounds D by the open
+-- half-plane u.t < c, c = -min over the vertices v of B of u.(v - a) (how far B reaches past the
+-- edge); an edge of B from b, outward normal u, by -u.t < c, c = -min over the vertices w of A
+-- of u.(w - b). The least push is the point nearest the origin that lies in no open D (over all
+-- pairs of parts). That point is on the boundary of the union of the D, so on an edge of one D:
+-- inside that edge it is the foot of the perpendicular from the origin to the edge's line, else
+-- it is the end of a piece of the edge, where the edge's line crosses another (of the same D, a
+-- corner, or of another D, where two D cross). So the candidates are the feet and the crossings,
+-- and the push is the nearest candidate outside every D: the true least translation, up to the
+-- margin below. Feet need not be tried on an edge shared with another part of the same shape
+-- (internal, see preparedParts): such a foot, if on the edge, has the neighbouring part
+-- overlapping (the other part reaches on past the shared edge, as a half-disc around every point
+-- inside it) and so is never free; off the edge it is on another line, found there. Crossings use
+-- every line, as an end of an internal edge can be a corner of the union.
+--
+-- Which pairs. A pair matters only if its D comes nearer the origin than the push found so far,
+-- and D lies in the box [A's box - B's box]: the pairs whose boxes overlap come first, then the
+-- pairs whose box of D is nearer than the best push found, round after round (each round can
+-- only lengthen the push: a nearer free point would have been free among fewer pairs).
+--
+-- Margin: one push separates. The faces are computed in floating point and the moved vertices
+-- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
+-- are taken on the lines moved out by lift = 1.25 delta (a quarter of delta covers their own
+-- rounding, a few eps E). With E the width plus the height of the box around both shapes and S
+-- their largest coordinate magnitude, every D lies in the box of D's, within 1.5 E of the origin,
+-- so every |v - a| <= E, every push |t| < 1.5 E (a point farther out is free), and the moved
+-- coordinates stay below S + 1.5 E. Errors of the quantities the test u.t >= c + delta compares,
+-- in eps: the unit normal from rounded differences (eps each, then unit's 3) turns by at most
+-- 5 eps, moving u.(v - a) by 5 E and u.t by 7.5 E; the projection rounds by 3 E; the test's own
+-- sums and products by 3 (1.5 E + E) = 7.5 E: 23 E in all, below 64 E, so a candidate found
+-- outside the widened D is in truth at distance 41 eps E or more from D: part B moved by it
+-- exactly keeps that distance from A. Rounding moves each of its coordinates by at most
+-- eps (S + 1.5 E), each vertex by 1.42 eps (S + 1.5 E), so the rounded part (the hull of the
+-- rounded vertices) lies within that of the exact one: still apart when 41 eps E + 2 eps S, the
+-- rest of delta = 64 eps E + 2 eps S, exceeds 1.42 eps (S + 1.5 E). So no pair of parts collides
+-- after the rounded move: one push separates. The push exceeds the least translation by about
+-- lift (80 eps E + 2.5 eps S) on a face, lift / sin(angle / 2) at a crossing of lines meeting at
+-- an angle. Coordinates beyond 2^500 or below 2^-400 are scaled by a power of two k first
+-- (exact), so no product overflows or underflows.
+
+-- Whether shape is a list of parts rather than a flat array of coordinates (declared before the
+-- public collision functions, which dispatch on it).
+function isParts(shape)
+  return type(shape) == "table" and type(shape[1]) == "table"
+end
+
+-- The preparation each list of parts gets once, on first use, kept while the list lives:
+-- internal[k][e] is true when the edge of part k from vertex e to vertex e + 1 (the last to the
+-- first) is covered by edges of other parts running the opposite way along the same line (shared
+-- with the neighbours, whole or in pieces). Recomputed when the number of parts or of a part's
+-- coordinates changes. Moving a shape keeps it right; a stale table after other edits costs at
+-- most a longer push (a foot skipped) or some time (a foot tried), never a wrong one, as every
+-- candidate is checked against every part.
+local preparedParts = setmetatable({}, { __mode = "k" })
+
+-- The interval an edge covers along its line: on x unless the line is vertical (exact).
+local function edgeSpan(ax, ay, bx, by, onX)
+  if onX then return min(ax, bx), max(ax, bx) end
+  return min(ay, by), max(ay, by)
+end
+
+-- Whether the spans in `covers` (pairs lo, hi, any order) cover [lo, hi].
+local function covered(covers, lo, hi)
+  table.sort(covers, function(p, q) return p[1] < q[1] end)
+  local reach = lo
+  for _, span in ipairs(covers) do
+    if span[1] > reach then return false end
+    if span[2] > reach then reach = span[2] end
+    if reach >= hi then return true end
+  end
+  return reach >= hi
+end
+
+-- Builds the preparation of a list of parts (allocates: load time, or after the parts changed).
+local function prepareParts(parts)
+  local count = #parts
+  local info = { count = count, lengths = {}, internal = {} }
+  local edges = {}
+  for k = 1, count do
+    local part = parts[k]
+    local n = #part
+    info.lengths[k], info.internal[k] = n, {}
+    for e = 1, n / 2 do
+      local j = e % (n / 2) + 1
+      local ax, ay = part[2 * e - 1] + 0.0, part[2 * e] + 0.0
+      local bx, by = part[2 * j - 1] + 0.0, part[2 * j] + 0.0
+      if ax ~= bx or ay ~= by then
+        edges[#edges + 1] = { k = k, e = e, ax = ax, ay = ay, bx = bx, by = by,
+                              xmin = min(ax, bx), xmax = max(ax, bx), covers = {} }
+      end
+    end
+  end
+  -- sweep over the edges in order of their smallest x: only edges whose x ranges meet can share
+  table.sort(edges, function(p, q) return p.xmin < q.xmin end)
+  for s = 1, #edges do
+    local E = edges[s]
+    local t = s + 1
+    while edges[t] and edges[t].xmin <= E.xmax do
+      local T = edges[t]
+      if T.k ~= E.k and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.ax, T.ay) == 0
+        and cross(E.ax, E.ay, E.bx, E.by, E.ax, E.ay, T.bx, T.by) == 0 then
+        local onX = E.ax ~= E.bx   -- then T, on the same line, is not vertical either
+        local forwardE = onX and E.bx > E.ax or not onX and E.by > E.ay
+        local forwardT = onX and T.bx > T.ax or not onX and T.by > T.ay
+        if forwardE ~= forwardT then
+          local elo, ehi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
+          local tlo, thi = edgeSpan(T.ax, T.ay, T.bx, T.by, onX)
+          if tlo < ehi and elo < thi then
+            E.covers[#E.covers + 1] = { tlo, thi }
+            T.covers[#T.covers + 1] = { elo, ehi }
+          end
+        end
+      end
+      t = t + 1
+    end
+  end
+  for _, E in ipairs(edges) do
+    if #E.covers > 0 then
+      local onX = E.ax ~= E.bx
+      local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
+      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = true end
+    end
+  end
+  preparedParts[parts] = info
+  return info
+end
+
+-- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
+local boxes1, boxes2 = {}, {}      -- part boxes: xmin, ymin, xmax, ymax at 4k - 3 .. 4k
+local turns1, turns2 = {}, {}      -- part area signs, valid when stamps[k] == callStamp
+local stamps1, stamps2 = {}, {}
+local callStamp = 0
+local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
+
+-- The part count of a shape, its boxes in `boxes`, the largest coordinate magnitude, whether
+-- `info` (its preparation, if any) no longer matches its parts' lengths, and the box around all
+-- parts (xmin, ymin, xmax, ymax). Raises the
+-- argument errors at the caller of the public function (level 4).
+local function scanShape(fname, argname, shape, parts, boxes, info)
+  if type(shape) ~= "table" then
+    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), 4)
+  end
+  local count = parts and #shape or 1
+  local stale = info and info.count ~= count
+  local size, finite = 0.0, 0.0
+  local left, top, right, bottom = huge, huge, -huge, -huge
+  for k = 1, count do
+    local part = parts and shape[k] or shape
+    if type(part) ~= "table" then
+      error(("%s: %s[%d] must be a table, got %s"):format(fname, argname, k, type(part)), 4)
+    end
+    local n = #part
+    if n % 2 ~= 0 then
+      error(("%s: %s must hold an even number of coordinates, got %d")
+        :format(fname, parts and ("%s[%d]"):format(argname, k) or argname, n), 4)
+    end
+    if info and info.lengths[k] ~= n then stale = true end
+    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    for i = 1, n - 1, 2 do
+      local x, y = part[i] + 0.0, part[i + 1] + 0.0
+      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
+      if x < xmin then xmin = x end
+      if x > xmax then xmax = x end
+      if y < ymin then ymin = y end
+      if y > ymax then ymax = y end
+    end
+    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+    local b = 4 * k
+    boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
+    if n >= 6 then
+      size = max(size, -xmin, xmax, -ymin, ymax)
+      left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
+    end
+  end
+  if finite ~= 0 then
+    error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+  end
+  return count, size, stale, left, top, right, bottom
+end
+
+-- The area sign of part k (1, -1 or 0: signs, never magnitudes, are multiplied), once per call.
+local function partTurn(part, k, turns, stamps)
+  if stamps[k] ~= callStamp then
+    local turn = areaSign(part, #part)
+    stamps[k], turns[k] = callStamp, turn > 0 and 1.0 or turn < 0 and -1.0 or 0.0
+  end
+  return turns[k]
+end
+
+-- Whether two convex parts overlap (exact), by the SAT engine; non-finite input was caught.
+local function overlapsConvex(p1, p2)
+  return convexPenetration(p1, #p1, p2, #p2, true) and true or false
+end
+
+-- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
+-- part give (sense 1 for a part of the first shape, -1 for one of the second, whose outward
+-- normal points the other way in t), with `other` the part it is paired with. Coordinates are
+-- scaled by k. Returns the last index used and whether some edge separates the two parts,
+-- decided exactly (w, h bound the scaled coordinate differences, for projectionTolerance).
+local function addFaces(edges, ne, turn, other, no, internal, sense, k, w, h, top)
+  local separated = false
+  local e = ne / 2   -- the edge from the last vertex to the first comes first
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  for i = 1, ne - 1, 2 do
+    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = unit((by - ay) * turn, (ax - bx) * turn)   -- outward
+      local kax, kay = ax * k, ay * k
+      local lo = huge
+      for j = 1, no - 1, 2 do
+        local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+        if s < lo then lo = s end
+      end
+      if not separated then
+        local tol = projectionTolerance(w, h, ux, uy)
+        if -lo <= tol and (-lo < -tol
+            or clearOfLine(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0)) then
+          separated = true
+        end
+      end
+      top = top + 1
+      faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
+      faceOuter[top] = not (internal and internal[e])
+    end
+    ax, ay, e = bx, by, (i + 1) / 2
+  end
+  return top, separated
+end
+
+-- Whether t lies outside every D of pairs 1 .. np widened by margin.
+local function pushFree(tx, ty, np, margin)
+  for p = 1, np do
+    local inside = true
+    for f = faceFirst[p], faceFirst[p + 1] - 1 do
+      if faceX[f] * tx + faceY[f] * ty >= faceC[f] + margin then
+        inside = false
+        break
+      end
+    end
+    if inside then return false end
+  end
+  return true
+end
+
+-- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
+local function nearestFree(np, margin)
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local last = faceFirst[np + 1] - 1
+  local lift = 1.25 * margin
+  for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
+    local d = faceC[f] + lift
+    if faceOuter[f] and abs(d) < best then
+      local tx, ty = faceX[f] * d, faceY[f] * d
+      if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+    end
+  end
+  for f = 1, last - 1 do   -- crossings of two lines, each nearer than the best so far
+    local c1 = faceC[f] + lift
+    if abs(c1) < best then
+      local x1, y1 = faceX[f], faceY[f]
+      for g = f + 1, last do
+        local c2 = faceC[g] + lift
+        if abs(c2) < best then
+          local x2, y2 = faceX[g], faceY[g]
+          local det = x1 * y2 - y1 * x2
+          if det ~= 0 then
+            local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
+            local d = sqrt(tx * tx + ty * ty)
+            if d < best and pushFree(tx, ty, np, margin) then best, bestX, bestY = d, tx, ty end
+          end
+        end
+      end
+    end
+  end
+  return best, bestX, bestY
+end
+
+-- The distance (largest coordinate gap) from the origin to the box of D for parts i and j.
+local function boxGap(i, j, k)
+  local a, b = 4 * i, 4 * j
+  local gx = max((boxes1[a - 3] - boxes2[b - 1]) * k, (boxes2[b - 3] - boxes1[a - 1]) * k, 0.0)
+  local gy = max((boxes1[a - 2] - boxes2[b]) * k, (boxes2[b - 2] - boxes1[a]) * k, 0.0)
+  return max(gx, gy)
+end
+
+-- Whether the boxes of part i of the first shape and part j of the second overlap (not touch).
+local function boxesOverlap(i, j)
+  local a, b = 4 * i, 4 * j
+  return boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
+    and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
+end
+
+-- Appends the faces of D for part p1 (number i of the first shape) and p2 (number j of the
+-- second) as pair np + 1. Returns np, top and whether the parts overlap, decided exactly.
+local function addPair(p1, i, internal1, p2, j, internal2, k, np, top)
+  local n1, n2 = #p1, #p2
+  local turn1 = partTurn(p1, i, turns1, stamps1)
+  local turn2 = partTurn(p2, j, turns2, stamps2)
+  if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  local a, b = 4 * i, 4 * j
+  local w = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
+  local h = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
+  faceFirst[np + 1] = top + 1
+  local apart1, apart2
+  top, apart1 = addFaces(p1, n1, turn1, p2, n2, internal1, 1.0, k, w, h, top)
+  top, apart2 = addFaces(p2, n2, turn2, p1, n1, internal2, -1.0, k, w, h, top)
+  faceFirst[np + 2] = top + 1
+  return np + 1, top, not (apart1 or apart2)
+end
+
+-- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
+-- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
+-- overlap, dx, dy, or false.
+function collideParts(fname, shape1, shape2, wantPush)
+  local parts1, parts2 = isParts(shape1), isParts(shape2)
+  local info1 = wantPush and parts1 and preparedParts[shape1]
+  local info2 = wantPush and parts2 and preparedParts[shape2]
+  local count1, size1, stale1, x1, y1, x2, y2 = scanShape(fname, "points1", shape1, parts1, boxes1, info1)
+  local count2, size2, stale2, x3, y3, x4, y4 = scanShape(fname, "points2", shape2, parts2, boxes2, info2)
+  callStamp = callStamp + 1
+  if not wantPush then
+    for i = 1, count1 do
+      for j = 1, count2 do
+        if boxesOverlap(i, j)
+          and overlapsConvex(parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
+          return true
+        end
+      end
+    end
+    return false
+  end
+  if parts1 and (not info1 or stale1) then info1 = prepareParts(shape1) end
+  if parts2 and (not info2 or stale2) then info2 = prepareParts(shape2) end
+  local size = max(size1, size2)
+  local k = 1.0
+  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  local extent = ((max(x2, x4) - min(x1, x3)) + (max(y2, y4) - min(y1, y3))) * k
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- delta above: 64 eps E + 2 eps S
+  local np, top, hit = 0, 0, false
+  for i = 1, count1 do
+    local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
+    for j = 1, count2 do
+      if boxesOverlap(i, j) then
+        local overlaps
+        np, top, overlaps = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
+          info2 and info2.internal[j], k, np, top)
+        if overlaps then hit = true end
+      end
+    end
+  end
+  if not hit then return false end
+  local reach = -huge   -- the pairs whose box of D is nearer than reach are in already
+  local best, tx, ty = nearestFree(np, margin)
+  while true do
+    local nextReach = best + 4 * margin
+    if nextReach <= reach then break end
+    local before = np
+    for i = 1, count1 do
+      local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
+      for j = 1, count2 do
+        if boxes1[4 * i - 3] <= boxes1[4 * i - 1] and boxes2[4 * j - 3] <= boxes2[4 * j - 1]
+          and not boxesOverlap(i, j) then
+          local gap = boxGap(i, j, k)
+          if gap >= reach and gap < nextReach then
+            np, top = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
+              info2 and info2.internal[j], k, np, top)
+          end
+        end
+      end
+    end
+    reach = nextReach
+    if np == before then break end
+    -- More pairs can only lengthen the least push: if the best point is still free, it stays.
+    if best == huge or not pushFree(tx, ty, np, margin) then best, tx, ty = nearestFree(np, margin) end
+  end
+  if best == huge then
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, faceX[1] * 2 * extent, faceY[1] * 2 * extent
+  end
+  return best / k, tx / k + 0.0, ty / k + 0.0
+end
+
+-- Circles. A circle (c, r) whose centre moves by t meets part A exactly when c + t lies within
+-- r of A: t inside D = (A - c) grown by r, a convex shape bounded by the edges' lines moved out
+-- by r and arcs of radius r around the vertices. The least push is again the point nearest the
+-- origin outside every D. On the boundary of the union it is the foot of the perpendicular on
+-- a moved edge line, or the point of an arc nearest the origin (straight away from a vertex),
+-- or a crossing of two of those pieces: line and line, line and arc, arc and arc. Each candidate
+-- is kept when it is farther than r + delta from every part (the same margins as above, with
+-- the circle's box in E and S), and the nearest kept one is the push.
+
+local faceAX, faceAY, faceBX, faceBY = {}, {}, {}, {}   -- edge ends relative to the centre
+local faceQ = {}                                        -- |faceAX, faceAY|: the vertex's distance
+
+-- Appends the edges of part (area sign turn) as faces relative to the centre (cx, cy), all
+-- scaled by k: the outward unit normal, the signed distance faceC of the edge's line from the
+-- centre (u.t - faceC is how far t lies beyond it) and the edge's ends. Returns the last index.
+local function addCircleFaces(part, n, turn, internal, cx, cy, k, top)
+  local e = n / 2   -- the edge from the last vertex to the first comes first
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  local kcx, kcy = cx * k, cy * k
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = unit((by - ay) * turn, (ax - bx) * turn)   -- outward
+      local qax, qay = ax * k - kcx, ay * k - kcy
+      top = top + 1
+      faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
+      faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
+      faceQ[top] = sqrt(qax * qax + qay * qay)
+      faceOuter[top] = not (internal and internal[e])
+    end
+    ax, ay, e = bx, by, (i + 1) / 2
+  end
+  return top
+end
+
+-- Whether t lies at least `need` from the part whose faces are first .. last.
+local function farFromPart(tx, ty, first, last, need)
+  local beyond = -huge
+  for f = first, last do beyond = max(beyond, faceX[f] * tx + faceY[f] * ty - faceC[f]) end
+  if beyond >= need then return true end
+  if beyond <= 0 then return false end   -- inside the part
+  -- outside: the nearest point lies on an edge whose line t is beyond
+  local needSq = need * need
+  for f = first, last do
+    if faceX[f] * tx + faceY[f] * ty - faceC[f] > 0 then
+      local ax, ay = faceAX[f], faceAY[f]
+      local ex, ey = faceBX[f] - ax, faceBY[f] - ay
+      local along = ((tx - ax) * ex + (ty - ay) * ey) / (ex * ex + ey * ey)
+      if along < 0 then along = 0 elseif along > 1 then along = 1 end
+      local dx, dy = tx - (ax + along * ex), ty - (ay + along * ey)
+      if dx * dx + dy * dy < needSq then return false end
+    end
+  end
+  return true
+end
+
+-- Whether t lies at least need from every part 1 .. np.
+local function circleFree(tx, ty, np, need)
+  for p = 1, np do
+    if not farFromPart(tx, ty, faceFirst[p], faceFirst[p + 1] - 1, need) then return false end
+  end
+  return true
+end
+
+-- Keeps candidate t when it is nearer than best and free.
+local function tryCircle(tx, ty, np, need, best, bestX, bestY)
+  local d = sqrt(tx * tx + ty * ty)
+  if d < best and circleFree(tx, ty, np, need) then return d, tx, ty end
+  return best, bestX, bestY
+end
+
+-- The nearest free candidate for a circle of (scaled) radius r among parts 1 .. np.
+local function nearestFreeCircle(np, r, margin)
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local last = faceFirst[np + 1] - 1
+  local reach, need = r + 1.25 * margin, r + margin   -- lines and arcs moved out by lift
+  for f = 1, last do   -- feet on the outer edges' moved lines
+    local d = faceC[f] + reach
+    if faceOuter[f] and abs(d) < best then
+      best, bestX, bestY = tryCircle(faceX[f] * d, faceY[f] * d, np, need, best, bestX, bestY)
+    end
+  end
+  for f = 1, last do   -- straight away from each vertex (the start of each edge)
+    local q = faceQ[f]
+    if q > 0 and abs(q - reach) < best then
+      local s = 1 - reach / q
+      best, bestX, bestY = tryCircle(faceAX[f] * s, faceAY[f] * s, np, need, best, bestX, bestY)
+    end
+  end
+  -- Crossings. A point on a line lies at least |its constant| from the origin, one on an arc at
+  -- least |q - reach|: pieces no nearer than the best so far are skipped.
+  for f = 1, last do
+    local c1, x1, y1 = faceC[f] + reach, faceX[f], faceY[f]
+    local qx, qy = faceAX[f], faceAY[f]
+    local lineNear, arcNear = abs(c1) < best, abs(faceQ[f] - reach) < best
+    if lineNear or arcNear then
+      for g = 1, last do
+        local c2 = faceC[g] + reach
+        if lineNear and g > f and abs(c2) < best then   -- line and line
+          local x2, y2 = faceX[g], faceY[g]
+          local det = x1 * y2 - y1 * x2
+          if det ~= 0 then
+            best, bestX, bestY = tryCircle((c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det,
+              np, need, best, bestX, bestY)
+          end
+        end
+        local px, py = faceAX[g], faceAY[g]
+        if abs(faceQ[g] - reach) < best then
+          if lineNear then   -- line f and the arc around vertex g
+            local h = c1 - (x1 * px + y1 * py)   -- from the vertex to the line, along the normal
+            if abs(h) < reach then
+              local w = sqrt(reach * reach - h * h)
+              local mx, my = px + x1 * h, py + y1 * h
+              best, bestX, bestY = tryCircle(mx - y1 * w, my + x1 * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + y1 * w, my - x1 * w, np, need, best, bestX, bestY)
+            end
+          end
+          if arcNear and g > f then   -- the arcs around vertices f and g
+            local ex, ey = px - qx, py - qy
+            local gap = sqrt(ex * ex + ey * ey)
+            if gap > 0 and gap < 2 * reach then
+              local w = sqrt(reach * reach - gap * gap / 4) / gap
+              local mx, my = (qx + px) / 2, (qy + py) / 2
+              best, bestX, bestY = tryCircle(mx - ey * w, my + ex * w, np, need, best, bestX, bestY)
+              best, bestX, bestY = tryCircle(mx + ey * w, my - ex * w, np, need, best, bestX, bestY)
+            end
+          end
+        end
+      end
+    end
+  end
+  return best, bestX, bestY
+end
+
+-- The Chebyshev distance from the origin to the box of D for part i of boxes1 and a circle.
+local function circleBoxGap(i, cx, cy, r, k)
+  local a = 4 * i
+  local gx = max((boxes1[a - 3] - cx - r) * k, (cx - r - boxes1[a - 1]) * k, 0.0)
+  local gy = max((boxes1[a - 2] - cy - r) * k, (cy - r - boxes1[a]) * k, 0.0)
+  return max(gx, gy)
+end
+
+-- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
+function collideCircleParts(fname, shape, cx, cy, r)
+  checkFinite(cx, fname, "cx", 4)
+  checkFinite(cy, fname, "cy", 4)
+  checkFinite(r, fname, "radius", 4)
+  if r < 0 then error(("%s: radius must not be negative, got %s"):format(fname, tostring(r)), 3) end
+  local info = preparedParts[shape]
+  local count, size, stale, left, top, right, bottom = scanShape(fname, "points", shape, true, boxes1, info)
+  if stale or not info then info = prepareParts(shape) end
+  cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
+  if r == 0 then return false end
+  callStamp = callStamp + 1
+  size = max(size, abs(cx) + r, abs(cy) + r)
+  local k = 1.0
+  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
+  local margin = 2^-47 * extent + 2^-52 * size * k   -- as for polygons: 64 eps E + 2 eps S
+  local np, last, hit = 0, 0, false
+  for i = 1, count do
+    if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
+        and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
+      local part = shape[i]
+      local n = #part
+      local turn = partTurn(part, i, turns1, stamps1)
+      if turn ~= 0 then
+        if circleCollision(part, n, cx, cy, r) then hit = true end
+        np = np + 1
+        faceFirst[np] = last + 1
+        last = addCircleFaces(part, n, turn, info.internal[i], cx, cy, k, last)
+        faceFirst[np + 1] = last + 1
+      end
+    end
+  end
+  if not hit then return false end
+  local reach = -huge   -- parts whose grown box is nearer than reach are in already
+  local best, tx, ty = nearestFreeCircle(np, r * k, margin)
+  while true do
+    local nextReach = best + 4 * margin
+    if nextReach <= reach then break end
+    local before = np
+    for i = 1, count do
+      local a = 4 * i
+      if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
+          and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+        local gap = circleBoxGap(i, cx, cy, r, k)
+        local turn = gap >= reach and gap < nextReach and partTurn(shape[i], i, turns1, stamps1)
+        if turn and turn ~= 0 then
+          np = np + 1
+          faceFirst[np] = last + 1
+          last = addCircleFaces(shape[i], #shape[i], turn, info.internal[i], cx, cy, k, last)
+          faceFirst[np + 1] = last + 1
+        end
+      end
+    end
+    reach = nextReach
+    if np == before then break end
+    -- More parts can only lengthen the least move: if the best point is still free, it stays.
+    if best == huge or not circleFree(tx, ty, np, r * k + margin) then
+      best, tx, ty = nearestFreeCircle(np, r * k, margin)
+    end
+  end
+  if best == huge then
+    -- No candidate checked free (not expected): 2 E along any direction clears every D.
+    best, tx, ty = 2 * extent, 0.0, -2 * extent
+  end
+  return best / k, tx / k + 0.0, ty / k + 0.0
 end
 
 --------------------------------------------------------------------------------------------------

@@ -1,0 +1,215 @@
+-- Compound shapes, hard cases: generated scenes checked against the exact per-pair oracle
+-- (spec/support/oracle.lua) and the true least translation (spec/support/union.lua, the nearest
+-- boundary point of the union of the parts' Minkowski differences); far offsets; no garbage.
+local polygon = require "polygon"
+local parts = require "parts"
+local scenes = require "scenes"
+local union = require "union"
+local prng = require "prng"
+local tally = require "tally"
+
+local collide, collideV = polygon.polygonsCollide, polygon.polygonsCollideV
+
+local OFFSETS = { 0, 1e5, 1e9, 1e12 + 0.375 }
+
+-- Checks one call: boolean as the oracle's, push separating, and the push's excess over the true
+-- least translation. Returns the excess (nil when the shapes do not collide).
+local function check(s1, s2, wrong)
+  local overlap, dx, dy = collideV(s1, s2)
+  local truth = parts.collide(s1, s2)
+  wrong.boolean:check(collide(s1, s2) == truth and (overlap ~= false) == truth, s1, s2)
+  if not overlap then return nil end
+  local moved = parts.translate(s2, dx, dy)
+  wrong.separation:check(not parts.collide(s1, moved) and not collide(s1, moved), s1, s2, dx, dy)
+  local least = union.leastTranslation(s1, s2)
+  -- the oracle is good to about 1e-12 of the numbers' size; the push may not be shorter
+  wrong.shorter:check(overlap >= least * (1 - 1e-9), s1, s2, overlap, least)
+  return overlap - least, parts.slack(s1, s2), least
+end
+
+local function newWrong()
+  return { boolean = tally.new("boolean unlike the oracle"),
+           separation = tally.new("push leaves a collision"),
+           shorter = tally.new("push shorter than the least translation") }
+end
+
+local function assertNone(wrong)
+  for _, t in pairs(wrong) do
+    assert.are.equal(0, t.count, t.what .. ": " .. table.concat(t.examples, "\n"))
+  end
+end
+
+describe("compound shapes against the union oracle", function()
+  it("agrees on random clusters, terrains and crates, both argument orders, at every offset", function()
+    local g = prng.new(2026)
+    local wrong = newWrong()
+    local collisions, beyondSlack, worst = 0, 0, 0
+    for trial = 1, 240 do
+      local off = OFFSETS[trial % #OFFSETS + 1]
+      local s1, s2
+      local kind = trial % 3
+      if kind == 0 then
+        s1, s2 = scenes.cluster(g, g:int(1, 5), 60, 30), scenes.cluster(g, g:int(1, 2), 60, 20)
+      elseif kind == 1 then
+        local width
+        s1, width = scenes.terrain(g, 12)
+        local x, y = g:range(0, width - 10), g:range(10, 80)
+        s2 = { parts.box(x, y, 10, 10) }
+      else
+        s1, s2 = scenes.terrain(g, 8), scenes.cluster(g, 2, 60, 10)
+      end
+      if trial % 2 == 0 then s1 = parts.reverse(s1) end
+      s1, s2 = parts.translate(s1, off, off), parts.translate(s2, off, off)
+      for _, order in ipairs({ { s1, s2 }, { s2, s1 } }) do
+        local excess, slack, least = check(order[1], order[2], wrong)
+        if excess then
+          collisions = collisions + 1
+          -- beyond the face margin only at crossings of lines meeting at an angle
+          if excess > slack then beyondSlack = beyondSlack + 1 end
+          worst = math.max(worst, excess / (least + slack))
+        end
+      end
+    end
+    assertNone(wrong)
+    assert.is_true(collisions > 150)
+    assert.is_true(beyondSlack <= collisions / 50, beyondSlack .. " of " .. collisions)
+    assert.is_true(worst < 1e-2, "worst relative excess " .. worst)
+  end)
+
+  it("finds the least translation exactly (within the margin) for crates on terrain", function()
+    -- every push along a face: the margin bounds the excess everywhere
+    local g = prng.new(77)
+    local wrong = newWrong()
+    for trial = 1, 120 do
+      local terrain, width = scenes.terrain(g, 15)
+      local x = g:range(0, width - 6)
+      local crate = { parts.box(x, 15, 6, g:range(30, 60)) }   -- a pillar from above into it
+      local excess, slack = check(terrain, crate, wrong)
+      if excess then wrong.shorter:check(excess <= 100 * slack, trial, excess, slack) end
+    end
+    assertNone(wrong)
+  end)
+end)
+
+describe("circles against compound shapes, against the oracle", function()
+  it("decide overlap exactly, separate in one push, and move no farther than needed", function()
+    -- The least move of a circle is bounded by union.circleLeastMove: the disc replaced by a
+    -- 24-gon inscribed in it (a lower bound) and one circumscribed (an upper bound, 0.9% longer).
+    local oracle = require "oracle"
+    local g = prng.new(9)
+    local wrong = newWrong()
+    local collisions = 0
+    for trial = 1, 60 do
+      local off = OFFSETS[trial % #OFFSETS + 1]
+      local list = trial % 2 == 0 and scenes.cluster(g, g:int(1, 5), 60, 30) or scenes.terrain(g, 10)
+      local cx, cy, r = g:range(0, 80), g:range(0, 90), g:range(1, 20)
+      if trial % 3 == 0 then list = parts.reverse(list) end
+      local moved = parts.translate(list, off, off)
+      local overlap, dx, dy = polygon.polygonCircleCollideV(moved, cx + off, cy + off, r)
+      local truth = false
+      for _, p in ipairs(moved) do
+        if oracle.discMeetsPolygon(p, cx + off, cy + off, r) then truth = true end
+      end
+      wrong.boolean:check((overlap ~= false) == truth, trial)
+      if overlap then
+        collisions = collisions + 1
+        local meets = polygon.polygonCircleCollideV(moved, cx + off + dx, cy + off + dy, r)
+        for _, p in ipairs(moved) do
+          if oracle.discMeetsPolygon(p, cx + off + dx, cy + off + dy, r) then meets = true end
+        end
+        wrong.separation:check(not meets, trial, dx, dy)
+        local lower, upper = union.circleLeastMove(list, cx, cy, r, 24)
+        local slack = parts.slack(moved, { parts.box(cx + off - r, cy + off - r, 2 * r, 2 * r) })
+        wrong.shorter:check(overlap >= lower * (1 - 1e-9) and overlap <= upper + slack,
+          trial, overlap, lower, upper)
+      end
+    end
+    assertNone(wrong)
+    assert.is_true(collisions > 20, collisions)
+  end)
+end)
+
+describe("compound shapes far from the origin", function()
+  local U = {
+    { 0, 0, 50, 0, 50, 250, 0, 250 },
+    { 50, 200, 250, 200, 250, 250, 50, 250 },
+    { 250, 0, 300, 0, 300, 250, 250, 250 },
+  }
+  local floor = parts.floor(20, 10, 100, 0)
+
+  it("pushes the crate out of the U floor and corner by the same amounts at 1e5, 1e9, 1e12", function()
+    for _, off in ipairs(OFFSETS) do
+      local u = parts.translate(U, off, off + 0.25)
+      local cases = { { parts.box(130, 165, 40, 40), 0, -5 }, { parts.box(45, 190, 20, 20), 5, -10 } }
+      for _, case in ipairs(cases) do
+        local crate = parts.translate({ case[1] }, off, off + 0.25)
+        local overlap, dx, dy = collideV(u, crate)
+        local slack = parts.slack(u, crate)
+        assert.is_true(math.abs(dx - case[2]) <= slack and math.abs(dy - case[3]) <= slack,
+          ("offset %.17g: push %.17g %.17g"):format(off, dx, dy))
+        assert.is_true(overlap >= math.sqrt(case[2] ^ 2 + case[3] ^ 2))
+        assert.is_false(parts.collide(u, parts.translate(crate, dx, dy)))
+        assert.is_false(collide(u, parts.translate(crate, dx, dy)))
+      end
+    end
+  end)
+
+  it("pushes a crate straight up along a 20-part floor at 1e12 plus a fraction, seams too", function()
+    local off = 1e12 + 0.375
+    local f = parts.translate(floor, off, off)
+    for step = 0, 96 do
+      local crate = parts.translate({ parts.box(step * 2, 95, 8, 8) }, off, off)   -- sunk 3
+      local overlap, dx, dy = collideV(f, crate)
+      assert.are.equal(0, dx)
+      assert.are.equal(-overlap, dy)
+      assert.is_true(overlap >= 3 and overlap <= 3 + parts.slack(f, crate))
+      assert.is_false(collide(f, parts.translate(crate, dx, dy)))
+    end
+  end)
+
+  it("decides touching exactly at every offset", function()
+    for _, off in ipairs(OFFSETS) do
+      local f = parts.translate(floor, off, off)
+      local resting = parts.translate({ parts.box(35, 92, 8, 8) }, off, off)   -- bottom on y = 100
+      assert.is_false(collide(f, resting))
+      assert.is_false(collideV(resting, f))
+      -- down by about an ulp of the coordinates
+      local nudge = math.max(2 ^ -20, off * 2 ^ -50)
+      local nudged = parts.translate({ parts.box(35, 92, 8, 8) }, off, off + nudge)
+      assert.is_true(collide(f, nudged))
+    end
+  end)
+end)
+
+describe("compound shapes per frame", function()
+  it("allocate nothing once prepared", function()
+    local floor = parts.floor(20, 10, 100, 0)
+    local crates, twoPart = {}, {}
+    for k = 0, 9 do
+      crates[#crates + 1] = parts.box(k * 19, 95, 8, 8)
+      twoPart[#twoPart + 1] = { parts.box(k * 19, 96, 4, 8), parts.box(k * 19 + 4, 96, 4, 8) }
+    end
+    local corner = { parts.box(0, 0, 10, 100), parts.box(10, 90, 100, 10) }
+    local far = parts.box(300, 0, 5, 5)
+    local function body(i)
+      local c = crates[i % 10 + 1]
+      collideV(floor, c)
+      collide(floor, c)
+      collideV(twoPart[i % 10 + 1], floor)
+      collideV(corner, c)
+      collideV(floor, far)
+      polygon.polygonCircleCollideV(floor, i % 200, 97, 5)
+      polygon.polygonCircleCollideV(corner, 12, 88, 4)
+    end
+    -- two rounds first: they prepare the lists and let LuaJIT build its traces (on the heap)
+    for _ = 1, 2 do
+      for i = 1, 10000 do body(i) end
+    end
+    collectgarbage("stop")
+    local before = collectgarbage("count")
+    for i = 1, 10000 do body(i) end
+    local grown = collectgarbage("count") - before
+    collectgarbage("restart")
+    assert.is_true(grown < 1, grown .. " KB")
+  end)
+end)

@@ -1,0 +1,268 @@
+-- Compound shapes: polygonsCollide and polygonsCollideV take lists of convex parts {part1, ...}
+-- wherever they take a convex polygon. Some part of one overlapping some part of the other is a
+-- collision; the push (dx, dy) moves the whole second shape, and edges shared by two parts of one
+-- shape are inside it: never a direction to push along. Pushes carry a rounding margin of a few
+-- hundred eps times the scene's size (parts.slack), so lengths are compared within it.
+local polygon = require "polygon"
+local parts = require "parts"
+local shapes = require "shapes"
+local oracle = require "oracle"
+
+local collide, collideV = polygon.polygonsCollide, polygon.polygonsCollideV
+
+-- The issue's U = {0,0, 50,0, 50,200, 250,200, 250,0, 300,0, 300,250, 0,250} cut by hand into
+-- two pillars and the floor between them (y down: the floor's top edge is y = 200).
+local U = {
+  { 0, 0, 50, 0, 50, 250, 0, 250 },
+  { 50, 200, 250, 200, 250, 250, 50, 250 },
+  { 250, 0, 300, 0, 300, 250, 250, 250 },
+}
+local CRATE = { 130, 165, 170, 165, 170, 205, 130, 205 }   -- its bottom y = 205: sunk 5
+
+-- fn(a, b) for both windings of every part of each shape (flat shapes stay flat)
+local function windings(s1, s2, fn)
+  local function both(s)
+    if type(s[1]) == "table" then return { s, parts.reverse(s) } end
+    return { s, shapes.reverse(s) }
+  end
+  for _, a in ipairs(both(s1)) do
+    for _, b in ipairs(both(s2)) do fn(a, b) end
+  end
+end
+
+local function asList(s)
+  if type(s[1]) == "table" then return s end
+  return { s }
+end
+
+-- the push separates the shapes (module and oracle agree) and has the expected length and
+-- direction within the margin
+local function assert_push(s1, s2, ex, ey)
+  local overlap, dx, dy = collideV(s1, s2)
+  assert.is_number(overlap)
+  local slack = parts.slack(asList(s1), asList(s2))
+  local len = math.sqrt(ex * ex + ey * ey)
+  assert.is_true(overlap >= len and overlap <= len + slack,
+    ("overlap %.17g, expected %.17g"):format(overlap, len))
+  assert.is_true(math.abs(dx - ex) <= slack and math.abs(dy - ey) <= slack,
+    ("push %.17g %.17g, expected %g %g"):format(dx, dy, ex, ey))
+  local moved = parts.translate(asList(s2), dx, dy)
+  assert.is_false(parts.collide(asList(s1), moved))
+  assert.is_false(collide(s1, moved))
+  return dx, dy
+end
+
+describe("compound shapes", function()
+  describe("when a crate is sunk 5 into the floor of a U cut into three parts", function()
+    it("collides in both argument orders and windings", function()
+      windings(U, CRATE, function(u, crate)
+        assert.is_true(collide(u, crate))
+        assert.is_true(collide(crate, u))
+      end)
+    end)
+
+    it("pushes the crate straight up by 5 (205 - 200), or the U down by 5", function()
+      windings(U, CRATE, function(u, crate)
+        local dx = assert_push(u, crate, 0, -5)
+        assert.are.equal(0, dx)
+        dx = assert_push(crate, u, 0, 5)
+        assert.are.equal(0, dx)
+      end)
+    end)
+
+    it("does not collide once resting on the floor (touching is not colliding)", function()
+      local resting = shapes.translate(CRATE, 0, -5)
+      windings(U, resting, function(u, crate)
+        assert.is_false(collide(u, crate))
+        assert.is_false(collideV(u, crate))
+        assert.is_false(collideV(crate, u))
+      end)
+    end)
+  end)
+
+  describe("when a crate sits in a concave corner of the U", function()
+    -- crate x 45..65, y 190..210: 5 into the left pillar (x < 50), 10 into the floor (y > 200).
+    -- Straight up it must clear the pillar (210 up), sideways the whole floor; out of the
+    -- corner it moves by (5, -10), length sqrt(125).
+    local crate = parts.box(45, 190, 20, 20)
+    -- the mirror image in the right corner: x 235..255 is 5 into the right pillar (x > 250)
+    local mirrored = parts.box(235, 190, 20, 20)
+
+    it("goes out of the corner, not through a wall", function()
+      windings(U, crate, function(u, c)
+        assert_push(u, c, 5, -10)
+        assert_push(c, u, -5, 10)
+      end)
+      windings(U, mirrored, function(u, c)
+        assert_push(u, c, -5, -10)
+      end)
+    end)
+  end)
+
+  describe("when a crate is sunk into a floor of 20 parts", function()
+    -- 20 parts of width 10 from x = 0 to 200, top edge y = 100; crate 8 by 8.
+    local floor = parts.floor(20, 10, 100, 0)
+
+    it("is pushed straight up by its depth at every position, on the seams too", function()
+      for _, depth in ipairs({ 0.25, 3, 7.5 }) do
+        for step = 0, 384 do   -- x from 0 to 192 by 0.5: every seam x = 10 k is met
+          local crate = parts.box(step / 2, 100 - 8 + depth, 8, 8)
+          local overlap, dx, dy = collideV(floor, crate)
+          assert.are.equal(0, dx)
+          assert.is_true(overlap >= depth and overlap <= depth + parts.slack(floor, { crate }))
+          assert.are.equal(-overlap, dy)
+          assert.is_false(collide(floor, shapes.translate(crate, dx, dy)))
+        end
+      end
+    end)
+
+    it("pushes the floor down instead in the other argument order", function()
+      for step = 0, 40 do
+        local crate = parts.box(step * 4.75, 95, 8, 8)   -- sunk 3
+        windings(floor, crate, function(f, c)
+          assert_push(c, f, 0, 3)
+        end)
+      end
+    end)
+
+    it("is pushed up when the crate is itself made of two parts split over a seam", function()
+      for step = 0, 40 do
+        local x = step * 4.75
+        local crate = { parts.box(x, 96, 4, 8), parts.box(x + 4, 96, 4, 8) }   -- sunk 4
+        windings(floor, crate, function(f, c)
+          assert_push(f, c, 0, -4)
+          assert_push(c, f, 0, 4)
+        end)
+      end
+    end)
+  end)
+
+  describe("when parts share edges only in pieces", function()
+    -- two layers of blocks with staggered seams: the top layer (y 100..110) from x = 5, the
+    -- bottom one (y 110..120) from x = 0, both of width 10: each top block's bottom edge is
+    -- covered by halves of two bottom blocks' top edges
+    local layered = {}
+    for k = 0, 9 do
+      layered[#layered + 1] = parts.box(5 + 10 * k, 100, 10, 10)
+      layered[#layered + 1] = parts.box(10 * k, 110, 10, 10)
+    end
+
+    it("pushes a crate out through the top or the bottom, never along a seam", function()
+      for step = 0, 30 do
+        local x = 10 + step * 2.5
+        windings(layered, parts.box(x, 94, 8, 8), function(l, c)
+          assert_push(l, c, 0, -2)   -- bottom at 102: sunk 2 into the top layer
+        end)
+        windings(layered, parts.box(x, 119, 8, 8), function(l, c)
+          assert_push(l, c, 0, 1)    -- top at 119: 1 into the bottom layer from below
+        end)
+      end
+    end)
+  end)
+
+  describe("when a convex polygon meets a compound shape", function()
+    it("takes a flat polygon for either argument", function()
+      local slab = { 0, 100, 200, 100, 200, 130, 0, 130 }
+      local crate = { parts.box(50, 96, 4, 8), parts.box(54, 96, 4, 8) }   -- sunk 4
+      assert_push(slab, crate, 0, -4)
+      assert_push(crate, slab, 0, 4)
+    end)
+  end)
+
+  describe("when parts are degenerate", function()
+    it("ignores parts with fewer than 3 points or zero area", function()
+      local list = { { 0, 0, 10, 0 }, { 0, 0, 5, 5, 10, 10 }, {}, parts.box(0, 0, 10, 10) }
+      assert.is_true(collide(list, parts.box(8, 2, 10, 5)))
+      assert_push(list, parts.box(8, 2, 10, 5), 2, 0)
+      assert.is_false(collide({ { 0, 0, 10, 0 }, { 0, 0, 5, 5, 10, 10 } }, parts.box(0, 0, 10, 10)))
+      assert.is_false(collideV({ { 0, 0, 10, 0 } }, parts.box(0, 0, 10, 10)))
+    end)
+  end)
+
+  describe("when arguments are bad", function()
+    it("names the function, the argument and the part", function()
+      local box = parts.box(0, 0, 10, 10)
+      assert.has_error(function() collideV({ box, 5 }, box) end,
+        "polygonsCollideV: points1[2] must be a table, got number")
+      assert.has_error(function() collide(box, { box, { 1, 2, 3 } }) end,
+        "polygonsCollide: points2[2] must hold an even number of coordinates, got 3")
+      assert.has_error(function() collideV({ box }, nil) end,
+        "polygonsCollideV: points2 must be a table, got nil")
+    end)
+
+    it("raises the same error as for flat polygons on a non-finite coordinate", function()
+      local box = parts.box(0, 0, 10, 10)
+      for _, bad in ipairs({ 0 / 0, math.huge, -math.huge }) do
+        assert.has_error(function() collideV({ box, { 1, 1, bad, 1, 2, 2 } }, box) end,
+          "polygonsCollideV: points1 holds a non-finite coordinate")
+        assert.has_error(function() collide(box, { { 1, 1, 5, 1, 2, bad } }) end,
+          "polygonsCollide: points2 holds a non-finite coordinate")
+      end
+    end)
+  end)
+end)
+
+describe("compound shapes against circles", function()
+  local circleV = polygon.polygonCircleCollideV
+
+  -- the circle moved by the push meets no part, by the exact oracle and by the module
+  local function assert_circle_push(list, cx, cy, r, ex, ey)
+    local overlap, dx, dy = circleV(list, cx, cy, r)
+    assert.is_number(overlap)
+    local slack = parts.slack(list, { parts.box(cx - r, cy - r, 2 * r, 2 * r) })
+    local len = math.sqrt(ex * ex + ey * ey)
+    assert.is_true(overlap >= len and overlap <= len + slack,
+      ("overlap %.17g, expected %.17g"):format(overlap, len))
+    assert.is_true(math.abs(dx - ex) <= slack and math.abs(dy - ey) <= slack,
+      ("push %.17g %.17g, expected %g %g"):format(dx, dy, ex, ey))
+    assert.is_false(circleV(list, cx + dx, cy + dy, r))
+    for _, p in ipairs(list) do assert.is_false(oracle.discMeetsPolygon(p, cx + dx, cy + dy, r)) end
+    return dx, dy
+  end
+
+  it("pushes a circle sunk 5 into the U's floor straight up by 5", function()
+    -- centre y 190, radius 15: the disc reaches y = 205, the floor's top is y = 200
+    for _, u in ipairs({ U, parts.reverse(U) }) do
+      local dx = assert_circle_push(u, 150, 190, 15, 0, -5)
+      assert.are.equal(0, dx)
+    end
+  end)
+
+  it("pushes a circle out of a concave corner along the diagonal", function()
+    -- centre (60, 190), radius 15: 5 into the left pillar (x < 50) and 5 into the floor; out of
+    -- the corner the centre goes to (65, 185), 15 from both lines: a move of (5, -5)
+    for _, u in ipairs({ U, parts.reverse(U) }) do
+      assert_circle_push(u, 60, 190, 15, 5, -5)
+      assert_circle_push(u, 240, 190, 15, -5, -5)
+    end
+  end)
+
+  it("pushes a circle up by its depth at every position along a 20-part floor", function()
+    local floor = parts.floor(20, 10, 100, 0)
+    for step = 0, 80 do   -- centres from x = 5 to 195 by 2.375, seams x = 10 k among them
+      local x = 5 + step * 2.375
+      local overlap, dx, dy = circleV(floor, x, 97, 5)   -- reaches y = 102: depth 2
+      assert.are.equal(0, dx)
+      assert.are.equal(-overlap, dy)
+      assert.is_true(overlap >= 2 and overlap <= 2 + parts.slack(floor, { parts.box(x - 5, 92, 10, 10) }))
+      assert.is_false(circleV(floor, x + dx, 97 + dy, 5))
+    end
+  end)
+
+  it("does not collide when touching a part, or with radius 0", function()
+    assert.is_false(circleV(U, 150, 185, 15))   -- reaches y = 200 exactly
+    assert.is_false(circleV(U, 65, 185, 15))    -- touches the pillar and the floor
+    assert.is_false(circleV(U, 150, 220, 0))
+  end)
+
+  it("names the function and argument for bad circles and parts", function()
+    assert.has_error(function() circleV(U, 0 / 0, 1, 1) end, "polygonCircleCollideV: cx must be finite, got "
+      .. tostring(0 / 0))
+    assert.has_error(function() circleV(U, 1, 1, -1) end,
+      "polygonCircleCollideV: radius must not be negative, got -1")
+    assert.has_error(function() circleV({ U[1], { 0, 0, 1, 0, 0, math.huge } }, 1, 1, 1) end,
+      "polygonCircleCollideV: points holds a non-finite coordinate")
+    assert.has_error(function() circleV({ U[1], 7 }, 1, 1, 1) end,
+      "polygonCircleCollideV: points[2] must be a table, got number")
+  end)
+end)

@@ -1,0 +1,90 @@
+--- Helpers for specs on compound shapes (lists of convex parts). Shares no code with polygon.lua.
+local oracle = require "oracle"
+
+local parts = {}
+
+--- A new list with every part moved by (dx, dy) (each coordinate rounded as a game would).
+function parts.translate(list, dx, dy)
+  local out = {}
+  for k, p in ipairs(list) do
+    local q = {}
+    for i = 1, #p, 2 do
+      q[i], q[i + 1] = p[i] + dx, p[i + 1] + dy
+    end
+    out[k] = q
+  end
+  return out
+end
+
+--- A new list with every part in the other winding.
+function parts.reverse(list)
+  local out = {}
+  for k, p in ipairs(list) do
+    local q, n = {}, #p
+    for i = 1, n, 2 do
+      q[n - i], q[n - i + 1] = p[i], p[i + 1]
+    end
+    out[k] = q
+  end
+  return out
+end
+
+-- xmin, ymin, xmax, ymax of a flat array
+local function box(p)
+  local xmin, ymin, xmax, ymax = math.huge, math.huge, -math.huge, -math.huge
+  for i = 1, #p, 2 do
+    xmin, xmax = math.min(xmin, p[i]), math.max(xmax, p[i])
+    ymin, ymax = math.min(ymin, p[i + 1]), math.max(ymax, p[i + 1])
+  end
+  return xmin, ymin, xmax, ymax
+end
+
+--- Whether some part of one list overlaps some part of the other, by the exact oracle (parts
+-- whose boxes do not overlap cannot: the comparisons of coordinates are exact).
+function parts.collide(list1, list2)
+  for _, a in ipairs(list1) do
+    local ax0, ay0, ax1, ay1 = box(a)
+    for _, b in ipairs(list2) do
+      local bx0, by0, bx1, by1 = box(b)
+      if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1 and oracle.collides(a, b, true) then
+        return true
+      end
+    end
+  end
+  return false
+end
+
+--- The allowed excess of a push over the least translation: the rounding margin the module
+-- documents is about 80 eps E + 5 eps S (E the width plus height of the box around both shapes,
+-- S the largest coordinate magnitude); this is three times that.
+function parts.slack(list1, list2)
+  local xmin, ymin, xmax, ymax, size = math.huge, math.huge, -math.huge, -math.huge, 0
+  for _, list in ipairs({ list1, list2 }) do
+    for _, p in ipairs(list) do
+      for i = 1, #p, 2 do
+        xmin, xmax = math.min(xmin, p[i]), math.max(xmax, p[i])
+        ymin, ymax = math.min(ymin, p[i + 1]), math.max(ymax, p[i + 1])
+        size = math.max(size, math.abs(p[i]), math.abs(p[i + 1]))
+      end
+    end
+  end
+  local eps = 2 ^ -53
+  return 3 * (80 * eps * ((xmax - xmin) + (ymax - ymin)) + 5 * eps * size)
+end
+
+--- A floor of `count` rectangles of width `width`, top edge at y = top, depth 30, from x = x0.
+function parts.floor(count, width, top, x0)
+  local list = {}
+  for k = 0, count - 1 do
+    local l, r = x0 + k * width, x0 + (k + 1) * width
+    list[k + 1] = { l, top, r, top, r, top + 30, l, top + 30 }
+  end
+  return list
+end
+
+--- An axis-aligned box {x, y, x + w, y, x + w, y + h, x, y + h} (clockwise on screen).
+function parts.box(x, y, w, h)
+  return { x, y, x + w, y, x + w, y + h, x, y + h }
+end
+
+return parts

@@ -1,0 +1,44 @@
+--- Random compound scenes for the specs and measurements on compound shapes (deterministic, from
+-- spec/support/prng.lua). Shares no code with polygon.lua.
+local oracle = require "oracle"
+
+local scenes = {}
+
+--- A random convex polygon with up to m vertices on a circle of radius r around (cx, cy),
+-- coordinates rounded to multiples of `grain`, clockwise on screen; nil if rounding spoiled it.
+function scenes.convex(g, cx, cy, r, m, grain)
+  local angles = {}
+  for i = 1, m do angles[i] = g:float() * 2 * math.pi end
+  table.sort(angles)
+  local p = {}
+  for i = 1, m do
+    p[#p + 1] = cx + math.floor(r * math.cos(angles[i]) / grain + 0.5) * grain
+    p[#p + 1] = cy + math.floor(r * math.sin(angles[i]) / grain + 0.5) * grain
+  end
+  if oracle.polygonType(p) ~= "convex" then return nil end
+  return p
+end
+
+--- A list of `count` random convex parts in the square [0, span]^2 (some may overlap).
+function scenes.cluster(g, count, span, r)
+  local list = {}
+  while #list < count do
+    local p = scenes.convex(g, g:range(0, span), g:range(0, span), g:range(r / 3, r), g:int(3, 7), 1)
+    if p then list[#list + 1] = p end
+  end
+  return list
+end
+
+--- A terrain: `count` columns of random widths side by side, each a convex quadrilateral with a
+-- sloped top (shared corners: the columns' sides are seams), bottom at y = 100.
+function scenes.terrain(g, count)
+  local list, x, y = {}, 0, g:int(40, 60)
+  for _ = 1, count do
+    local w, y2 = g:int(5, 20), math.max(20, math.min(80, y + g:int(-8, 8)))
+    list[#list + 1] = { x, y, x + w, y2, x + w, 100, x, 100 }
+    x, y = x + w, y2
+  end
+  return list, x
+end
+
+return scenes
