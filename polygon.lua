@@ -1910,14 +1910,9 @@ end
 -- Moving and bounding shapes
 --------------------------------------------------------------------------------------------------
 -- A shape here is a flat array {x1, y1, ...} or a list of convex parts {part1, part2, ...}, each
--- part a flat array; one look at the first entry tells them apart (a number or a table).
+-- part a flat array; isParts (Compound shapes) tells them apart by the first entry.
 
 local sin, cos = math.sin, math.cos
-
--- Whether points is a list of parts rather than a flat array of coordinates.
-local function isParts(points)
-  return type(points[1]) == "table"
-end
 
 -- Checks a list of parts: every entry a table with an even count. Returns their number. level as
 -- in checkPoints, counted from here. The messages are built only on the error path (no garbage).
@@ -1981,7 +1976,7 @@ end
 function polygon.polygonBounds(points)
   local fname = "polygonBounds"
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
-  if type(points) == "table" and isParts(points) then
+  if isParts(points) then
     local count = checkParts(points, fname, 3)
     for k = 1, count do
       local part = points[k]
@@ -2013,7 +2008,7 @@ end
 -- @return out. Each coordinate is rounded once (x + dx).
 function polygon.polygonTranslate(points, dx, dy, out)
   local fname = "polygonTranslate"
-  if type(points) == "table" and isParts(points) then
+  if isParts(points) then
     local count = checkParts(points, fname, 3)
     checkFinite(dx, fname, "dx")
     checkFinite(dy, fname, "dy")
@@ -2097,7 +2092,7 @@ end
 function polygon.polygonRotate(points, angle, ox, oy, out)
   local fname = "polygonRotate"
   if type(ox) == "table" and oy == nil and out == nil then ox, out = nil, ox end
-  local parts = type(points) == "table" and isParts(points)
+  local parts = isParts(points)
   local count
   if parts then count = checkParts(points, fname, 3) else count = checkPoints(points, fname) end
   checkFinite(angle, fname, "angle")
