@@ -935,12 +935,18 @@ end
 -- A number with the sign of (rh + rl)^2 - |(x2, y2) - (x1, y1)|^2, exact. The float difference
 -- is off by less than 8 eps times the sum of the squares: each square is within 3 eps, the
 -- differences and the radius within one more rounding.
-local function reaches(x1, y1, x2, y2, rh, rl)
+local function reachesFiltered(x1, y1, x2, y2, rh)
   local dx, dy = x2 - x1, y2 - y1
   local distSq, reachSq = dx * dx + dy * dy, rh * rh
   local gap = reachSq - distSq
   local bound = 8 * EPS * (reachSq + distSq)
   if (gap > bound or -gap > bound) and bound > FILTER_LO and bound < FILTER_HI then return gap end
+  return 0.0   -- the bound cannot vouch
+end
+
+local function reaches(x1, y1, x2, y2, rh, rl)
+  local gap = reachesFiltered(x1, y1, x2, y2, rh)
+  if gap ~= 0 then return gap end
   return reachesExact(x1, y1, x2, y2, rh, rl)
 end
 
@@ -1119,8 +1125,11 @@ end
 -- the n coordinates; i itself when every vertex is the same point.
 local function distinctNeighbour(points, n, i, dir)
   local x, y = points[i] + 0.0, points[i + 1] + 0.0
-  local j = i
-  for _ = 1, n / 2 - 1 do
+  local j = i + dir
+  if j > n then j = 1 elseif j < 1 then j = n - 1 end
+  -- the usual case without a loop, which LuaJIT would fail to compile inside the caller's trace
+  if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
+  for _ = 2, n / 2 - 1 do
     j = j + dir
     if j > n then j = 1 elseif j < 1 then j = n - 1 end
     if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
@@ -1128,39 +1137,166 @@ local function distinctNeighbour(points, n, i, dir)
   return j
 end
 
--- The push (px, py) from the circle at (cx, cy) out of the polygon, found by lengthening the
--- least penetration `depth` along (ux, uy) until a certificate of separation holds for the moved
--- centre, rounded as the caller will round it: the moved circle lies beyond the winning edge's
--- line (index e: the edge ending at vertex e), or, when the winning axis is from vertex v, in
--- v's corner region at distance r or more, or beyond one of the two edges meeting at v.
-local function separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, e, v)
-  local extra, step = 0.0, EPS * max(abs(cx), abs(cy), r)
+-- (b - a) x (c - a) within 2 eps of itself plus 8 eps^2 of the magnitudes of its terms, and
+-- |b - a|^2 within 2 eps: the differences split exactly into hi + lo, the main products by
+-- TwoProduct, and the first-order terms of the low parts added once (what is dropped, products
+-- of two low parts and the roundings of small terms, is of order eps^2).
+local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+  local exh, exl = twoDiff(bx, ax)
+  local eyh, eyl = twoDiff(by, ay)
+  local wxh, wxl = twoDiff(cx, ax)
+  local wyh, wyl = twoDiff(cy, ay)
+  local p, pLow = twoProduct(exh, wyh)
+  local q, qLow = twoProduct(eyh, wxh)
+  local main, mainLow = twoDiff(p, q)
+  local crossed = main + (mainLow + (pLow - qLow) + (exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh))
+  local xx, xxLow = twoProduct(exh, exh)
+  local yy, yyLow = twoProduct(eyh, eyh)
+  local lengthSq = (xx + yy) + ((xxLow + yyLow) + 2 * (exh * exl + eyh * eyl))
+  return crossed, lengthSq
+end
+
+-- Whether the circle (cx, cy, r) certainly stays beyond the line of the edge a -> b (as
+-- clearOfEdge), by a float test alone: false also when rounding cannot tell. It compares
+-- outside^2 with r^2 |b - a|^2, outside = (b - a) x (a - c) turned outwards and positive:
+-- the first within 5 eps, the second within 4 eps, so 4 eps of their sum bounds the error of
+-- the difference (with room for the eps^2 terms).
+local function beyondEdgeFiltered(ax, ay, bx, by, sign, cx, cy, r)
+  local crossed, lengthSq = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+  local outside = -crossed * sign
+  local outsideSq, reachSq = outside * outside, r * r * lengthSq
+  local bound = 4 * EPS * (outsideSq + reachSq)
+  return outside > 0 and outsideSq - reachSq > bound and bound > FILTER_LO and bound < FILTER_HI
+end
+
+-- Whether the circle (cx, cy, r) certainly lies in the corner region of the vertex b between
+-- its neighbours a and q, at distance r or more from b, by float tests alone. Each dot product
+-- (m - b).(a - b) is within 3 eps of the sum of its terms' magnitudes; |m - b|^2 is summed
+-- from exact squares of the split differences (within 2 eps), r^2 within 1.
+local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
+  local wx, wxLow = twoDiff(cx, bx)
+  local wy, wyLow = twoDiff(cy, by)
+  local s1, s2 = wx * (ax - bx), wy * (ay - by)
+  local t1, t2 = wx * (qx - bx), wy * (qy - by)
+  local xx, xxLow = twoProduct(wx, wx)
+  local yy, yyLow = twoProduct(wy, wy)
+  local distSq = (xx + yy) + ((xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow))
+  local reachSq = r * r
+  local bound = 4 * EPS * (reachSq + distSq)
+  return s1 + s2 < -4 * EPS * (abs(s1) + abs(s2)) and t1 + t2 < -4 * EPS * (abs(t1) + abs(t2))
+    and distSq - reachSq > bound and bound > FILTER_LO and bound < FILTER_HI
+end
+
+-- One try of separatingPush: the push of the given length along (ux, uy), and whether the
+-- certificate holds for it; `late`: consult the exact tests where the float ones cannot tell.
+-- For the edge a -> b (q == 0), or the vertex b between its distinct neighbours a and q (all
+-- indices into points, read here rather than held, which keeps few numbers live for LuaJIT).
+local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
+  local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
+  local mx, my = cx + px, cy + py
+  local ax, ay, bx, by = points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0, points[b + 1] + 0.0
+  if q == 0 then
+    return px, py, beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r)
+      or late and clearOfEdge(ax, ay, bx, by, sign, mx, my, r)
+  end
+  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
+  if cornerClearFiltered(ax, ay, bx, by, qx, qy, mx, my, r) then return px, py, true end
+  if not late then return px, py, false end
+  -- in the corner region of b, where the distance to the polygon is |m - b|, or beyond an edge
+  return px, py, dot(bx, by, mx, my, ax, ay) <= 0 and dot(bx, by, mx, my, qx, qy) <= 0
+      and reachesExact(bx, by, mx, my, r, 0.0) <= 0
+    or clearOfEdge(ax, ay, bx, by, sign, mx, my, r) or clearOfEdge(bx, by, qx, qy, sign, mx, my, r)
+end
+
+-- far: whether some magnitude passes 2^240, where the float certificate's squares (degree 4)
+-- overflow and only the exact one tells.
+local function separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, e, v, far)
+  local extra = EPS * (abs(cx) + abs(cy) + 4 * r)
+  -- the edge a -> b, or the vertex b and its neighbours a, q
+  local a, b, q = e == 1 and n - 1 or e - 2, e, 0
+  if e == 0 then
+    a, b, q = distinctNeighbour(points, n, v, -2), v, distinctNeighbour(points, n, v, 2)
+  end
+  -- the first try outside the loop: LuaJIT cannot compile a loop entered from the caller's
+  -- trace with this many live values ("register coalescing too complex"), and one try is usual
+  local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + extra, far)
+  if cleared then return px, py end
+  local exactFrom = far and 0 or 16 * extra
   for _ = 1, 64 do
-    local length = depth + extra
-    local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
-    local mx, my = cx + px, cy + py
-    if e > 0 then
-      local a = e == 1 and n - 1 or e - 2
-      if clearOfEdge(points[a] + 0.0, points[a + 1] + 0.0, points[e] + 0.0, points[e + 1] + 0.0,
-          sign, mx, my, r) then
-        return px, py
-      end
-    else
-      local vx, vy = points[v] + 0.0, points[v + 1] + 0.0
-      local p = distinctNeighbour(points, n, v, -2)
-      local q = distinctNeighbour(points, n, v, 2)
-      local px0, py0, qx, qy = points[p] + 0.0, points[p + 1] + 0.0, points[q] + 0.0, points[q + 1] + 0.0
-      if dot(vx, vy, mx, my, px0, py0) <= 0 and dot(vx, vy, mx, my, qx, qy) <= 0
-          and reaches(vx, vy, mx, my, r, 0.0) <= 0
-          or clearOfEdge(px0, py0, vx, vy, sign, mx, my, r)
-          or clearOfEdge(vx, vy, qx, qy, sign, mx, my, r) then
-        return px, py
-      end
-    end
-    extra, step = step, step * 2
+    extra = extra * 2
+    px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + extra,
+      extra >= exactFrom)
+    if cleared then return px, py end
   end
   -- only a concave polygon or sizes outside the exact range get here: the longest push tried
-  return ux * (depth + extra) + 0.0, uy * (depth + extra) + 0.0
+  return px, py
+end
+
+-- The edge walk, in coordinates relative to the centre (c): the nearest vertex, its squared
+-- distance, the largest squared distance to a vertex, and the edge (the index of its end)
+-- whose line lies farthest behind the centre, with sign making distances positive outside.
+-- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
+-- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
+-- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
+-- becomes a side trace, and the rest of the function is compiled again behind every one of
+-- them (measured: about 10 times slower). Its first pass keeps only the extremes with min and
+-- max; a second finds their indices, recomputing the same numbers bit for bit, and stops at
+-- the first match (a branch that almost never changes). The PUC interpreters call min and
+-- max as functions, so for them one branchy pass is faster.
+local edgeWalk
+if rawget(_G, "jit") then
+  edgeWalk = function(points, n, cx, cy, sign)
+    local nearSq, farSq, bestKey = huge, 0.0, -huge
+    local ax, ay = points[n - 1] - cx, points[n] - cy
+    for i = 1, n - 1, 2 do
+      local bx, by = points[i] - cx, points[i + 1] - cy
+      local distSq = bx * bx + by * by
+      nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
+      local ex, ey = bx - ax, by - ay
+      local lengthSq = ex * ex + ey * ey
+      if lengthSq > 0 then   -- a repeated vertex gives no edge (a branch almost never taken)
+        local outside = (ex * ay - ey * ax) * sign
+        bestKey = max(bestKey, outside * (abs(outside) / lengthSq))
+      end
+      ax, ay = bx, by
+    end
+    local near, best = 1, 0
+    for i = 1, n - 1, 2 do
+      local bx, by = points[i] - cx, points[i + 1] - cy
+      if bx * bx + by * by == nearSq then near = i; break end
+    end
+    ax, ay = points[n - 1] - cx, points[n] - cy
+    for i = 1, n - 1, 2 do
+      local bx, by = points[i] - cx, points[i + 1] - cy
+      local ex, ey = bx - ax, by - ay
+      local lengthSq = ex * ex + ey * ey
+      local outside = (ex * ay - ey * ax) * sign
+      if lengthSq > 0 and outside * (abs(outside) / lengthSq) == bestKey then best = i; break end
+      ax, ay = bx, by
+    end
+    return near, nearSq, farSq, best
+  end
+else
+  edgeWalk = function(points, n, cx, cy, sign)
+    local nearSq, farSq, near = huge, 0.0, 1
+    local bestKey, best = -huge, 0
+    local ax, ay = points[n - 1] - cx, points[n] - cy
+    for i = 1, n - 1, 2 do
+      local bx, by = points[i] - cx, points[i + 1] - cy
+      local distSq = bx * bx + by * by
+      if distSq < nearSq then nearSq, near = distSq, i end
+      if distSq > farSq then farSq = distSq end
+      local ex, ey = bx - ax, by - ay
+      local lengthSq = ex * ex + ey * ey
+      if lengthSq > 0 then   -- a repeated vertex gives no edge
+        local outside = (ex * ay - ey * ax) * sign
+        local key = outside * (abs(outside) / lengthSq)
+        if key > bestKey then bestKey, best = key, i end
+      end
+      ax, ay = bx, by
+    end
+    return near, nearSq, farSq, best
+  end
 end
 
 local circleCollision
@@ -1217,62 +1353,51 @@ function circleCollision(points, n, cx, cy, r)
   local turn = areaSignOf(points, n, area, sumX2, sumD2)
   if turn == 0 then return false end
   local sign = turn > 0 and 1.0 or -1.0   -- makes the signed distances positive outside
-  -- The edge walk, in coordinates relative to the centre. An edge's signed distance from the
-  -- centre is its cross product over |b - a|; edges are compared by its signed square,
-  -- outside |outside| / |b - a|^2, so the loop takes no square root.
-  local nearSq, farSq, near = huge, 0.0, 1
-  local bestKey, best = -huge, 0
-  local ax, ay = points[n - 1] - cx, points[n] - cy
-  for i = 1, n - 1, 2 do
-    local bx, by = points[i] - cx, points[i + 1] - cy
-    local distSq = bx * bx + by * by
-    if distSq < nearSq then nearSq, near = distSq, i end
-    if distSq > farSq then farSq = distSq end
-    local ex, ey = bx - ax, by - ay
-    local lengthSq = ex * ex + ey * ey
-    if lengthSq > 0 then   -- a repeated vertex gives no edge
-      local outside = (ex * ay - ey * ax) * sign
-      local key = outside * (abs(outside) / lengthSq)
-      if key > bestKey then bestKey, best = key, i end
-    end
-    ax, ay = bx, by
-  end
+  local near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, sign)
   -- luacheck: ignore 581 (NaN too)
   if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
     return overlap, px, py
   end
-  -- the winning edge a -> b, its outward unit normal and the centre's signed distance
-  local a = best == 1 and n - 1 or best - 2
-  ax, ay = points[a] - cx, points[a + 1] - cy
-  local ex, ey = (points[best] - cx) - ax, (points[best + 1] - cy) - ay
-  local ux, uy, length = unit(ey * sign, -ex * sign)
-  local distance = (ex * ay - ey * ax) * sign / length
+  local tol = 16 * EPS * (sqrt(farSq) + r)   -- see the exact filter below
+  -- The nearest-vertex axis: the centre is in the corner region of the nearest vertex v when
+  -- it lies behind neither edge meeting there, (c - v).(p - v) <= 0 for both distinct
+  -- neighbours p; then the distance to the polygon is |c - v|, and the push goes along c - v.
   local edge, vertex = best, 0
-  -- The nearest-vertex axis: the centre is in the corner region of vertex v when it lies behind
-  -- neither edge meeting there, (c - v).(p - v) <= 0 for both distinct neighbours p.
   local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
   if nearSq > 0 then
     local p = distinctNeighbour(points, n, near, -2)
     local q = distinctNeighbour(points, n, near, 2)
     if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
         and vx * (vx - (points[q] - cx)) + vy * (vy - (points[q + 1] - cy)) <= 0 then
-      local vux, vuy, nearDistance = unit(-vx, -vy)
-      if nearDistance > distance then
-        ux, uy, distance, edge, vertex = vux, vuy, nearDistance, 0, near
-      end
+      edge, vertex = 0, near
     end
+  end
+  local ux, uy, distance
+  if vertex > 0 then
+    distance = sqrt(nearSq)
+    ux, uy = -vx / distance, -vy / distance
+  else
+    -- The winning edge a -> b: its outward unit normal, and the centre's signed distance from
+    -- its line, computed again from the given coordinates, accurately.
+    local a = best == 1 and n - 1 or best - 2
+    local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
+    local bx, by = points[best] + 0.0, points[best + 1] + 0.0
+    local crossed, lengthSq = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+    local length = sqrt(lengthSq)
+    ux, uy = (by - ay) * sign / length, (ax - bx) * sign / length
+    distance = -crossed * sign / length
   end
   -- The exact filter: distance is off by at most a few eps times the farthest vertex's distance
   -- (the coordinates relative to the centre are rounded, then multiplied by edges no longer).
   local depth = r - distance
-  local tol = 16 * EPS * (sqrt(farSq) + r)
   if depth <= tol then
     if depth < -tol then return false end
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
     if depth < 0 then depth = 0 end
   end
-  local px, py = separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex)
+  local px, py = separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex,
+    max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
   return depth, px, py
 end
 

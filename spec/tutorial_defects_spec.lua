@@ -256,7 +256,9 @@ describe("defect: the tutorial's circle test picks the wrong vertex, caps the ov
     assert.is_true(o <= 2 + 1e-12)
     assert.is_truthy(circleV(A, 7 + tdx, 4 + tdy, 1))
     local overlap, dx, dy = circleV(A, 7, 4, 1)
-    assert.are.same({ 4, 4, 0 }, { overlap, dx, dy })
+    -- the push is longer than the overlap by a few ulps, so that the moved circle clears
+    assert.are.same({ 4, 0 }, { overlap, dy })
+    assert.is_true(dx >= 4 and dx <= 4 + 1e-14)
     assert.are.equal(false, circleV(A, 7 + dx, 4 + dy, 1))
   end)
 
@@ -275,7 +277,9 @@ describe("defect: the tutorial's circle test picks the wrong vertex, caps the ov
     local closed = { 0, 0, 10, 0, 10, 10, 0, 10, 0, 0 }
     local to, tdx, tdy = tutorialCircle(closed, 12, 5, 3)
     assert.is_true(isnan(to) and isnan(tdx) and isnan(tdy))
-    assert.are.same({ 1, 1, 0 }, { circleV(closed, 12, 5, 3) })
+    local overlap, dx, dy = circleV(closed, 12, 5, 3)
+    assert.are.same({ 1, 0 }, { overlap, dy })
+    assert.is_true(dx >= 1 and dx <= 1 + 1e-14)
   end)
 end)
 
