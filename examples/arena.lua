@@ -1,6 +1,7 @@
 -- A box arena of about 250 shapes falling under gravity and resolved with polygon.lua's V
 -- functions, in plain Lua (no LÖVE). From the repository root:
 --   luajit examples/arena.lua [frames]        (or lua5.1 .. lua5.4; 300 frames by default)
+--   luajit examples/arena.lua 300 default     (LuaJIT with its default trace limits, see below)
 -- It prints the time per frame, the garbage per frame of the module's calls, the largest overlap
 -- left after resolution, and a checksum of the final positions: the same on every run and every
 -- interpreter, because nothing in the loop depends on `pairs` order, math.random or the clock.
@@ -199,9 +200,9 @@ local function newStatic(points)
   return { kind = "polygon", points = points, invMass = 0, x = 0, y = 0, spin = 0 }
 end
 
---- A new world: the four walls, 200 polygons (50 of them spinning) and 50 circles, laid out on a
--- lattice of 13 rows from the floor up, with small random offsets and velocities: the pile is in
--- contact from the first frames.
+--- A new world: the four walls, a concave floor of three convex parts, 200 polygons (50 of them
+-- spinning) and 50 circles, laid out on a lattice of 13 rows from just above the floor up, with
+-- small random offsets and velocities: the pile is in contact from the first frames.
 local function newWorld(seed)
   local rng = prng.new(seed or 12345)
   local bodies = {
@@ -209,10 +210,17 @@ local function newWorld(seed)
     newStatic({ WIDTH, -WALL, WIDTH + WALL, -WALL, WIDTH + WALL, HEIGHT + WALL, WIDTH, HEIGHT + WALL }),
     newStatic({ 0, -WALL, WIDTH, -WALL, WIDTH, 0, 0, 0 }),                                       -- top
     newStatic({ 0, HEIGHT, WIDTH, HEIGHT, WIDTH, HEIGHT + WALL, 0, HEIGHT + WALL }),             -- bottom
+    -- a concave floor as one shape, a list of convex parts: a ramp down from each side wall and a
+    -- bump in the middle. polygonBounds, polygonsCollideV and polygonCircleCollideV take the list.
+    newStatic({
+      { 0, HEIGHT - 40, 120, HEIGHT, 0, HEIGHT },
+      { WIDTH, HEIGHT - 40, WIDTH, HEIGHT, WIDTH - 120, HEIGHT },
+      { 280, HEIGHT, 300, HEIGHT - 24, 340, HEIGHT - 24, 360, HEIGHT },
+    }),
   }
   for k = 0, 249 do
     local x = 20 + (k % 20) * 31 + rng:range(-3, 3)
-    local y = HEIGHT - 14 - floor(k / 20) * 24 + rng:range(-2, 2)   -- rows from the floor up
+    local y = HEIGHT - 54 - floor(k / 20) * 24 + rng:range(-2, 2)   -- rows from above the floor up
     local body = { x = x, y = y, px = x - rng:range(-1, 1), py = y - rng:range(-1, 1), angle = 0 }
     if k % 5 == 4 then   -- every fifth a circle
       body.kind, body.r = "circle", rng:range(5, 10)
@@ -231,7 +239,7 @@ local function newWorld(seed)
   for i = 1, #bodies do place(bodies[i]) end
   local cols, rows = floor((WIDTH + 2 * WALL) / CELL) + 1, floor((HEIGHT + 2 * WALL) / CELL) + 1
   return { bodies = bodies, grid = Grid.new(CELL, -WALL, -WALL, cols, rows), pairA = {}, pairB = {},
-    npairs = 0 }
+    npairs = 0, moving = {}, fixed = {} }
 end
 
 -- One frame: Verlet integration (velocity = this frame's position - last frame's), new points and
@@ -256,15 +264,34 @@ local function step(world)
   end
   local npairs = grid:pairs(#bodies, world.pairA, world.pairB)
   world.npairs = npairs
-  local pairA, pairB = world.pairA, world.pairB
-  for _ = 1, ITERATIONS do
-    for k = 1, npairs do resolvePair(bodies[pairA[k]], bodies[pairB[k]]) end
-  end
-  -- the walls last, so that no shape ends the frame in a wall: what the iterations leave over
-  -- stays between moving shapes, and the next frame resolves it
+  -- pairs of two moving shapes, and pairs with a wall or the floor, in two lists
+  local pairA, pairB, moving, fixed = world.pairA, world.pairB, world.moving, world.fixed
+  local nmoving, nfixed = 0, 0
   for k = 1, npairs do
     local a, b = bodies[pairA[k]], bodies[pairB[k]]
-    if a.invMass == 0 or b.invMass == 0 then resolvePair(a, b) end
+    if a.invMass > 0 and b.invMass > 0 then
+      nmoving = nmoving + 1
+      moving[nmoving] = k
+    elseif a.invMass > 0 or b.invMass > 0 then
+      nfixed = nfixed + 1
+      fixed[nfixed] = k
+    end
+  end
+  for _ = 1, ITERATIONS do
+    for i = 1, nmoving do
+      local k = moving[i]
+      resolvePair(bodies[pairA[k]], bodies[pairB[k]])
+    end
+    for i = 1, nfixed do
+      local k = fixed[i]
+      resolvePair(bodies[pairA[k]], bodies[pairB[k]])
+    end
+  end
+  -- the walls and the floor once more, so that no shape ends the frame in them: what the
+  -- iterations leave over stays between moving shapes, and the next frame resolves it
+  for i = 1, nfixed do
+    local k = fixed[i]
+    resolvePair(bodies[pairA[k]], bodies[pairB[k]])
   end
 end
 
@@ -392,6 +419,13 @@ end
 
 if type(requiredAs) == "string" and requiredAs:match("arena$") then return arena end
 
+-- LuaJIT keeps at most 1000 traces in 512 KB of machine code by default. The exact fallbacks and
+-- compound shapes of polygon.lua give it many side traces; once either limit is reached it
+-- flushes every trace and starts over (`luajit -jv` shows "failed to allocate mcode memory"), and
+-- this scene runs several times slower. A game with much branchy Lua code raises the limits the
+-- same way, once at start-up: `luajit examples/arena.lua 300 default` keeps LuaJIT's defaults.
+local jit = rawget(_G, "jit")
+if jit and arg[2] ~= "default" then jit.opt.start("maxtrace=8000", "maxmcode=16384") end
 local frames = tonumber(arg and arg[1]) or 300
 local stats = arena.run(frames)
 print(("arena: %d bodies, %d frames on %s"):format(stats.bodies, stats.frames,
