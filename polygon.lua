@@ -1996,6 +1996,7 @@ end
 --------------------------------------------------------------------------------------------------
 -- Triangulation and convex parts
 --------------------------------------------------------------------------------------------------
+do   -- this section's helpers are local to it
 -- Ear clipping over one ring of vertex nodes: holes are first joined to the outer ring by a
 -- bridge to a vertex they see (Eberly's method), an ear is a strictly convex vertex whose
 -- triangle no other vertex blocks, and the vertices a triangle's box could hold are found in a
@@ -2664,9 +2665,11 @@ function polygon.polygonConvexParts(points, holes)
   return out
 end
 
+end
 --------------------------------------------------------------------------------------------------
 -- Compound shapes: lists of convex parts
 --------------------------------------------------------------------------------------------------
+do   -- this section's helpers are local to it
 -- polygonsCollide, polygonsCollideV and polygonCircleCollideV also take, for either shape, a list
 -- of convex parts {part1, part2, ...}: what polygonConvexParts returns, or parts built by hand.
 -- A flat array holds a number at [1], a list of parts a table.
@@ -2893,7 +2896,7 @@ local function addFaces(edges, ne, orientation, other, no, internal, sense, k, w
       if not separated then
         local tol = projectionTolerance(w, h, ux, uy)
         if -lo <= tol and (-lo < -tol
-            or clearOfLine(ax, ay, bx, by, ax, ay, orientation, other, no, 0.0, 0.0)) then
+            or not vertexInside(ax, ay, bx, by, ax, ay, orientation, other, no, 0.0, 0.0)) then
           separated = true
         end
       end
@@ -3269,9 +3272,11 @@ function collideCircleParts(fname, shape, cx, cy, r)
   return best / k, tx / k + 0.0, ty / k + 0.0
 end
 
+end
 --------------------------------------------------------------------------------------------------
 -- Moving and bounding shapes
 --------------------------------------------------------------------------------------------------
+do   -- this section's helpers are local to it (a chunk may hold at most 200 locals)
 -- A shape here is a flat array {x1, y1, ...} or a list of convex parts {part1, part2, ...}, each
 -- part a flat array; isParts (Compound shapes) tells them apart by the first entry.
 
@@ -3485,6 +3490,7 @@ function polygon.polygonRotate(points, angle, ox, oy, out)
   return out
 end
 
+end
 --------------------------------------------------------------------------------------------------
 -- Validation and the Polygon class
 --------------------------------------------------------------------------------------------------

@@ -122,7 +122,7 @@ describe("polygonRotate", function()
   describe("without out", function()
     it("leaves the input unchanged and returns a new table", function()
       for _, p in ipairs({ SQUARE, { SQUARE, { 0, 0, 6, 0, 0, 3 } } }) do
-        local copy = shapes.deepcopy(p)
+        local copy = shapes.deepCopy(p)
         local got = rotate(p, 0.3)
         assert.are_not.equal(p, got)
         assert.are.same(copy, p)

@@ -21,7 +21,7 @@ describe("polygonTranslate", function()
 
     it("leaves the input unchanged and keeps the winding", function()
       for _, p in ipairs({ SQUARE, shapes.reverse(SQUARE) }) do
-        local copy = shapes.deepcopy(p)
+        local copy = shapes.deepCopy(p)
         local moved = translate(p, 0.5, 1e6)
         assert.are.same(copy, p)
         assert.are.equal(oracle.winding(p), oracle.winding(moved))

@@ -190,7 +190,7 @@ describe("polygonTriangulate", function()
     end)
 
     it("does not change its arguments", function()
-      local points, holes = shapes.deepcopy(FRAME), { shapes.deepcopy(WINDOW) }
+      local points, holes = shapes.deepCopy(FRAME), { shapes.deepCopy(WINDOW) }
       triangulate(points, holes)
       convexParts(points, holes)
       assert.are.same(FRAME, points)
