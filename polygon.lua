@@ -289,6 +289,42 @@ local function areaSign(points, n)
   return areaSignOf(points, n, shoelace(points, n))
 end
 
+-- Small kernels of the exact paths: a triple product and a square added to the expansion,
+-- and the scans that the rare paths make (non-finite coordinates, the largest magnitude).
+
+-- Adds a * b * c to the scratch expansion exactly (products below 2^996, none underflowing).
+local function expAddTriple(a, b, c)
+  local hi, lo = twoProduct(a, b)
+  expAddProduct(hi, c)
+  expAddProduct(lo, c)
+end
+
+-- Adds sign * (hi + lo)^2 = sign * (hi^2 + 2 hi lo + lo^2) to the expansion exactly.
+local function expAddSquare(hi, lo, sign)
+  expAddProduct(sign * hi, hi)
+  expAddProduct(sign * 2 * hi, lo)
+  expAddProduct(sign * lo, lo)
+end
+
+-- Whether points[1..n] holds a NaN or an infinity. Called only where a sum came out non-finite.
+local function holdsNonFinite(points, n)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v ~= v or v == huge or v == -huge then return true end
+  end
+  return false
+end
+
+-- The largest coordinate magnitude of points[1..n], or m if that is larger.
+local function largestMagnitude(points, n, m)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v < 0 then v = -v end
+    if v > m then m = v end
+  end
+  return m
+end
+
 --------------------------------------------------------------------------------------------------
 -- Argument checks: O(1), raised at the caller's level
 --------------------------------------------------------------------------------------------------
@@ -313,15 +349,10 @@ local function checkNumber(v, fname, argname, level)
   end
 end
 
---------------------------------------------------------------------------------------------------
--- Measures: winding, area, type, centre
---------------------------------------------------------------------------------------------------
-
--- shared helper: lead moves it to the kernels
 -- Raises fname's error when points holds a NaN or an infinite coordinate (x - x is 0 exactly
 -- for every finite x, NaN otherwise). O(n): only for the rare paths that a non-finite value
 -- always reaches (a NaN or infinite sum, a failed filter). level as in checkPoints.
-local function checkFinite(points, n, fname, argname, level)
+local function checkFinitePoints(points, n, fname, argname, level)
   for i = 1, n do
     local v = points[i]
     if v - v ~= 0 then
@@ -330,6 +361,26 @@ local function checkFinite(points, n, fname, argname, level)
     end
   end
 end
+
+-- Checks that v is a number and finite (NaN and infinities named as such).
+local function checkFiniteNumber(v, fname, argname, level)
+  checkNumber(v, fname, argname, (level or 3) + 1)
+  if v ~= v or v == huge or v == -huge then
+    error(("%s: %s must be finite, got %s"):format(fname, argname, tostring(v)), level or 3)
+  end
+end
+
+-- Checks that a radius is a finite number, not negative.
+local function checkRadius(r, fname, argname)
+  checkFiniteNumber(r, fname, argname, 4)
+  if r < 0 then
+    error(("%s: %s must not be negative, got %s"):format(fname, argname, tostring(r)), 3)
+  end
+end
+
+--------------------------------------------------------------------------------------------------
+-- Measures: winding, area, type, centre
+--------------------------------------------------------------------------------------------------
 
 -- The PUC polygonType filter's bound on a turn's rounding error, squared: CROSS_BOUND^2 times
 -- 2, room for the rounding of the sum of squares and of the squares.
@@ -374,7 +425,7 @@ function polygon.polygonWindingOrder(points)
   local d = y1 - py
   sum = sum + px * d
   if areaUncertain(n / 2, sum, xSq, dSq + d * d) then
-    checkFinite(points, n, "polygonWindingOrder", "points", 3)
+    checkFinitePoints(points, n, "polygonWindingOrder", "points", 3)
     shoelaceExact(points, n)
     sum = expSign()
   end
@@ -410,7 +461,7 @@ function polygon.polygonArea(points)
   if sum - sum ~= 0 then
     -- NaN or infinite: a non-finite coordinate (an error), or terms that overflowed, whose
     -- exact sum (scaled) may still be finite
-    checkFinite(points, n, "polygonArea", "points", 3)
+    checkFinitePoints(points, n, "polygonArea", "points", 3)
     local s = shoelaceExact(points, n)
     sum = expCompress() / s / s
   end
@@ -469,7 +520,7 @@ function polygon.polygonAreaAccurate(points)
   local quarterUlp, m2 = 0.25 * EPS * twice, m * m
   local boundSq = DOT2_BOUND * DOT2_BOUND * m2 * m2 * m * magSq
   if not (boundSq < quarterUlp * quarterUlp) then   -- luacheck: ignore 581
-    checkFinite(points, n, "polygonAreaAccurate", "points", 3)
+    checkFinitePoints(points, n, "polygonAreaAccurate", "points", 3)
     local s = shoelaceExact(points, n)
     twice = expCompress() / s / s
   end
@@ -481,7 +532,7 @@ end
 -- cannot decide (a turn within rounding of zero, a repeated vertex, an overflow or a non-finite
 -- coordinate, which it checks for first). Every coordinate is converted before it is compared.
 local function typeCareful(points, n)
-  checkFinite(points, n, "polygonType", "points", 4)
+  checkFinitePoints(points, n, "polygonType", "points", 4)
   local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
   local j = n - 3
   while j > 0 and points[j] + 0.0 == cx and points[j + 1] + 0.0 == cy do j = j - 2 end
@@ -709,21 +760,13 @@ function polygon.polygonCenter(points)
   local m = n / 2
   local sumX, sumY = vertexSums(points, n, 1.0)
   if sumX - sumX ~= 0 or sumY - sumY ~= 0 then   -- NaN or infinite: rare, so check here
-    checkFinite(points, n, "polygonCenter", "points", 3)
+    checkFinitePoints(points, n, "polygonCenter", "points", 3)
     local scale = 1.0   -- finite coordinates whose sum overflowed: scale by 2^-k, 2^k >= m
     while scale * m > 1 do scale = scale * 0.5 end
     sumX, sumY = vertexSums(points, n, scale)
     return sumX / m / scale, sumY / m / scale
   end
   return sumX / m, sumY / m
-end
-
--- Adds a * b * c to the scratch expansion exactly (products below 2^996, none underflowing).
--- shared helper: lead moves it to the kernels
-local function expAddTriple(a, b, c)
-  local hi, lo = twoProduct(a, b)
-  expAddProduct(hi, c)
-  expAddProduct(lo, c)
 end
 
 -- The moment sum (u_i + u_j)(u_i v_j - u_j v_i) over the edges i -> j, as an exact expansion in
@@ -826,7 +869,7 @@ function polygon.polygonCentroid(points)
   if (area2 < 0 and -area2 or area2) * (CANCELLATION_LIMIT * n / 2) > magnitude then
     cx, cy = x0 + momentX / (3 * area2) / kx, y0 + momentY / (3 * area2) / ky
   else
-    checkFinite(points, n, "polygonCentroid", "points", 3)
+    checkFinitePoints(points, n, "polygonCentroid", "points", 3)
     cx, cy = centroidExact(points, n)
     if cx == nil then return nil end
   end
@@ -1028,27 +1071,6 @@ end
 -- the rounding of the bound itself) is decided again exactly, with the cross kernel.
 local function projectionTolerance(spanX, spanY, nx, ny)
   return 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))
-end
-
--- shared helper: lead moves it to the kernels
--- Whether points[1..n] holds a NaN or an infinity. Called only where a sum came out non-finite.
-local function holdsNonFinite(points, n)
-  for i = 1, n do
-    local v = points[i] + 0.0
-    if v ~= v or v == huge or v == -huge then return true end
-  end
-  return false
-end
-
--- shared helper: lead moves it to the kernels
--- The largest coordinate magnitude of points[1..n], or m if that is larger.
-local function largestMagnitude(points, n, m)
-  for i = 1, n do
-    local v = points[i] + 0.0
-    if v < 0 then v = -v end
-    if v > m then m = v end
-  end
-  return m
 end
 
 -- The SAT engine's one exact fallback: the index of a vertex of points that, moved by (dx, dy)
@@ -1456,14 +1478,6 @@ end
 -- with ((b - a) x (c - a))^2, degree 4. Each is first decided in floating point with an error
 -- bound and redone as an expansion only when the bound cannot vouch for the sign.
 
--- shared helper: lead moves it to the kernels
--- Adds sign * (hi + lo)^2 = sign * (hi^2 + 2 hi lo + lo^2) to the expansion exactly.
-local function expAddSquare(hi, lo, sign)
-  expAddProduct(sign * hi, hi)
-  expAddProduct(sign * 2 * hi, lo)
-  expAddProduct(sign * lo, lo)
-end
-
 -- The exact tests scale their differences by a power of two into [2^186, 2^250]: a product of
 -- four such numbers stays below 2^1010 (no overflow), and a term up to 2^400 times smaller than
 -- the largest keeps every bit above the underflow threshold through four multiplications.
@@ -1592,21 +1606,6 @@ local function discMeetsExact(points, n, sign, cx, cy, r)
   return inside
 end
 
--- Checks that v is a number and finite (NaN and infinities named as such).
-local function checkFinite(v, fname, argname, level)
-  checkNumber(v, fname, argname, (level or 3) + 1)
-  if v ~= v or v == huge or v == -huge then
-    error(("%s: %s must be finite, got %s"):format(fname, argname, tostring(v)), level or 3)
-  end
-end
-
-local function checkRadius(r, fname, argname)
-  checkFinite(r, fname, argname, 4)
-  if r < 0 then
-    error(("%s: %s must not be negative, got %s"):format(fname, argname, tostring(r)), 3)
-  end
-end
-
 --- The range of a circle projected on the axis (nx, ny) (unit length), relative to (x, y).
 -- @return min, max
 function polygon.projectCircle(cx, cy, radius, x, y, nx, ny)
@@ -1637,11 +1636,11 @@ end
 -- @return overlap, dx, dy (overlap = r1 + r2 - distance) or false
 function polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
   local fname = "circlesCollideV"
-  checkFinite(x1, fname, "x1")
-  checkFinite(y1, fname, "y1")
+  checkFiniteNumber(x1, fname, "x1")
+  checkFiniteNumber(y1, fname, "y1")
   checkRadius(r1, fname, "r1")
-  checkFinite(x2, fname, "x2")
-  checkFinite(y2, fname, "y2")
+  checkFiniteNumber(x2, fname, "x2")
+  checkFiniteNumber(y2, fname, "y2")
   checkRadius(r2, fname, "r2")
   x1, y1, r1, x2, y2, r2 = x1 + 0.0, y1 + 0.0, r1 + 0.0, x2 + 0.0, y2 + 0.0, r2 + 0.0
   -- Far from 1 in magnitude the squares would overflow or underflow: work on copies scaled by a
@@ -1741,7 +1740,7 @@ local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
     and distSq - reachSq > bound and bound > FILTER_LO and bound < FILTER_HI
 end
 
--- One try of separatingPush: the push of the given length along (ux, uy), and whether the
+-- One try of circlePush: the push of the given length along (ux, uy), and whether the
 -- certificate holds for it; `late`: consult the exact tests where the float ones cannot tell.
 -- For the edge a -> b (q == 0), or the vertex b between its distinct neighbours a and q (all
 -- indices into points, read here rather than held, which keeps few numbers live for LuaJIT).
@@ -1764,7 +1763,7 @@ end
 
 -- far: whether some magnitude passes 2^240, where the float certificate's squares (degree 4)
 -- overflow and only the exact one tells.
-local function separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, e, v, far)
+local function circlePush(points, n, sign, cx, cy, r, depth, ux, uy, e, v, far)
   local extra = EPS * (abs(cx) + abs(cy) + 4 * r)
   -- the edge a -> b, or the vertex b and its neighbours a, q
   local a, b, q = e == 1 and n - 1 or e - 2, e, 0
@@ -1962,7 +1961,7 @@ function circleCollision(points, n, cx, cy, r)
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
     if depth < 0 then depth = 0 end
   end
-  local px, py = separatingPush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex,
+  local px, py = circlePush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex,
     max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
   return depth, px, py
 end
@@ -1983,8 +1982,8 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
     return overlap, dx, dy
   end
   local n = checkPoints(points, fname)
-  checkFinite(cx, fname, "cx")
-  checkFinite(cy, fname, "cy")
+  checkFiniteNumber(cx, fname, "cx")
+  checkFiniteNumber(cy, fname, "cy")
   checkRadius(radius, fname, "radius")
   if n < 6 or radius == 0 then return false end
   local overlap, dx, dy = circleCollision(points, n, cx + 0.0, cy + 0.0, radius + 0.0)
@@ -3206,9 +3205,9 @@ end
 
 -- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
 function collideCircleParts(fname, shape, cx, cy, r)
-  checkFinite(cx, fname, "cx", 4)
-  checkFinite(cy, fname, "cy", 4)
-  checkFinite(r, fname, "radius", 4)
+  checkFiniteNumber(cx, fname, "cx", 4)
+  checkFiniteNumber(cy, fname, "cy", 4)
+  checkFiniteNumber(r, fname, "radius", 4)
   if r < 0 then error(("%s: radius must not be negative, got %s"):format(fname, tostring(r)), 3) end
   local info = preparedParts[shape]
   local count, size, stale, left, top, right, bottom = scanShape(fname, "points", shape, true, boxes1, info)
@@ -3378,8 +3377,8 @@ function polygon.polygonTranslate(points, dx, dy, out)
   local fname = "polygonTranslate"
   if isParts(points) then
     local count = checkParts(points, fname, 3)
-    checkFinite(dx, fname, "dx")
-    checkFinite(dy, fname, "dy")
+    checkFiniteNumber(dx, fname, "dx")
+    checkFiniteNumber(dy, fname, "dy")
     out = checkOut(out, fname)
     for k = 1, count do
       local part = points[k]
@@ -3388,8 +3387,8 @@ function polygon.polygonTranslate(points, dx, dy, out)
     trim(out, count)
   else
     local n = checkPoints(points, fname)
-    checkFinite(dx, fname, "dx")
-    checkFinite(dy, fname, "dy")
+    checkFiniteNumber(dx, fname, "dx")
+    checkFiniteNumber(dy, fname, "dy")
     out = checkOut(out, fname)
     translateInto(points, n, dx, dy, out)
   end
@@ -3463,10 +3462,10 @@ function polygon.polygonRotate(points, angle, ox, oy, out)
   local parts = isParts(points)
   local count
   if parts then count = checkParts(points, fname, 3) else count = checkPoints(points, fname) end
-  checkFinite(angle, fname, "angle")
+  checkFiniteNumber(angle, fname, "angle")
   if ox ~= nil or oy ~= nil then
-    checkFinite(ox, fname, "ox")
-    checkFinite(oy, fname, "oy")
+    checkFiniteNumber(ox, fname, "ox")
+    checkFiniteNumber(oy, fname, "oy")
   end
   out = checkOut(out, fname)
   if ox == nil then ox, oy = pivotOf(points, parts, count) end
