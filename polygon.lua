@@ -28,6 +28,19 @@ local polygon = {
 -- Points are flat arrays {x1, y1, x2, y2, ...} in screen coordinates: y grows downwards, so a
 -- polygon whose shoelace sum is positive turns clockwise on screen.
 
+-- What the module offers, in the order of the file and of the README (every other name is
+-- private; the sections below say how each works):
+--   measures          polygonWindingOrder, polygonArea, polygonAreaAccurate, polygonType,
+--                     polygonCenter, polygonCentroid
+--   point in polygon  polygonContains
+--   separating axes   projectPolygon, polygonCollidesWith, polygonsCollide,
+--                     polygonCollidesWithV, polygonsCollideV
+--   circles           projectCircle, circlesCollideV, polygonCircleCollideV
+--   concave shapes    polygonTriangulate, polygonConvexParts (and lists of convex parts wherever
+--                     polygonsCollide, polygonsCollideV and polygonCircleCollideV take a polygon)
+--   moving shapes     polygonBounds, polygonTranslate, polygonRotate
+--   checking          validate, Polygon.new / Polygon(points), Polygon:contains
+
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
 local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 
