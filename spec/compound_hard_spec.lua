@@ -7,6 +7,7 @@ local scenes = require "scenes"
 local union = require "union"
 local prng = require "prng"
 local tally = require "tally"
+local garbage = require "garbage"
 
 local collide, collideV = polygon.polygonsCollide, polygon.polygonsCollideV
 
@@ -201,14 +202,11 @@ describe("compound shapes per frame", function()
       polygon.polygonCircleCollideV(floor, i % 200, 97, 5)
       polygon.polygonCircleCollideV(corner, 12, 88, 4)
     end
-    -- two rounds first: they prepare the lists and let LuaJIT build its traces (on the heap)
-    for _ = 1, 2 do
-      for i = 1, 10000 do body(i) end
-    end
+    -- garbage.growth runs warm-up rounds first (they prepare the lists and let LuaJIT build
+    -- its traces, which live on the heap) and takes the least growth over several runs: a body
+    -- that allocated per call would grow the heap in every run.
     collectgarbage("stop")
-    local before = collectgarbage("count")
-    for i = 1, 10000 do body(i) end
-    local grown = collectgarbage("count") - before
+    local grown = garbage.growth(body, 10000)
     collectgarbage("restart")
     assert.is_true(grown < 1, grown .. " KB")
   end)
