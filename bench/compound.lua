@@ -1,0 +1,154 @@
+-- Compound shapes (lists of convex parts) measured two ways, from the repository root:
+--   luajit bench/compound.lua timing 100000    time per call against the convex pair calls needed
+--   lua5.4 bench/compound.lua excess 11 1000   how much longer the push is than the true least
+--                                              translation (seed, number of scenes)
+-- The excess mode compares with spec/support/union.lua, which shares no code with polygon.lua.
+package.path = "./?.lua;./spec/support/?.lua;" .. package.path
+local polygon = require "polygon"
+local parts = require "parts"
+
+local V, B = polygon.polygonsCollideV, polygon.polygonsCollide
+
+-- Timing: a crate 8 x 8 sunk 3 into a floor of 20 parts, at 100 positions along it, against the
+-- convex calls on exactly the parts whose boxes overlap the crate (the least a compound call
+-- could cost) and against a naive loop that computes each part's box first, as a game would.
+local function timing(count)
+  local clock = os.clock
+  local floor = parts.floor(20, 10, 100, 0)
+  local crates = {}
+  for k = 0, 99 do crates[#crates + 1] = parts.box(k * 1.91, 95, 8, 8) end
+  local corner = { parts.box(0, 0, 10, 100), parts.box(10, 90, 100, 10) }
+  local cornerCrates = {}
+  for k = 0, 99 do cornerCrates[#cornerCrates + 1] = parts.box(5 + k * 0.03, 85, 8, 8) end
+
+  local function time(name, body)
+    body(1)
+    local t0 = clock()
+    local checksum = 0
+    for i = 1, count do checksum = checksum + (body(i) or 0) end
+    local seconds = clock() - t0
+    print(("%-44s %8.2f us/call  (checksum %.6g)"):format(name, seconds / count * 1e6, checksum))
+  end
+
+  local needed = {}   -- for each crate, the floor parts whose boxes overlap its box
+  for k, c in ipairs(crates) do
+    local list = {}
+    for _, p in ipairs(floor) do
+      if p[1] < c[3] and c[1] < p[3] then list[#list + 1] = p end
+    end
+    needed[k] = list
+  end
+
+  for round = 1, 2 do
+    print("round", round)
+    time("compound V: crate vs 20-part floor", function(i) return (V(floor, crates[i % 100 + 1])) end)
+    time("sum of convex V pair calls it needs", function(i)
+      local c, sum = crates[i % 100 + 1], 0
+      for _, p in ipairs(needed[i % 100 + 1]) do sum = sum + (V(p, c) or 0) end
+      return sum
+    end)
+    time("naive loop: per part box, then V pair call", function(i)
+      local c, sum = crates[i % 100 + 1], 0
+      local cx0, cy0, cx1, cy1 = c[1], c[2], c[5], c[6]
+      for _, p in ipairs(floor) do
+        local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+        for j = 1, #p, 2 do
+          local x, y = p[j], p[j + 1]
+          if x < x0 then x0 = x end
+          if x > x1 then x1 = x end
+          if y < y0 then y0 = y end
+          if y > y1 then y1 = y end
+        end
+        if x0 < cx1 and cx0 < x1 and y0 < cy1 and cy0 < y1 then sum = sum + (V(p, c) or 0) end
+      end
+      return sum
+    end)
+    time("compound boolean: crate vs 20-part floor", function(i)
+      return B(floor, crates[i % 100 + 1]) and 1 or 0
+    end)
+    time("sum of convex boolean pair calls", function(i)
+      local c, sum = crates[i % 100 + 1], 0
+      for _, p in ipairs(needed[i % 100 + 1]) do sum = sum + (B(p, c) and 1 or 0) end
+      return sum
+    end)
+    time("compound V: crate in a concave corner", function(i)
+      return (V(corner, cornerCrates[i % 100 + 1]))
+    end)
+    time("compound circle V: circle vs 20-part floor", function(i)
+      return (polygon.polygonCircleCollideV(floor, 5 + (i % 100) * 1.9, 97, 5))
+    end)
+    time("convex circle V: circle vs one part", function(i)
+      local x = 5 + (i % 100) * 1.9
+      return (polygon.polygonCircleCollideV(floor[math.floor(x / 10) + 1], x, 97, 5))
+    end)
+  end
+end
+
+-- Excess: random clusters of 1-5 convex parts against 1-2, terrains of 12 columns with a crate,
+-- terrains against clusters, both argument orders, at offsets 0, 1e5, 1e9 and 1e12 + 0.375.
+local function excess(seed, trials)
+  local union, scenes, prng = require "union", require "scenes", require "prng"
+  local g = prng.new(seed)
+  local offsets = { 0, 1e5, 1e9, 1e12 + 0.375 }
+  local total = { collisions = 0, overSlack = 0, shorter = 0, notSeparated = 0, worst = 0 }
+  local byOffset = {}
+  for _, off in ipairs(offsets) do
+    byOffset[off] = { collisions = 0, overSlack = 0, longer = 0, worst = 0 }
+  end
+
+  local function measure(s1, s2, off)
+    local overlap, dx, dy = V(s1, s2)
+    assert(parts.collide(s1, s2) == (overlap ~= false), "the boolean answer differs from the oracle's")
+    if not overlap then return end
+    local least = union.leastTranslation(s1, s2)
+    local over = overlap - least
+    local slack = parts.slack(s1, s2)   -- three times the face margin
+    local row = byOffset[off]
+    total.collisions, row.collisions = total.collisions + 1, row.collisions + 1
+    if parts.collide(s1, parts.translate(s2, dx, dy)) then total.notSeparated = total.notSeparated + 1 end
+    if over < -1e-9 * (1 + least) then total.shorter = total.shorter + 1 end
+    if over > slack then total.overSlack, row.overSlack = total.overSlack + 1, row.overSlack + 1 end
+    if over > 1e-12 * (1 + least) then row.longer = row.longer + 1 end
+    total.worst, row.worst = math.max(total.worst, over), math.max(row.worst, over)
+  end
+
+  for _ = 1, trials do
+    local kind = g:int(1, 3)
+    local off = offsets[g:int(1, 4)]
+    local s1, s2
+    if kind == 1 then
+      s1, s2 = scenes.cluster(g, g:int(1, 5), 60, 30), scenes.cluster(g, g:int(1, 2), 60, 20)
+    elseif kind == 2 then
+      local width
+      s1, width = scenes.terrain(g, 12)
+      local x, y = g:range(0, width - 10), g:range(10, 80)
+      s2 = { { x, y, x + 10, y, x + 10, y + 10, x, y + 10 } }
+    else
+      s1 = scenes.terrain(g, 8)
+      s2 = scenes.cluster(g, 2, 60, 10)
+    end
+    s1, s2 = parts.translate(s1, off, off), parts.translate(s2, off, off)
+    measure(s1, s2, off)
+    measure(s2, s1, off)
+  end
+
+  print(("collisions %d  beyond 3x the face margin %d  shorter than the oracle %d  not separated %d"
+    .. "  largest excess %.3g"):format(total.collisions, total.overSlack, total.shorter,
+    total.notSeparated, total.worst))
+  for _, off in ipairs(offsets) do
+    local row = byOffset[off]
+    print(("offset %-8.3g collisions %4d  longer than the least translation by > 1e-12 (1 + d): %4d"
+      .. "  beyond 3x the face margin: %3d  largest excess %.3g"):format(off, row.collisions, row.longer,
+      row.overSlack, row.worst))
+  end
+end
+
+local mode = arg[1]
+if mode == "timing" then
+  timing(tonumber(arg[2]) or 20000)
+elseif mode == "excess" then
+  excess(tonumber(arg[2]) or 11, tonumber(arg[3]) or 300)
+else
+  io.stderr:write("usage: lua bench/compound.lua timing [calls] | excess [seed] [scenes]\n")
+  os.exit(2)
+end
