@@ -7,40 +7,19 @@ local polygon = require "polygon"
 local prng = require "prng"
 local oracle = require "oracle"
 
+local shapes = require "shapes"
+
 local SIZES = { 100, 1000, 10000 }
 
-local function noisyCircle(n)
-  local rng, points = prng.new(n), {}
-  for i = 0, n - 1 do
-    local t = 2 * math.pi * i / n
-    local r = 1000 * (0.6 + 0.8 * rng:float())
-    points[#points + 1], points[#points + 2] = r * math.cos(t), r * math.sin(t)
-  end
-  return points
-end
+local function noisyCircle(n) return shapes.noisyCircle(n, prng.new(n)) end
 
--- turns 50 apart, the strip 30 wide; more turns for more vertices keeps the edges short
-local function spiral(n)
-  local turns, half = math.max(2, math.floor(math.sqrt(n) / 16)), n / 2
-  local points, inner = {}, {}
-  for i = 0, half - 1 do
-    local t = i / (half - 1) * turns * 2 * math.pi
-    local r = 40 + 8 * t
-    points[#points + 1], points[#points + 2] = r * math.cos(t), r * math.sin(t)
-    inner[#inner + 1], inner[#inner + 2] = (r - 30) * math.cos(t), (r - 30) * math.sin(t)
-  end
-  for i = #inner - 1, 1, -2 do points[#points + 1], points[#points + 2] = inner[i], inner[i + 1] end
-  return points
-end
+-- more turns for more vertices keeps the edges short
+local function spiral(n) return shapes.spiral(n, math.max(2, math.floor(math.sqrt(n) / 16))) end
 
 local KINDS = { { "noisy circle", noisyCircle }, { "spiral", spiral } }
 
 -- Hard cases from the issue: each is a flat array and whether it is a valid polygon.
-local function translated(points, d)
-  local out = {}
-  for i, v in ipairs(points) do out[i] = v + d end
-  return out
-end
+local function translated(points, d) return shapes.translate(points, d, d) end
 local U = { 0, 0, 50, 0, 50, 200, 250, 200, 250, 0, 300, 0, 300, 250, 0, 250 }
 local L = { 0, 0, 20, 0, 20, 10, 10, 10, 10, 20, 0, 20 }
 local GON = {}

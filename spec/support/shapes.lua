@@ -55,4 +55,33 @@ function shapes.isNumber(x)
   return type(x) == "number" and x == x
 end
 
+--- A thick spiral strip: out along the outer edge, back along the inner; n vertices.
+function shapes.spiral(n, turns)
+  local half = n / 2
+  local outer, inner = {}, {}
+  for i = 0, half - 1 do
+    local t = i / (half - 1) * turns * 2 * math.pi
+    -- turns 50 apart (8 * 2 pi), the strip 30 wide: a gap of 20 between turns
+    local r = 40 + 8 * t
+    outer[#outer + 1], outer[#outer + 2] = r * math.cos(t), r * math.sin(t)
+    inner[#inner + 1], inner[#inner + 2] = (r - 30) * math.cos(t), (r - 30) * math.sin(t)
+  end
+  local points = outer
+  for i = #inner - 1, 1, -2 do
+    points[#points + 1], points[#points + 2] = inner[i], inner[i + 1]
+  end
+  return points
+end
+
+--- A star-shaped outline of n vertices with random radii in [0.6 R, 1.4 R]: simple, concave.
+function shapes.noisyCircle(n, rng)
+  local points = {}
+  for i = 0, n - 1 do
+    local t = 2 * math.pi * i / n
+    local r = 1000 * (0.6 + 0.8 * rng:float())
+    points[#points + 1], points[#points + 2] = r * math.cos(t), r * math.sin(t)
+  end
+  return points
+end
+
 return shapes
