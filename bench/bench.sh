@@ -31,6 +31,20 @@ for lua in $luas; do
 done
 [ -n "$ran" ] || { echo "bench.sh: no Lua interpreter found (tried: $luas)" >&2; exit 1; }
 
+# Triangulation and convex parts per vertex at 100 to 10,000 vertices, beside earcut (node) and
+# love.math.triangulate where installed (full run only: it takes about a minute).
+concave=$sections/concave.md
+if [ "$quick" != 1 ]; then
+  for lua in luajit lua5.4; do
+    command -v "$lua" >/dev/null 2>&1 || continue
+    love=0; [ "$lua" = luajit ] && love=1
+    { echo "## Concave shapes on $lua: \`LOVE=$love $lua bench/concave.lua\`"; echo; echo '```'
+      LOVE=$love "$lua" bench/concave.lua; rc=$?
+      echo '```'; echo; } >> "$concave"
+    [ "$rc" = 0 ] || { echo "bench.sh: $lua bench/concave.lua failed" >&2; status=1; }
+  done
+fi
+
 {
   echo "# Benchmark: polygon.lua against the tutorial's formulas"
   echo
@@ -46,6 +60,7 @@ done
   echo "![time per call against error](speed-vs-error.png)"
   echo
   for lua in $ran; do [ -f "$sections/$lua.md" ] && cat "$sections/$lua.md"; done
+  [ -f "$concave" ] && cat "$concave"
 } > "$out/RESULTS.md"
 rm -rf "$sections"
 
