@@ -1057,20 +1057,35 @@ end
 -- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
 local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
   local ex, ey = (bx + 0.0) - ax, (by + 0.0) - ay
-  for i = 1, n - 1, 2 do
+  -- cross's filter inlined (a call per vertex is most of this loop's time on PUC Lua): the
+  -- vertex is certainly not inside when -inside det >= bound, certainly inside when
+  -- inside det >= bound; only between does cross decide, exactly. First a float-only pass
+  -- with no early exit and no call (on LuaJIT a small loop trace of its own; with the exact
+  -- call and the return inside, the loop aborted as a root trace and was unrolled into its
+  -- callers' traces, whose side exits aborted, "register coalescing too complex"): the first
+  -- vertex certainly inside and the first the filter cannot place (n + 1: none).
+  local sure, unsure = n + 1, n + 1
+  for i = n - 1, 1, -2 do   -- backwards, so the last index kept is the first
     local px, py = points[i] + dx, points[i + 1] + dy
-    -- cross's filter inlined (a call per vertex is most of this loop's time on PUC Lua): the
-    -- vertex is certainly not inside when -inside det >= bound, certainly inside when
-    -- inside det >= bound; only between does cross decide, exactly
     local l, r = ex * (py - cy), ey * (px - cx)
     local det = (l - r) * inside
     local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-    if -det < bound and (det >= bound and det > 0 or
-                         cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0) then
-      return i
+    if det >= bound and det > 0 then
+      sure = i
+    elseif -det < bound then
+      unsure = i
     end
   end
-  return false
+  if sure < unsure then return sure end
+  -- the exact pass, over the vertices before the first certain one
+  for i = unsure, sure - 2, 2 do
+    local px, py = points[i] + dx, points[i + 1] + dy
+    local l, r = ex * (py - cy), ey * (px - cx)
+    local det = (l - r) * inside
+    local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+    if -det < bound and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return i end
+  end
+  return sure <= n and sure
 end
 
 -- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
@@ -1494,7 +1509,8 @@ local function reachesFiltered(x1, y1, x2, y2, rh)
   local distSq, reachSq = dx * dx + dy * dy, rh * rh
   local gap = reachSq - distSq
   local bound = 8 * EPS * (reachSq + distSq)
-  if (gap > bound or -gap > bound) and bound > FILTER_LO and bound < FILTER_HI then return gap end
+  -- abs, not two comparisons: on LuaJIT the sign of gap then takes no side exit
+  if abs(gap) > bound and bound > FILTER_LO and bound < FILTER_HI then return gap end
   return 0.0   -- the bound cannot vouch
 end
 
