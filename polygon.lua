@@ -1193,7 +1193,9 @@ end
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
 -- component so that neither squaring overflows nor underflows. (nx, ny) must not be (0, 0).
 local function unit(nx, ny)
-  local m = abs(nx) > abs(ny) and abs(nx) or abs(ny)
+  -- max, not a branch: on LuaJIT the branch's side exits, taken for half of all directions, were
+  -- side traces of the callers' big traces (max(|ny|, |nx|) keeps |ny| on ties, as the branch did)
+  local m = max(abs(ny), abs(nx))
   nx, ny = nx / m, ny / m
   local len = sqrt(nx * nx + ny * ny)
   return nx / len, ny / len, len * m
@@ -1682,7 +1684,10 @@ function polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
   for _ = 1, 64 do
     local length = overlap + extra
     local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
-    if not circlesCollide(x1, y1, r1, x2 + px, y2 + py, r2) then
+    -- circlesCollide's exact test directly: after the push the circles are within rounding of
+    -- touching, where its filter cannot vouch (on LuaJIT its side exit made a side trace of
+    -- the caller's trace on every push, which failed, "register coalescing too complex")
+    if reachesExact(x1, y1, x2 + px, y2 + py, twoDiff(r1, -r2)) <= 0 then
       return overlap / k, px / k, py / k
     end
     extra, step = step, step * 2
