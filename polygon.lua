@@ -1092,20 +1092,35 @@ end
 -- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
 local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
   local ex, ey = (bx + 0.0) - ax, (by + 0.0) - ay
-  for i = 1, n - 1, 2 do
+  -- cross's filter inlined (a call per vertex is most of this loop's time on PUC Lua): the
+  -- vertex is certainly not inside when -inside det >= bound, certainly inside when
+  -- inside det >= bound; only between does cross decide, exactly. First a float-only pass
+  -- with no early exit and no call (on LuaJIT a small loop trace of its own; with the exact
+  -- call and the return inside, the loop aborted as a root trace and was unrolled into its
+  -- callers' traces, whose side exits aborted, "register coalescing too complex"): the first
+  -- vertex certainly inside and the first the filter cannot place (n + 1: none).
+  local sure, unsure = n + 1, n + 1
+  for i = n - 1, 1, -2 do   -- backwards, so the last index kept is the first
     local px, py = points[i] + dx, points[i + 1] + dy
-    -- cross's filter inlined (a call per vertex is most of this loop's time on PUC Lua): the
-    -- vertex is certainly not inside when -inside det >= bound, certainly inside when
-    -- inside det >= bound; only between does cross decide, exactly
     local l, r = ex * (py - cy), ey * (px - cx)
     local det = (l - r) * inside
     local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-    if -det < bound and (det >= bound and det > 0 or
-                         cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0) then
-      return i
+    if det >= bound and det > 0 then
+      sure = i
+    elseif -det < bound then
+      unsure = i
     end
   end
-  return false
+  if sure < unsure then return sure end
+  -- the exact pass, over the vertices before the first certain one
+  for i = unsure, sure - 2, 2 do
+    local px, py = points[i] + dx, points[i + 1] + dy
+    local l, r = ex * (py - cy), ey * (px - cx)
+    local det = (l - r) * inside
+    local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+    if -det < bound and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return i end
+  end
+  return sure <= n and sure
 end
 
 -- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
@@ -1213,7 +1228,9 @@ end
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
 -- component so that neither squaring overflows nor underflows. (nx, ny) must not be (0, 0).
 local function unit(nx, ny)
-  local m = abs(nx) > abs(ny) and abs(nx) or abs(ny)
+  -- max, not a branch: on LuaJIT the branch's side exits, taken for half of all directions, were
+  -- side traces of the callers' big traces (max(|ny|, |nx|) keeps |ny| on ties, as the branch did)
+  local m = max(abs(ny), abs(nx))
   nx, ny = nx / m, ny / m
   local len = sqrt(nx * nx + ny * ny)
   return nx / len, ny / len, len * m
@@ -1521,7 +1538,8 @@ local function reachesFiltered(x1, y1, x2, y2, rh)
   local distSq, reachSq = dx * dx + dy * dy, rh * rh
   local gap = reachSq - distSq
   local bound = 8 * EPS * (reachSq + distSq)
-  if (gap > bound or -gap > bound) and bound > FILTER_LO and bound < FILTER_HI then return gap end
+  -- abs, not two comparisons: on LuaJIT the sign of gap then takes no side exit
+  if abs(gap) > bound and bound > FILTER_LO and bound < FILTER_HI then return gap end
   return 0.0   -- the bound cannot vouch
 end
 
@@ -1678,7 +1696,10 @@ function polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
   for _ = 1, 64 do
     local length = overlap + extra
     local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
-    if not circlesCollide(x1, y1, r1, x2 + px, y2 + py, r2) then
+    -- circlesCollide's exact test directly: after the push the circles are within rounding of
+    -- touching, where its filter cannot vouch (on LuaJIT its side exit made a side trace of
+    -- the caller's trace on every push, which failed, "register coalescing too complex")
+    if reachesExact(x1, y1, x2 + px, y2 + py, twoDiff(r1, -r2)) <= 0 then
       return overlap / k, px / k, py / k
     end
     extra, step = step, step * 2
