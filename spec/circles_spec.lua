@@ -2,6 +2,7 @@
 -- (x2 - x1)^2 + (y2 - y1)^2 < (r1 + r2)^2 exactly; (dx, dy) moves the second circle, and after
 -- x2 + dx, y2 + dy (rounded) they no longer collide.
 local polygon = require "polygon"
+local garbage = require "garbage"
 local oracle = require "oracle"
 local exact = require "exact"
 local prng = require "prng"
@@ -209,17 +210,13 @@ describe("circlesCollideV", function()
     it("allocates nothing", function()
       local cases = { { 0, 0, 1, 1.5, 0, 1 }, { 0, 0, 2, 3, 4, 3 }, { 0, 0, 2, 3, 4, 3.0000000000000004 },
         { 7, -3, 2, 7, -3, 3 }, { 1e12, 1e12, 2, 1e12 + 3, 1e12 + 4, 3 } }
-      local function run()
-        for i = 1, 5000 do
-          local c = cases[i % #cases + 1]
-          circlesV(c[1], c[2], c[3], c[4], c[5], c[6])
-        end
+      local function body(i)
+        local c = cases[i % #cases + 1]
+        circlesV(c[1], c[2], c[3], c[4], c[5], c[6])
       end
-      run(); run()
+      -- the least growth over several runs after warm-up (LuaJIT's traces live on the heap)
       collectgarbage("stop")
-      local before = collectgarbage("count")
-      run()
-      local grown = collectgarbage("count") - before
+      local grown = garbage.growth(body, 5000)
       collectgarbage("restart")
       assert.is_true(grown < 1, grown .. " KB")
     end)

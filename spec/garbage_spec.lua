@@ -2,6 +2,7 @@
 -- inputs that take every branch: collide, touch, apart, contained, degenerate) must grow the
 -- heap by less than 1 KB. The loop itself allocates nothing: it only reads prepared tables.
 local polygon = require "polygon"
+local garbage = require "garbage"
 
 local N = 10000
 local LIMIT_KB = 1
@@ -30,18 +31,12 @@ local CIRCLES = {
   { 0, 0, 3 }, { 6, 5, 100 },
 }
 
-local function run(body)
-  for i = 1, N do body(i) end
-end
-
--- the heap growth in KB over N calls of body(i), measured after two warm-up runs of the same
--- loop: LuaJIT's compiled traces live on the heap, so they must be built before measuring
+-- the heap growth in KB over N calls of body(i): the least over several runs after warm-up runs
+-- (spec/support/garbage.lua). LuaJIT's compiled traces live on the heap and may still be
+-- recorded, or flushed and recorded again, during any one run; a body that allocates per call
+-- grows the heap in every run.
 local function growth(body)
-  run(body)
-  run(body)
-  local before = collectgarbage("count")
-  run(body)
-  return collectgarbage("count") - before
+  return garbage.growth(body, N)
 end
 
 local CASES = {
