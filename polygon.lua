@@ -267,12 +267,20 @@ local function areaUncertain(m, sum, sx, sd)
   return not (sum * sum > k * k * sx * sd)   -- luacheck: ignore 581 (NaN must be uncertain)
 end
 
+-- The largest coordinate magnitude of points[1..n], or m if that is larger.
+local function largestMagnitude(points, n, m)
+  for i = 1, n do
+    local v = points[i] + 0.0
+    if v < 0 then v = -v end
+    if v > m then m = v end
+  end
+  return m
+end
+
 -- Twice the signed area as an exact expansion in `expansion`: sum of x_i y_j - x_j y_i over all
 -- edges, of the coordinates scaled by s (returned; 1 unless they pass 2^500).
 local function shoelaceExact(points, n)
-  local m = 0.0
-  for i = 1, n do m = max(m, abs(points[i] + 0.0)) end
-  local s = exactScale(m)
+  local s = exactScale(largestMagnitude(points, n, 0.0))
   expLen = 0
   -- compress when 32 components have been added: often enough that each addition walks a short
   -- expansion, rarely enough that compressing costs little next to the additions
@@ -303,7 +311,7 @@ local function areaSign(points, n)
 end
 
 -- Small kernels of the exact paths: a triple product and a square added to the expansion,
--- and the scans that the rare paths make (non-finite coordinates, the largest magnitude).
+-- and the scan for non-finite coordinates that the rare paths make.
 
 -- Adds a * b * c to the scratch expansion exactly (products below 2^996, none underflowing).
 local function expAddTriple(a, b, c)
@@ -326,16 +334,6 @@ local function holdsNonFinite(points, n)
     if v ~= v or v == huge or v == -huge then return true end
   end
   return false
-end
-
--- The largest coordinate magnitude of points[1..n], or m if that is larger.
-local function largestMagnitude(points, n, m)
-  for i = 1, n do
-    local v = points[i] + 0.0
-    if v < 0 then v = -v end
-    if v > m then m = v end
-  end
-  return m
 end
 
 --------------------------------------------------------------------------------------------------
@@ -809,13 +807,8 @@ end
 -- coordinates are scaled by a power of two so that every product of three stays below 2^900;
 -- exact unless some product of three coordinates underflows. nil for an exact area of zero.
 local function centroidExact(points, n)
-  local big = 0.0
-  for i = 1, n do
-    local v = points[i] + 0.0
-    if v < 0 then v = -v end
-    if v > big then big = v end
-  end
-  local s = powerScale(big, 2^236, 2^300)   -- 2^300 cubed is 2^900; the range must span 2^64
+  -- 2^300 cubed is 2^900; the range must span 2^64
+  local s = powerScale(largestMagnitude(points, n, 0.0), 2^236, 2^300)
   local sScaled = shoelaceExact(points, n)   -- twice the area, of the coordinates times sScaled
   local area2 = expCompress() * (s / sScaled) * (s / sScaled)
   if area2 == 0 then return nil end
