@@ -68,6 +68,9 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- 2^63 and an integer beyond 2^53 counts as the double it converts to.
 
 local EPS = 2^-53                         -- unit roundoff of a double
+-- LuaJIT (LÖVE's runtime) or a PUC interpreter: where the fastest form differs, both are written
+-- (see shoelaceBounds for why); LuaJIT compiles a test of this constant away
+local JIT = rawget(_G, "jit") ~= nil
 local SPLITTER = 134217729.0              -- 2^27 + 1, splits a double into two 26-bit halves
 local CROSS_BOUND = (3 + 16 * EPS) * EPS  -- Shewchuk's ccwerrboundA for a 2x2 determinant
 
@@ -236,22 +239,47 @@ end
 
 -- shoelace and the bounding box in one pass, for the collision functions: returns shoelace's
 -- three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes sx + sd non-finite.
-local function shoelaceBounds(points, n)
-  local x0, y1 = points[1] + 0.0, points[2] + 0.0
-  local px, py = 0.0, y1
-  local sum, sx, sd = 0.0, 0.0, 0.0
-  local xmin, xmax, ymin, ymax = x0, x0, y1, y1
-  for i = 3, n - 1, 2 do
-    local vx, y = points[i] + 0.0, points[i + 1] + 0.0
-    local x, d = vx - x0, y - py
-    sum = sum + (px + x) * d
-    sx, sd = sx + x * x, sd + d * d
-    if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-    if y < ymin then ymin = y elseif y > ymax then ymax = y end
-    px, py = x, y
+-- On LuaJIT the box is kept with min and max, single instructions there: the comparisons' side
+-- exits were side traces of this loop, and with those of the code after it they passed LuaJIT's
+-- 100 side traces per loop, after which whole calls ran in the interpreter (`luajit -jv
+-- bench/run.lua --only 'polygonsCollideV pMix'`). The PUC interpreters call min and max as
+-- functions, so there the comparisons are faster. The two bodies compute the same numbers.
+local shoelaceBounds
+if JIT then
+  shoelaceBounds = function(points, n)
+    local x0, y1 = points[1] + 0.0, points[2] + 0.0
+    local px, py = 0.0, y1
+    local sum, sx, sd = 0.0, 0.0, 0.0
+    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+    for i = 3, n - 1, 2 do
+      local vx, y = points[i] + 0.0, points[i + 1] + 0.0
+      local x, d = vx - x0, y - py
+      sum = sum + (px + x) * d
+      sx, sd = sx + x * x, sd + d * d
+      xmin, xmax, ymin, ymax = min(xmin, vx), max(xmax, vx), min(ymin, y), max(ymax, y)
+      px, py = x, y
+    end
+    local d = y1 - py
+    return sum + px * d, sx, sd + d * d, xmin, xmax, ymin, ymax
   end
-  local d = y1 - py
-  return sum + px * d, sx, sd + d * d, xmin, xmax, ymin, ymax
+else
+  shoelaceBounds = function(points, n)
+    local x0, y1 = points[1] + 0.0, points[2] + 0.0
+    local px, py = 0.0, y1
+    local sum, sx, sd = 0.0, 0.0, 0.0
+    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+    for i = 3, n - 1, 2 do
+      local vx, y = points[i] + 0.0, points[i + 1] + 0.0
+      local x, d = vx - x0, y - py
+      sum = sum + (px + x) * d
+      sx, sd = sx + x * x, sd + d * d
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if y < ymin then ymin = y elseif y > ymax then ymax = y end
+      px, py = x, y
+    end
+    local d = y1 - py
+    return sum + px * d, sx, sd + d * d, xmin, xmax, ymin, ymax
+  end
 end
 
 -- Whether shoelace's sum is too close to zero for its sign to be trusted. Each term
@@ -1079,41 +1107,60 @@ local function projectionTolerance(spanX, spanY, nx, ny)
   return 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))
 end
 
--- The SAT engine's one exact fallback: the index of a vertex of points that, moved by (dx, dy)
--- and rounded as a caller's `p[i] + dx` rounds, lies strictly on the side `inside` (1 or -1, the
--- sign of the cross product) of the line through c parallel to a -> b; false when none does.
--- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
-local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n, dx, dy)
-  local ex, ey = (bx + 0.0) - ax, (by + 0.0) - ay
-  -- cross's filter inlined (a call per vertex is most of this loop's time on PUC Lua): the
-  -- vertex is certainly not inside when -inside det >= bound, certainly inside when
-  -- inside det >= bound; only between does cross decide, exactly. First a float-only pass
-  -- with no early exit and no call (on LuaJIT a small loop trace of its own; with the exact
-  -- call and the return inside, the loop aborted as a root trace and was unrolled into its
-  -- callers' traces, whose side exits aborted, "register coalescing too complex"): the first
-  -- vertex certainly inside and the first the filter cannot place (n + 1: none).
-  local sure, unsure = n + 1, n + 1
-  for i = n - 1, 1, -2 do   -- backwards, so the last index kept is the first
-    local px, py = points[i] + dx, points[i + 1] + dy
+-- The first pass of vertexInside, over e x (p - c) for the vertices p of points (e already
+-- turned by the side's sign): the largest det - bound (> 0: some vertex is certainly inside) and
+-- the largest det + bound (<= 0: none can be), bound being cross's error bound, cross's filter
+-- inlined (a call per vertex is most of this loop's time on PUC Lua). On LuaJIT with max and
+-- abs and no branch: the branches' side exits, taken from traces that had unrolled this loop,
+-- failed to compile ("NYI: register coalescing too complex", retried on every call). The two
+-- bodies compute the same numbers. No finite subtraction rounds across 0, so the signs of
+-- det - bound and det + bound are exact.
+local insideFilter
+if JIT then
+  insideFilter = function(ex, ey, cx, cy, points, n)
+    local sure, maybe = -huge, -huge
+    for i = 1, n - 1, 2 do
+      local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      local det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+    end
+    return sure, maybe
+  end
+else
+  insideFilter = function(ex, ey, cx, cy, points, n)
+    local sure, maybe = -huge, -huge
+    for i = 1, n - 1, 2 do
+      local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      local det, bound = l - r, CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+      if det - bound > sure then sure = det - bound end
+      if det + bound > maybe then maybe = det + bound end
+    end
+    return sure, maybe
+  end
+end
+
+-- The SAT engine's one exact fallback: whether a vertex of points lies strictly on the side
+-- `inside` (1 or -1, the sign of the cross product) of the line through c parallel to a -> b
+-- (a and b converted to doubles). The filter decides almost every call; the vertices it cannot
+-- place are decided by cross, exactly, in a loop with no early exit (an exit inside it made
+-- LuaJIT abort the loop's trace, "leaving loop in root trace"). The sign is multiplied by the
+-- sign +-1, never by an area, so nothing underflows.
+local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n)
+  cx, cy = cx + 0.0, cy + 0.0
+  local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
+  local sure, maybe = insideFilter(ex, ey, cx, cy, points, n)
+  if sure > 0 then return true end
+  if maybe <= 0 then return false end
+  local found = 0.0
+  for i = 1, n - 1, 2 do
+    local px, py = points[i] + 0.0, points[i + 1] + 0.0
     local l, r = ex * (py - cy), ey * (px - cx)
-    local det = (l - r) * inside
-    local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-    if det >= bound and det > 0 then
-      sure = i
-    elseif -det < bound then
-      unsure = i
+    if l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r)) > 0 then   -- maybe
+      local side = cross(ax, ay, bx, by, cx, cy, px, py) * inside
+      if side > found then found = side end
     end
   end
-  if sure < unsure then return sure end
-  -- the exact pass, over the vertices before the first certain one
-  for i = unsure, sure - 2, 2 do
-    local px, py = points[i] + dx, points[i + 1] + dy
-    local l, r = ex * (py - cy), ey * (px - cx)
-    local det = (l - r) * inside
-    local bound = CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-    if -det < bound and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return i end
-  end
-  return sure <= n and sure
+  return found > 0
 end
 
 -- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
@@ -1155,7 +1202,7 @@ local function reachPast(edges, ne, turn, other, no, turnOther, spanX, spanY)
       -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
       local tol = 16 * EPS * (spanX * (nx < 0 and -nx or nx) + spanY * (ny < 0 and -ny or ny))
       if depth <= tol then
-        if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+        if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no) then
           return false
         end
         if depth < 0 then depth = 0.0 end
@@ -1188,7 +1235,7 @@ local function reachPastBothEnds(edges, ne, turn, other, no, spanX, spanY)
       -- deepest vertex of edges
       local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
       if face <= tol then
-        if face < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no, 0.0, 0.0) then
+        if face < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no) then
           return false
         end
         if face < 0 then face = 0.0 end
@@ -1197,7 +1244,7 @@ local function reachPastBothEnds(edges, ne, turn, other, no, spanX, spanY)
       if far <= tol then
         ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
         if far < -tol or not vertexInside(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
-                                          other, no, 0.0, 0.0) then
+                                          other, no) then
           return false
         end
         if far < 0 then far = 0.0 end
@@ -1256,19 +1303,37 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
   -- luacheck: ignore 581 (NaN must count as non-finite)
   if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
-  -- boxes apart or touching: so are the polygons (the one-sided test may still see overlap)
-  if both and (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) then
-    return false
+  -- Between the loops, the same numbers in two forms, as in shoelaceBounds: on LuaJIT min,
+  -- max and a division, which have no side exits (the branches' exits were side traces of
+  -- shoelaceBounds' loop, past LuaJIT's 100 per loop); on PUC Lua comparisons, which cost no call.
+  -- The boxes are apart or touching (so are the polygons) when a difference is <= 0; no
+  -- subtraction of finite doubles rounds across 0.
+  if both then
+    local gap
+    if JIT then
+      gap = min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1)
+    else
+      gap = (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) and 0 or 1
+    end
+    if gap <= 0 then return false end   -- (the one-sided test may still see overlap)
   end
   -- zero area never collides: the turn is the sign of the area, decided exactly
   local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
   if turn1 == 0 then return false end
   local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
   if turn2 == 0 then return false end
-  turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0   -- signs, not magnitudes
-  -- Sizes bounding every |vx - ax| and |vy - ay| in the projections: the box around both
-  local spanX = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
-  local spanY = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
+  -- Signs, not magnitudes; and the sizes bounding every |vx - ax| and |vy - ay| in the
+  -- projections: the box around both. (A sure sign is finite: areaSignOf sends an infinite sum
+  -- to the exact path; so t / |t| is 1 or -1 exactly.)
+  local spanX, spanY
+  if JIT then
+    turn1, turn2 = turn1 / abs(turn1), turn2 / abs(turn2)
+    spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
+  else
+    turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0
+    spanX = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
+    spanY = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
+  end
   -- luacheck: ignore 581 (inf and NaN are too big)
   if not (spanX + spanY <= EXACT_TOP) and not rescaled then
     -- Far beyond the exact range the projections (products of two sizes) would overflow into
@@ -1316,36 +1381,56 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   return o / len, ux, uy, owner, edgeEnd, base, inside
 end
 
--- separatingPush's check of one push, cross's filter inlined (a call per vertex is most of
--- the loop's time on PUC Lua): the largest det + bound over the vertices p of points moved by
--- (dx, dy), where det is (b - a) x (p - q) turned to be > 0 on the side `inside` and bound is
--- cross's error bound. No vertex is inside when it is 0. The bound grows with |p - q|, so each
--- vertex is tried from a second point qb of the line too (the edge's other end; q itself when
--- the line has no second vertex), and the better of the two kept. On LuaJIT, branch-free (with
--- branches its side traces aborted, "register coalescing too complex", on every push).
+-- The line a push must clear and the move of the other polygon's vertices, for a push (dx, dy):
+-- the direction e = b - a of the chosen edge, its point q (vertex `base`) and a second point qb
+-- (vertex `second`: the edge's other end, or q again when the line has no second vertex), all
+-- moved by (dx, dy) when the line's polygon is the one that moves (lineMoves 1, else 0), and the
+-- move (vx, vy) of the other polygon's vertices. Each coordinate rounds as a game's p[i] + dx.
+local function pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
+  local lx, ly = dx * lineMoves, dy * lineMoves
+  return (lines[ib] + lx) - (lines[ia] + lx), (lines[ib + 1] + ly) - (lines[ia + 1] + ly),
+    lines[base] + lx, lines[base + 1] + ly, lines[second] + lx, lines[second + 1] + ly,
+    dx - lx, dy - ly
+end
+
+-- separatingPush's check of one push along (ux, uy): the largest det + bound over the vertices
+-- p of points moved by the push, where det is e x (p - q) turned to be > 0 on the side `inside`
+-- (e premultiplied by that sign, which is exact) and bound is cross's error bound, its filter
+-- inlined (a call per vertex is most of the loop's time on PUC Lua). No vertex is inside when
+-- it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better of
+-- the two kept. Only indices and the push cross the call: on LuaJIT the side traces that leave
+-- this loop inherit few values from their parent (with the line's six coordinates passed in, they
+-- needed more registers than there are: "NYI: register coalescing too complex", retried on
+-- every push); and the loop is branch-free there.
 local lineShortfall
 if rawget(_G, "jit") then
-  lineShortfall = function(ex, ey, qx, qy, qbx, qby, inside, points, n, dx, dy)
+  lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
+    local ex, ey, qx, qy, qbx, qby, dx, dy =
+      pushLine(lines, ia, ib, base, second, lineMoves, ux * push + 0.0, uy * push + 0.0)
+    ex, ey = ex * inside, ey * inside
     local worst = 0.0
     for i = 1, n - 1, 2 do
       local px, py = points[i] + dx, points[i + 1] + dy
       local l, r = ex * (py - qy), ey * (px - qx)
       local lb, rb = ex * (py - qby), ey * (px - qbx)
-      worst = max(worst, min((l - r) * inside + CROSS_BOUND * (abs(l) + abs(r)),
-        (lb - rb) * inside + CROSS_BOUND * (abs(lb) + abs(rb))))
+      worst = max(worst, min(l - r + CROSS_BOUND * (abs(l) + abs(r)),
+        lb - rb + CROSS_BOUND * (abs(lb) + abs(rb))))
     end
     return worst
   end
 else
-  lineShortfall = function(ex, ey, qx, qy, qbx, qby, inside, points, n, dx, dy)
+  lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
+    local ex, ey, qx, qy, qbx, qby, dx, dy =
+      pushLine(lines, ia, ib, base, second, lineMoves, ux * push + 0.0, uy * push + 0.0)
+    ex, ey = ex * inside, ey * inside
     local worst = 0.0
     for i = 1, n - 1, 2 do
       local px, py = points[i] + dx, points[i + 1] + dy
       local l, r = ex * (py - qy), ey * (px - qx)
-      local reach = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+      local reach = l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
       if reach > worst then
         l, r = ex * (py - qby), ey * (px - qbx)
-        local fromB = (l - r) * inside + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+        local fromB = l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
         if fromB < reach then reach = fromB end
         if reach > worst then worst = reach end
       end
@@ -1374,33 +1459,20 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
   local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
   if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
   local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
-  local ax, ay, bx, by = lines[ia] + 0.0, lines[ia + 1] + 0.0, lines[edgeEnd] + 0.0,
-    lines[edgeEnd + 1] + 0.0
-  local cx, cy = lines[base] + 0.0, lines[base + 1] + 0.0
-  local face = base == ia   -- the line is the edge, through a and b
-  local ulx, uly = abs(ux), abs(uy)
+  local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
   -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
   -- allowance for it, none on the first check, then that, doubling every further round
   local allowance = 0.0
   local push = depth   -- first as it is: an exact move along an axis keeps it exact
   for _ = 1, PUSH_ROUNDS do
-    local dx, dy = ux * push + 0.0, uy * push + 0.0   -- + 0.0 turns -0 into 0
-    -- the polygon that moves is p2: its line when owner is 2, else its vertices
-    local lx, ly = dx * lineMoves, dy * lineMoves
-    local vx, vy = dx - lx, dy - ly
-    local qx, qy = cx + lx, cy + ly
-    local qbx, qby = bx + lx, by + ly   -- the line's other point, when it is the edge
-    local ex, ey = qbx - (ax + lx), qby - (ay + ly)
-    local worst
-    if face then
-      worst = lineShortfall(ex, ey, qx, qy, qbx, qby, inside, others, no, vx, vy)
-    else
-      worst = lineShortfall(ex, ey, qx, qy, qx, qy, inside, others, no, vx, vy)
-    end
-    if worst == 0 then return push, dx, dy end
+    local worst = lineShortfall(lines, ia, edgeEnd, base, second, lineMoves, ux, uy, push, inside,
+      others, no)
+    if worst == 0 then return push, ux * push + 0.0, uy * push + 0.0 end   -- + 0.0: -0 to 0
     -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
     -- fell short lies, to within the polygons' size), doubled every round
-    allowance = allowance == 0 and EPS * (abs(qx) * ulx + abs(qy) * uly) or 2 * allowance
+    local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, second, lineMoves,
+      ux * push + 0.0, uy * push + 0.0)
+    allowance = allowance == 0 and EPS * (abs(qx * ux) + abs(qy * uy)) or 2 * allowance
     push = push + worst / sqrt(ex * ex + ey * ey) + allowance
     -- only far outside the exact range can the check's products overflow: keep the depth
     if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
@@ -2922,7 +2994,7 @@ local function addFaces(edges, ne, orientation, other, no, internal, sense, k, w
       if not separated then
         local tol = projectionTolerance(w, h, ux, uy)
         if -lo <= tol and (-lo < -tol
-            or not vertexInside(ax, ay, bx, by, ax, ay, orientation, other, no, 0.0, 0.0)) then
+            or not vertexInside(ax, ay, bx, by, ax, ay, orientation, other, no)) then
           separated = true
         end
       end
