@@ -90,15 +90,6 @@ for name in pairs(CASES) do NAMES[#NAMES + 1] = name end
 table.sort(NAMES)
 
 describe("per-call functions", function()
-  before_each(function()
-    collectgarbage("collect")
-    collectgarbage("stop")
-  end)
-
-  after_each(function()
-    collectgarbage("restart")
-  end)
-
   for _, name in ipairs(NAMES) do
     it(name .. " allocates less than 1 KB over 10000 calls", function()
       local kb = growth(CASES[name])
