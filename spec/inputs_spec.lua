@@ -3,21 +3,14 @@
 local polygon = require "polygon"
 local shapes = require "shapes"
 
+local samples = require "samples"
+
 local deepcopy = shapes.deepCopy
 
-local SQUARE = { 0, 0, 10, 0, 10, 10, 0, 10 }
-local SQUARE_CCW = { 0, 0, 0, 10, 10, 10, 10, 0 }
-local L = { 0, 0, 20, 0, 20, 10, 10, 10, 10, 20, 0, 20 }
-local OVERLAP = { 8, 2, 18, 2, 18, 12, 8, 12 }
-local TOUCH = { 10, 0, 20, 0, 20, 10, 10, 10 }
-local INSIDE = { 6, 3, 8, 3, 8, 5, 6, 5 }
-local REPEATED = { 0, 0, 10, 0, 10, 0, 10, 10, 0, 10 }
-local CLOSED = { 0, 0, 10, 0, 10, 10, 0, 10, 0, 0 }
-local TRIANGLE = { 5, 13, 12, 6, 15, 15 }
-local SEGMENT = { 2, 5, 8, 5, 5, 5 }
-local TWO = { 2, 5, 8, 5 }
-local STAR = { 10, 0, 16, 20, 0, 7, 20, 7, 4, 20 }
-local SLIVER = { 0, 0, 2 ^ 27 + 1, 2 ^ 27, 2 ^ 27, 2 ^ 27 - 1 }
+local SQUARE, SQUARE_CCW, L, OVERLAP = samples.SQUARE, samples.SQUARE_CCW, samples.L, samples.OVERLAP
+local TOUCH, INSIDE, REPEATED, CLOSED = samples.TOUCH, samples.INSIDE, samples.REPEATED, samples.CLOSED
+local TRIANGLE, SEGMENT, TWO = samples.TRIANGLE, samples.SEGMENT, samples.TWO
+local STAR, SLIVER = samples.STAR, samples.SLIVER
 
 local POLYS = {
   SQUARE, SQUARE_CCW, L, OVERLAP, TOUCH, INSIDE, REPEATED, CLOSED, TRIANGLE, SEGMENT, TWO, STAR, SLIVER, {},
