@@ -6,7 +6,7 @@ local shapes = require "shapes"
 local exact = require "exact"
 
 local pi, cos, sin, sqrt, floor = math.pi, math.cos, math.sin, math.sqrt, math.floor
-local translate, reverse = shapes.translate, shapes.reverse
+local reverse = shapes.reverse
 
 local W = {}
 local rng = prng.new(20261122)
@@ -67,12 +67,6 @@ function W.ordinary(count)
     list[i] = i % 2 == 1 and convex(m, cx, cy, size) or star(m, cx, cy, size)
   end
   return list
-end
-
-function W.translated(list, dx, dy)
-  local out = {}
-  for i = 1, #list do out[i] = translate(list[i], dx, dy) end
-  return out
 end
 
 -- Near-degenerate: in turn Kettner et al.'s ulp-grid triangles (a vertex moved by single ulps

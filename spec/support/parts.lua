@@ -1,33 +1,14 @@
 --- Helpers for specs on compound shapes (lists of convex parts). Shares no code with polygon.lua.
 local oracle = require "oracle"
+local shapes = require "shapes"
 
 local parts = {}
 
---- A new list with every part moved by (dx, dy) (each coordinate rounded as a game would).
-function parts.translate(list, dx, dy)
-  local out = {}
-  for k, p in ipairs(list) do
-    local q = {}
-    for i = 1, #p, 2 do
-      q[i], q[i + 1] = p[i] + dx, p[i + 1] + dy
-    end
-    out[k] = q
-  end
-  return out
-end
-
---- A new list with every part in the other winding.
-function parts.reverse(list)
-  local out = {}
-  for k, p in ipairs(list) do
-    local q, n = {}, #p
-    for i = 1, n, 2 do
-      q[n - i], q[n - i + 1] = p[i], p[i + 1]
-    end
-    out[k] = q
-  end
-  return out
-end
+--- A new list with every part moved by (dx, dy) (each coordinate rounded as a game would), and
+-- a new list with every part in the other winding: the shape helpers under the names the compound
+-- specs use.
+parts.translate = shapes.translateEach
+parts.reverse = shapes.reverseEach
 
 -- xmin, ymin, xmax, ymax of a flat array
 local function box(p)

@@ -20,6 +20,24 @@ function shapes.reverse(points)
   return out
 end
 
+--- A new list of polygons, each moved by (dx, dy): a compound shape, or a benchmark's inputs.
+function shapes.translateEach(list, dx, dy)
+  local out = {}
+  for k, points in ipairs(list) do
+    out[k] = shapes.translate(points, dx, dy)
+  end
+  return out
+end
+
+--- A new list of polygons, each in the other winding.
+function shapes.reverseEach(list)
+  local out = {}
+  for k, points in ipairs(list) do
+    out[k] = shapes.reverse(points)
+  end
+  return out
+end
+
 --- A random convex polygon of m vertices around (cx, cy), clockwise on screen, drawn from rng
 -- (spec/support/prng.lua): vertex i at angle (i - 1 + u_i) * 2 pi / m, u_i in -jitter .. jitter
 -- (below 0.5 the angles keep increasing, so it stays convex), on an ellipse whose radii are size
