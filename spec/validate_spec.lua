@@ -38,7 +38,7 @@ local function with(args, i, value)
 end
 
 -- whether s ends with suffix (Polygon.new may put its own name before validate's message)
-local function ends_with(s, suffix)
+local function endsWith(s, suffix)
   return s:sub(-#suffix) == suffix
 end
 
@@ -200,7 +200,7 @@ describe("Polygon.new", function()
       assert.is_nil(ok)
       local raised, err = pcall(Polygon.new, bad)
       assert.is_false(raised)
-      assert.is_true(ends_with(strip(err), msg), tostring(err))
+      assert.is_true(endsWith(strip(err), msg), tostring(err))
     end
   end)
 
@@ -210,7 +210,7 @@ describe("Polygon.new", function()
       local _, msg = validate(bad)
       local raised, err = pcall(Polygon, bad)
       assert.is_false(raised)
-      assert.is_true(ends_with(strip(err), msg), tostring(err))
+      assert.is_true(endsWith(strip(err), msg), tostring(err))
     end
   end)
 
