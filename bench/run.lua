@@ -207,7 +207,7 @@ local function circleRef(points, cx, cy, r)
 end
 
 local function extent(points)   -- the larger side of the bounding box
-  local x0, y0, x1, y1 = W.bbox(points)
+  local x0, y0, x1, y1 = shapes.bounds(points)
   return max(x1 - x0, y1 - y0)
 end
 

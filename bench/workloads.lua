@@ -33,16 +33,7 @@ local function mean(points)
   return sx / m, sy / m
 end
 
--- The bounding box x0, y0, x1, y1.
-local function bbox(points)
-  local x0, y0, x1, y1 = points[1], points[2], points[1], points[2]
-  for i = 3, #points - 1, 2 do
-    x0, x1 = math.min(x0, points[i]), math.max(x1, points[i])
-    y0, y1 = math.min(y0, points[i + 1]), math.max(y1, points[i + 1])
-  end
-  return x0, y0, x1, y1
-end
-W.bbox = bbox
+local bbox = shapes.bounds -- x0, y0, x1, y1
 
 -- The k-th edge's far end (flat index of its x), wrapping round.
 local function nextVertex(points, k) return k + 2 <= #points and k + 2 or 1 end

@@ -20,6 +20,17 @@ function shapes.reverse(points)
   return out
 end
 
+--- The bounding box of a flat array: xmin, ymin, xmax, ymax (math.huge, math.huge, -math.huge,
+-- -math.huge when it has no vertex).
+function shapes.bounds(points)
+  local xmin, ymin, xmax, ymax = math.huge, math.huge, -math.huge, -math.huge
+  for i = 1, #points - 1, 2 do
+    xmin, xmax = math.min(xmin, points[i]), math.max(xmax, points[i])
+    ymin, ymax = math.min(ymin, points[i + 1]), math.max(ymax, points[i + 1])
+  end
+  return xmin, ymin, xmax, ymax
+end
+
 --- A new list of polygons, each moved by (dx, dy): a compound shape, or a benchmark's inputs.
 function shapes.translateEach(list, dx, dy)
   local out = {}
