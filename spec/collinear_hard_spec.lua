@@ -169,19 +169,8 @@ describe("near-collinear points on an ulp grid (Kettner et al.)", function()
     local above = { -12, -12, 24, 24, -12, 24 }
     local below = { -12, -12, 24, -12, 24, 24 }
 
-    local function naiveContains(points, x, y)
-      local inside = false
-      local n = #points
-      for k = 1, n - 1, 2 do
-        local x1, y1 = points[k], points[k + 1]
-        local l = k == n - 1 and 1 or k + 2
-        local x2, y2 = points[l], points[l + 1]
-        if (y1 >= y) ~= (y2 >= y) and x <= x1 + (x2 - x1) * (y - y1) / (y2 - y1) then
-          inside = not inside
-        end
-      end
-      return inside
-    end
+    -- the tutorial's crossing test (bench/baseline.lua, the one transcription of the tutorial)
+    local naiveContains = require("bench.baseline").polygonContains
 
     it("matches the exact answer for all 65536 points, where the naive division fails", function()
       local lib, naive = tally.new("library contains"), tally.new("naive contains")
