@@ -308,11 +308,7 @@ end)
 describe("polygonsCollideV and polygonCollidesWithV at extreme scales", function()
   -- the hand cases above scaled by powers of two (exact), all within the contract's
   -- exactness range [2^-447, 2^500]: every result scales by the same factor k
-  local function scaled(points, k)
-    local out = {}
-    for i = 1, #points do out[i] = points[i] * k end
-    return out
-  end
+  local scaled = shapes.scale
   local B = translate(A, 8, 2)
   local S = { 6, 3, 8, 3, 8, 5, 6, 5 }
   local T = { 7, 15, 14, 8, 16, 16 }

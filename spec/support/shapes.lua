@@ -31,6 +31,54 @@ function shapes.bounds(points)
   return xmin, ymin, xmax, ymax
 end
 
+--- A new array with every coordinate multiplied by k (exact for k a power of two, barring
+-- overflow and underflow).
+function shapes.scale(points, k)
+  local out = {}
+  for i = 1, #points do
+    out[i] = points[i] * k
+  end
+  return out
+end
+
+--- The largest coordinate magnitude of any of the given flat arrays (0 for none).
+function shapes.largestMagnitude(...)
+  local largest = 0
+  for k = 1, select("#", ...) do
+    local points = select(k, ...)
+    for i = 1, #points do
+      largest = math.max(largest, math.abs(points[i]))
+    end
+  end
+  return largest
+end
+
+-- math.tointeger exists from Lua 5.3 on (rawget: luacheck's std is the common one).
+local toInteger = rawget(math, "tointeger")
+
+--- x as a Lua integer on a Lua with an integer subtype (5.3, 5.4), else x itself; an error when
+-- x has no integer value.
+function shapes.integer(x)
+  if not toInteger then return x end
+  local i = toInteger(x)
+  assert(i, "not an integer: " .. tostring(x))
+  return i
+end
+
+--- A new array of shapes.integer of every value.
+function shapes.integers(list)
+  local out = {}
+  for i, v in ipairs(list) do out[i] = shapes.integer(v) end
+  return out
+end
+
+--- A new array of every value as a float (v + 0.0).
+function shapes.floats(list)
+  local out = {}
+  for i, v in ipairs(list) do out[i] = v + 0.0 end
+  return out
+end
+
 --- A new list of polygons, each moved by (dx, dy): a compound shape, or a benchmark's inputs.
 function shapes.translateEach(list, dx, dy)
   local out = {}
