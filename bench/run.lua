@@ -16,6 +16,7 @@ package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 
 local W = require "bench.workloads"
 local oracle = require "oracle"
+local shapes = require "shapes"
 local exact = require "exact"
 
 local huge, sqrt, abs, max = math.huge, math.sqrt, math.abs, math.max
@@ -143,7 +144,7 @@ end
 local ordinary = W.ordinary(SIZES.polys)
 local big = W.large(1000, SIZES.big)
 workload("ord", "4-16 vertices near the origin, half convex", { ordinary })
-workload("far9", "4-16 vertices translated by 1e9", { W.translated(ordinary, 1e9, -0.6e9) })
+workload("far9", "4-16 vertices translated by 1e9", { shapes.translateEach(ordinary, 1e9, -0.6e9) })
 workload("degen", "near-degenerate (ulp grids, near-collinear)", { W.nearDegenerate(SIZES.degen) })
 workload("big", "1,000 vertices", { big })
 if not QUICK then workload("huge", "100,000 vertices", { W.large(100000, 2) }) end
@@ -161,7 +162,7 @@ workload("pTouch", "convex 6-8 pairs: touching (shared edge, corner or T)", pair
 workload("pMiss", "convex 6-8 pairs: missing", pairs68(W.pairMiss))
 workload("pIn", "convex 6-8 pairs: one inside the other", pairs68(W.pairInside))
 workload("pFar", "convex 6-8 pairs, mixed, translated by 1e6",
-         { W.translated(mixed[1], 1e6, -0.6e6), W.translated(mixed[2], 1e6, -0.6e6) })
+         { shapes.translateEach(mixed[1], 1e6, -0.6e6), shapes.translateEach(mixed[2], 1e6, -0.6e6) })
 workload("ciMix", "4-16 vertices, circles at an edge, a corner, missing, inside",
          W.circles(SIZES.circles, { 1, 2, 3, 4 }))
 workload("ciIn", "4-16 vertices, small circle near the middle", W.circles(SIZES.circles, { 4 }))
@@ -206,7 +207,7 @@ local function circleRef(points, cx, cy, r)
 end
 
 local function extent(points)   -- the larger side of the bounding box
-  local x0, y0, x1, y1 = W.bbox(points)
+  local x0, y0, x1, y1 = shapes.bounds(points)
   return max(x1 - x0, y1 - y0)
 end
 

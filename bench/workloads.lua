@@ -6,7 +6,7 @@ local shapes = require "shapes"
 local exact = require "exact"
 
 local pi, cos, sin, sqrt, floor = math.pi, math.cos, math.sin, math.sqrt, math.floor
-local translate, reverse = shapes.translate, shapes.reverse
+local reverse = shapes.reverse
 
 local W = {}
 local rng = prng.new(20261122)
@@ -33,16 +33,7 @@ local function mean(points)
   return sx / m, sy / m
 end
 
--- The bounding box x0, y0, x1, y1.
-local function bbox(points)
-  local x0, y0, x1, y1 = points[1], points[2], points[1], points[2]
-  for i = 3, #points - 1, 2 do
-    x0, x1 = math.min(x0, points[i]), math.max(x1, points[i])
-    y0, y1 = math.min(y0, points[i + 1]), math.max(y1, points[i + 1])
-  end
-  return x0, y0, x1, y1
-end
-W.bbox = bbox
+local bbox = shapes.bounds -- x0, y0, x1, y1
 
 -- The k-th edge's far end (flat index of its x), wrapping round.
 local function nextVertex(points, k) return k + 2 <= #points and k + 2 or 1 end
@@ -67,12 +58,6 @@ function W.ordinary(count)
     list[i] = i % 2 == 1 and convex(m, cx, cy, size) or star(m, cx, cy, size)
   end
   return list
-end
-
-function W.translated(list, dx, dy)
-  local out = {}
-  for i = 1, #list do out[i] = translate(list[i], dx, dy) end
-  return out
 end
 
 -- Near-degenerate: in turn Kettner et al.'s ulp-grid triangles (a vertex moved by single ulps

@@ -6,15 +6,11 @@
 local polygon = require "polygon"
 local oracle = require "oracle"
 local prng = require "prng"
+local shapes = require "shapes"
 
 local centroid = polygon.polygonCentroid
 
--- the largest coordinate magnitude
-local function magnitude(points)
-  local m = 0
-  for i = 1, #points do m = math.max(m, math.abs(points[i])) end
-  return m
-end
+local magnitude = shapes.largestMagnitude
 
 -- |got - want| in units of eps * M (M the largest coordinate magnitude)
 local function epsError(points, gx, gy, wx, wy)

@@ -20,20 +20,31 @@ local U = 2 ^ -53
 local SIZE = 256
 local QX, QY, RX, RY = 12, 12, 24, 24
 
--- The exact side of every grid point, from the oracle: side[i][j] = orient(p, q, r).
-local side = {}
-for i = 0, SIZE - 1 do
-  side[i] = {}
-  for j = 0, SIZE - 1 do
-    side[i][j] = oracle.orient(0.5 + i * U, 0.5 + j * U, QX, QY, RX, RY)
+-- Calls visit(i, j, px, py) for every grid point p = (px, py).
+local function eachPoint(visit)
+  for i = 0, SIZE - 1 do
+    for j = 0, SIZE - 1 do
+      visit(i, j, 0.5 + i * U, 0.5 + j * U)
+    end
   end
 end
 
--- Points on which the slower whole-polygon oracle functions run as well: a coarse sub-grid and
--- the band around the diagonal, where exact and naive answers part.
-local function sampled(i, j)
-  return (i % 8 == 0 and j % 8 == 0) or (i - j <= 2 and j - i <= 2)
+-- The same for the points on which the slower whole-polygon oracle functions run as well: a
+-- coarse sub-grid and the band around the diagonal, where exact and naive answers part.
+local function eachSampledPoint(visit)
+  eachPoint(function(i, j, px, py)
+    if (i % 8 == 0 and j % 8 == 0) or (i - j <= 2 and j - i <= 2) then
+      visit(i, j, px, py)
+    end
+  end)
 end
+
+-- The exact side of every grid point, from the oracle: side[i][j] = orient(p, q, r).
+local side = {}
+for i = 0, SIZE - 1 do side[i] = {} end
+eachPoint(function(i, j, px, py)
+  side[i][j] = oracle.orient(px, py, QX, QY, RX, RY)
+end)
 
 local function signOf(v)
   return v > 0 and 1 or (v < 0 and -1 or 0)
@@ -46,11 +57,9 @@ end
 describe("near-collinear points on an ulp grid (Kettner et al.)", function()
   it("has the exact sides the hand computation gives: sign(j - i)", function()
     local t = tally.new("oracle side vs sign(j - i)")
-    for i = 0, SIZE - 1 do
-      for j = 0, SIZE - 1 do
-        t:check(side[i][j] == signOf(j - i), i, j, side[i][j])
-      end
-    end
+    eachPoint(function(i, j)
+      t:check(side[i][j] == signOf(j - i), i, j, side[i][j])
+    end)
     assert.are.equal(0, t.count, t:message())
     assert.are.equal(SIZE * SIZE, t.total)
   end)
@@ -81,17 +90,14 @@ describe("near-collinear points on an ulp grid (Kettner et al.)", function()
   describe("polygonWindingOrder of the triangle p, q, r", function()
     it("matches the exact winding for all 65536 points, where the naive sum fails", function()
       local lib, naive = tally.new("library winding"), tally.new("naive winding")
-      for i = 0, SIZE - 1 do
-        for j = 0, SIZE - 1 do
-          local px, py = 0.5 + i * U, 0.5 + j * U
-          local expected = windingOfSign(side[i][j])
-          -- the naive shoelace sum as the tutorial writes it: sum of (x_(k+1) + x_k)(y_(k+1) - y_k)
-          local sum = (QX + px) * (QY - py) + (RX + QX) * (RY - QY) + (px + RX) * (py - RY)
-          naive:check(windingOfSign(sum) == expected)
-          local got = polygon.polygonWindingOrder({ px, py, QX, QY, RX, RY })
-          lib:check(got == expected, "p =", px, py, "got", got, "expected", expected)
-        end
-      end
+      eachPoint(function(i, j, px, py)
+        local expected = windingOfSign(side[i][j])
+        -- the naive shoelace sum as the tutorial writes it: sum of (x_(k+1) + x_k)(y_(k+1) - y_k)
+        local sum = (QX + px) * (QY - py) + (RX + QX) * (RY - QY) + (px + RX) * (py - RY)
+        naive:check(windingOfSign(sum) == expected)
+        local got = polygon.polygonWindingOrder({ px, py, QX, QY, RX, RY })
+        lib:check(got == expected, "p =", px, py, "got", got, "expected", expected)
+      end)
       naive:report()
       assert.are.equal(0, lib.count, lib:message())
       assert.is_true(naive.count > 0, "the naive winding should fail somewhere on this grid")
@@ -99,14 +105,10 @@ describe("near-collinear points on an ulp grid (Kettner et al.)", function()
 
     it("agrees with the oracle's whole-polygon winding on the sampled points", function()
       local t = tally.new("library vs oracle.winding")
-      for i = 0, SIZE - 1 do
-        for j = 0, SIZE - 1 do
-          if sampled(i, j) then
-            local pts = { 0.5 + i * U, 0.5 + j * U, QX, QY, RX, RY }
-            t:check(polygon.polygonWindingOrder(pts) == oracle.winding(pts), i, j)
-          end
-        end
-      end
+      eachSampledPoint(function(i, j, px, py)
+        local pts = { px, py, QX, QY, RX, RY }
+        t:check(polygon.polygonWindingOrder(pts) == oracle.winding(pts), i, j)
+      end)
       assert.are.equal(0, t.count, t:message())
     end)
   end)
@@ -120,31 +122,28 @@ describe("near-collinear points on an ulp grid (Kettner et al.)", function()
 
     it("matches the exact type for all 65536 points, where the naive cross products fail", function()
       local lib, naive = tally.new("library type"), tally.new("naive type")
-      for i = 0, SIZE - 1 do
-        for j = 0, SIZE - 1 do
-          local px, py = 0.5 + i * U, 0.5 + j * U
-          local expected = side[i][j] > 0 and "concave" or "convex"
-          -- naive: the cross products of adjacent edges in floating point, every vertex checked,
-          -- convex when no two nonzero ones differ in sign
-          local pts = { px, py, QX, QY, RX, RY, SX, SY }
-          local seen, naiveType = 0, "convex"
-          for k = 1, 4 do
-            local a, b, c = (k - 1) % 4, k % 4, (k + 1) % 4
-            local ux, uy = pts[2 * b + 1] - pts[2 * a + 1], pts[2 * b + 2] - pts[2 * a + 2]
-            local vx, vy = pts[2 * c + 1] - pts[2 * b + 1], pts[2 * c + 2] - pts[2 * b + 2]
-            local s = signOf(ux * vy - uy * vx)
-            if s ~= 0 then
-              if seen ~= 0 and s ~= seen then
-                naiveType = "concave"
-              end
-              seen = s
+      eachPoint(function(i, j, px, py)
+        local expected = side[i][j] > 0 and "concave" or "convex"
+        -- naive: the cross products of adjacent edges in floating point, every vertex checked,
+        -- convex when no two nonzero ones differ in sign
+        local pts = { px, py, QX, QY, RX, RY, SX, SY }
+        local seen, naiveType = 0, "convex"
+        for k = 1, 4 do
+          local a, b, c = (k - 1) % 4, k % 4, (k + 1) % 4
+          local ux, uy = pts[2 * b + 1] - pts[2 * a + 1], pts[2 * b + 2] - pts[2 * a + 2]
+          local vx, vy = pts[2 * c + 1] - pts[2 * b + 1], pts[2 * c + 2] - pts[2 * b + 2]
+          local s = signOf(ux * vy - uy * vx)
+          if s ~= 0 then
+            if seen ~= 0 and s ~= seen then
+              naiveType = "concave"
             end
+            seen = s
           end
-          naive:check(naiveType == expected)
-          local got = polygon.polygonType(pts)
-          lib:check(got == expected, "p =", px, py, "got", got, "expected", expected)
         end
-      end
+        naive:check(naiveType == expected)
+        local got = polygon.polygonType(pts)
+        lib:check(got == expected, "p =", px, py, "got", got, "expected", expected)
+      end)
       naive:report()
       assert.are.equal(0, lib.count, lib:message())
       assert.is_true(naive.count > 0, "the naive type should fail somewhere on this grid")
@@ -152,17 +151,12 @@ describe("near-collinear points on an ulp grid (Kettner et al.)", function()
 
     it("agrees with the oracle's polygonType on the sampled points, in both windings", function()
       local t = tally.new("library vs oracle.polygonType")
-      for i = 0, SIZE - 1 do
-        for j = 0, SIZE - 1 do
-          if sampled(i, j) then
-            local px, py = 0.5 + i * U, 0.5 + j * U
-            local forward = { px, py, QX, QY, RX, RY, SX, SY }
-            local backward = { SX, SY, RX, RY, QX, QY, px, py }
-            t:check(polygon.polygonType(forward) == oracle.polygonType(forward), "forward", i, j)
-            t:check(polygon.polygonType(backward) == oracle.polygonType(backward), "backward", i, j)
-          end
-        end
-      end
+      eachSampledPoint(function(i, j, px, py)
+        local forward = { px, py, QX, QY, RX, RY, SX, SY }
+        local backward = { SX, SY, RX, RY, QX, QY, px, py }
+        t:check(polygon.polygonType(forward) == oracle.polygonType(forward), "forward", i, j)
+        t:check(polygon.polygonType(backward) == oracle.polygonType(backward), "backward", i, j)
+      end)
       assert.are.equal(0, t.count, t:message())
     end)
   end)
@@ -175,39 +169,25 @@ describe("near-collinear points on an ulp grid (Kettner et al.)", function()
     local above = { -12, -12, 24, 24, -12, 24 }
     local below = { -12, -12, 24, -12, 24, 24 }
 
-    local function naiveContains(points, x, y)
-      local inside = false
-      local n = #points
-      for k = 1, n - 1, 2 do
-        local x1, y1 = points[k], points[k + 1]
-        local l = k == n - 1 and 1 or k + 2
-        local x2, y2 = points[l], points[l + 1]
-        if (y1 >= y) ~= (y2 >= y) and x <= x1 + (x2 - x1) * (y - y1) / (y2 - y1) then
-          inside = not inside
-        end
-      end
-      return inside
-    end
+    -- the tutorial's crossing test (bench/baseline.lua, the one transcription of the tutorial)
+    local naiveContains = require("bench.baseline").polygonContains
 
     it("matches the exact answer for all 65536 points, where the naive division fails", function()
       local lib, naive = tally.new("library contains"), tally.new("naive contains")
       local onlyOne = tally.new("diagonal point in exactly one triangle")
-      for i = 0, SIZE - 1 do
-        for j = 0, SIZE - 1 do
-          local px, py = 0.5 + i * U, 0.5 + j * U
-          local s = side[i][j]
-          local inAbove = polygon.polygonContains(above, px, py)
-          local inBelow = polygon.polygonContains(below, px, py)
-          if s == 0 then
-            onlyOne:check(inAbove ~= inBelow, i, j)
-          else
-            -- s > 0 means j > i: y > x, strictly inside `above` and outside `below`
-            lib:check(inAbove == (s > 0) and inBelow == (s < 0), "p =", px, py)
-            naive:check(naiveContains(above, px, py) == (s > 0))
-            naive:check(naiveContains(below, px, py) == (s < 0))
-          end
+      eachPoint(function(i, j, px, py)
+        local s = side[i][j]
+        local inAbove = polygon.polygonContains(above, px, py)
+        local inBelow = polygon.polygonContains(below, px, py)
+        if s == 0 then
+          onlyOne:check(inAbove ~= inBelow, i, j)
+        else
+          -- s > 0 means j > i: y > x, strictly inside `above` and outside `below`
+          lib:check(inAbove == (s > 0) and inBelow == (s < 0), "p =", px, py)
+          naive:check(naiveContains(above, px, py) == (s > 0))
+          naive:check(naiveContains(below, px, py) == (s < 0))
         end
-      end
+      end)
       naive:report()
       assert.are.equal(0, lib.count, lib:message())
       assert.are.equal(0, onlyOne.count, onlyOne:message())
@@ -218,17 +198,12 @@ describe("near-collinear points on an ulp grid (Kettner et al.)", function()
     it("agrees with the oracle's crossing rule on the sampled points (Polygon:contains too)", function()
       local t = tally.new("library vs oracle.contains")
       local pa, pb = polygon.Polygon(above), polygon.Polygon.new(below)
-      for i = 0, SIZE - 1 do
-        for j = 0, SIZE - 1 do
-          if sampled(i, j) then
-            local px, py = 0.5 + i * U, 0.5 + j * U
-            local ea, eb = oracle.contains(above, px, py), oracle.contains(below, px, py)
-            t:check(polygon.polygonContains(above, px, py) == ea, "above", i, j)
-            t:check(polygon.polygonContains(below, px, py) == eb, "below", i, j)
-            t:check(pa:contains(px, py) == ea and pb:contains(px, py) == eb, "Polygon:contains", i, j)
-          end
-        end
-      end
+      eachSampledPoint(function(i, j, px, py)
+        local ea, eb = oracle.contains(above, px, py), oracle.contains(below, px, py)
+        t:check(polygon.polygonContains(above, px, py) == ea, "above", i, j)
+        t:check(polygon.polygonContains(below, px, py) == eb, "below", i, j)
+        t:check(pa:contains(px, py) == ea and pb:contains(px, py) == eb, "Polygon:contains", i, j)
+      end)
       assert.are.equal(0, t.count, t:message())
     end)
   end)

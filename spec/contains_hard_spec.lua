@@ -16,20 +16,9 @@ local shapes = require "shapes"
 
 local reversed, shifted = shapes.reverse, shapes.translate
 
--- The naive crossing test, dividing for the edge's x at height y as the tutorial does.
-local function naiveContains(points, x, y)
-  local inside = false
-  local n = #points
-  local x1, y1 = points[n - 1], points[n]
-  for i = 1, n - 1, 2 do
-    local x2, y2 = points[i], points[i + 1]
-    if (y1 >= y) ~= (y2 >= y) and x <= (x2 - x1) * (y - y1) / (y2 - y1) + x1 then
-      inside = not inside
-    end
-    x1, y1 = x2, y2
-  end
-  return inside
-end
+-- The naive crossing test, dividing for the edge's x at height y: the tutorial's own
+-- (bench/baseline.lua, the one transcription of the tutorial).
+local naiveContains = require("bench.baseline").polygonContains
 
 -- Hand-made shapes: a triangle with slanted sides whose slopes are not dyadic, a trapezoid with
 -- two horizontal edges, a concave arrow with horizontal and vertical edges, a thin sliver.

@@ -3,21 +3,14 @@
 -- heap by less than 1 KB. The loop itself allocates nothing: it only reads prepared tables.
 local polygon = require "polygon"
 local garbage = require "garbage"
+local samples = require "samples"
 
 local N = 10000
 local LIMIT_KB = 1
 
-local SQUARE = { 0, 0, 10, 0, 10, 10, 0, 10 }
-local SQUARE_CCW = { 0, 0, 0, 10, 10, 10, 10, 0 }
-local L = { 0, 0, 20, 0, 20, 10, 10, 10, 10, 20, 0, 20 }
-local OVERLAP = { 8, 2, 18, 2, 18, 12, 8, 12 }
-local TOUCH = { 10, 0, 20, 0, 20, 10, 10, 10 }
-local APART = { 30, 0, 40, 0, 40, 10, 30, 10 }
-local INSIDE = { 6, 3, 8, 3, 8, 5, 6, 5 }
-local REPEATED = { 0, 0, 10, 0, 10, 0, 10, 10, 0, 10 }
-local TRIANGLE = { 5, 13, 12, 6, 15, 15 }
-local SEGMENT = { 2, 5, 8, 5, 5, 5 }
-local TWO = { 2, 5, 8, 5 }
+local SQUARE, SQUARE_CCW, L, OVERLAP = samples.SQUARE, samples.SQUARE_CCW, samples.L, samples.OVERLAP
+local TOUCH, APART, INSIDE, REPEATED = samples.TOUCH, samples.APART, samples.INSIDE, samples.REPEATED
+local TRIANGLE, SEGMENT, TWO = samples.TRIANGLE, samples.SEGMENT, samples.TWO
 
 local POLYS = { SQUARE, SQUARE_CCW, L, OVERLAP, TOUCH, APART, INSIDE, REPEATED, TRIANGLE, SEGMENT, TWO }
 local PAIRS = {
@@ -40,12 +33,6 @@ local function growth(body)
 end
 
 local CASES = {
-  polygonWindingOrder = function(i) polygon.polygonWindingOrder(POLYS[i % #POLYS + 1]) end,
-  polygonArea = function(i) polygon.polygonArea(POLYS[i % #POLYS + 1]) end,
-  polygonAreaAccurate = function(i) polygon.polygonAreaAccurate(POLYS[i % #POLYS + 1]) end,
-  polygonType = function(i) polygon.polygonType(POLYS[i % #POLYS + 1]) end,
-  polygonCenter = function(i) polygon.polygonCenter(POLYS[i % #POLYS + 1]) end,
-  polygonCentroid = function(i) polygon.polygonCentroid(POLYS[i % #POLYS + 1]) end,
   polygonContains = function(i)
     local q = POINTS[i % #POINTS + 1]
     polygon.polygonContains(POLYS[i % #POLYS + 1], q[1], q[2])
@@ -62,43 +49,36 @@ local CASES = {
   end)(),
   projectPolygon = function(i) polygon.projectPolygon(POLYS[i % #POLYS + 1], 1, 2, 3, -4) end,
   projectCircle = function(i) polygon.projectCircle(i, 2, 3, 4, 5, 0.6, 0.8) end,
-  polygonCollidesWith = function(i)
-    local pair = PAIRS[i % #PAIRS + 1]
-    polygon.polygonCollidesWith(pair[1], pair[2])
-  end,
-  polygonsCollide = function(i)
-    local pair = PAIRS[i % #PAIRS + 1]
-    polygon.polygonsCollide(pair[1], pair[2])
-  end,
-  polygonCollidesWithV = function(i)
-    local pair = PAIRS[i % #PAIRS + 1]
-    polygon.polygonCollidesWithV(pair[1], pair[2])
-  end,
-  polygonsCollideV = function(i)
-    local pair = PAIRS[i % #PAIRS + 1]
-    polygon.polygonsCollideV(pair[1], pair[2])
-  end,
   polygonCircleCollideV = function(i)
     local c = CIRCLES[i % #CIRCLES + 1]
     polygon.polygonCircleCollideV(POLYS[i % #POLYS + 1], c[1], c[2], c[3])
   end,
   validate = function(i) polygon.validate(POLYS[i % 4 + 1]) end, -- valid inputs only
 }
+-- the functions of one polygon, over every polygon in turn
+local ONE_POLYGON = {
+  "polygonWindingOrder", "polygonArea", "polygonAreaAccurate", "polygonType", "polygonCenter",
+  "polygonCentroid",
+}
+for _, name in ipairs(ONE_POLYGON) do
+  local fn = polygon[name]
+  CASES[name] = function(i) fn(POLYS[i % #POLYS + 1]) end
+end
+-- the functions of two polygons, over every pair in turn
+local TWO_POLYGONS = { "polygonCollidesWith", "polygonsCollide", "polygonCollidesWithV", "polygonsCollideV" }
+for _, name in ipairs(TWO_POLYGONS) do
+  local fn = polygon[name]
+  CASES[name] = function(i)
+    local pair = PAIRS[i % #PAIRS + 1]
+    fn(pair[1], pair[2])
+  end
+end
 
 local NAMES = {}
 for name in pairs(CASES) do NAMES[#NAMES + 1] = name end
 table.sort(NAMES)
 
 describe("per-call functions", function()
-  before_each(function()
-    collectgarbage("collect")
-    collectgarbage("stop")
-  end)
-
-  after_each(function()
-    collectgarbage("restart")
-  end)
-
   for _, name in ipairs(NAMES) do
     it(name .. " allocates less than 1 KB over 10000 calls", function()
       local kb = growth(CASES[name])

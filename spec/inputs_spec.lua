@@ -3,28 +3,21 @@
 local polygon = require "polygon"
 local shapes = require "shapes"
 
+local samples = require "samples"
+
 local deepcopy = shapes.deepCopy
 
-local SQUARE = { 0, 0, 10, 0, 10, 10, 0, 10 }
-local SQUARE_CCW = { 0, 0, 0, 10, 10, 10, 10, 0 }
-local L = { 0, 0, 20, 0, 20, 10, 10, 10, 10, 20, 0, 20 }
-local OVERLAP = { 8, 2, 18, 2, 18, 12, 8, 12 }
-local TOUCH = { 10, 0, 20, 0, 20, 10, 10, 10 }
-local INSIDE = { 6, 3, 8, 3, 8, 5, 6, 5 }
-local REPEATED = { 0, 0, 10, 0, 10, 0, 10, 10, 0, 10 }
-local CLOSED = { 0, 0, 10, 0, 10, 10, 0, 10, 0, 0 }
-local TRIANGLE = { 5, 13, 12, 6, 15, 15 }
-local SEGMENT = { 2, 5, 8, 5, 5, 5 }
-local TWO = { 2, 5, 8, 5 }
-local STAR = { 10, 0, 16, 20, 0, 7, 20, 7, 4, 20 }
-local SLIVER = { 0, 0, 2 ^ 27 + 1, 2 ^ 27, 2 ^ 27, 2 ^ 27 - 1 }
+local SQUARE, SQUARE_CCW, L, OVERLAP = samples.SQUARE, samples.SQUARE_CCW, samples.L, samples.OVERLAP
+local TOUCH, INSIDE, REPEATED, CLOSED = samples.TOUCH, samples.INSIDE, samples.REPEATED, samples.CLOSED
+local TRIANGLE, SEGMENT, TWO = samples.TRIANGLE, samples.SEGMENT, samples.TWO
+local STAR, SLIVER = samples.STAR, samples.SLIVER
 
 local POLYS = {
   SQUARE, SQUARE_CCW, L, OVERLAP, TOUCH, INSIDE, REPEATED, CLOSED, TRIANGLE, SEGMENT, TWO, STAR, SLIVER, {},
 }
 
 -- calls fn(...) on the given tables and asserts that they are unchanged afterwards
-local function assert_unchanged(fn, ...)
+local function assertUnchanged(fn, ...)
   local args = { ... }
   local n = select("#", ...)
   local before = deepcopy(args)
@@ -49,7 +42,7 @@ describe("input tables", function()
   for _, name in ipairs(ONE) do
     it("are unchanged by " .. name, function()
       for _, p in ipairs(POLYS) do
-        assert_unchanged(polygon[name], p)
+        assertUnchanged(polygon[name], p)
       end
     end)
   end
@@ -57,14 +50,14 @@ describe("input tables", function()
   it("are unchanged by polygonContains", function()
     for _, p in ipairs(POLYS) do
       for _, q in ipairs({ { 5, 5 }, { 10, 5 }, { 0, 0 }, { 15, 15 } }) do
-        assert_unchanged(polygon.polygonContains, p, q[1], q[2])
+        assertUnchanged(polygon.polygonContains, p, q[1], q[2])
       end
     end
   end)
 
   it("are unchanged by projectPolygon", function()
     for _, p in ipairs(POLYS) do
-      if #p >= 2 then assert_unchanged(polygon.projectPolygon, p, 1, 2, 3, -4) end
+      if #p >= 2 then assertUnchanged(polygon.projectPolygon, p, 1, 2, 3, -4) end
     end
   end)
 
@@ -72,44 +65,44 @@ describe("input tables", function()
     it("are unchanged by " .. name .. " in both argument orders", function()
       for _, p in ipairs(POLYS) do
         for _, q in ipairs(POLYS) do
-          assert_unchanged(polygon[name], p, q)
+          assertUnchanged(polygon[name], p, q)
         end
       end
     end)
   end
 
   it("are unchanged by polygonsCollideV when both arguments are the same table", function()
-    assert_unchanged(polygon.polygonsCollideV, SQUARE, SQUARE)
+    assertUnchanged(polygon.polygonsCollideV, SQUARE, SQUARE)
   end)
 
   it("are unchanged by polygonCircleCollideV", function()
     for _, p in ipairs(POLYS) do
       for _, c in ipairs({ { 12, 5, 3 }, { 7, 4, 1 }, { 10, 10, 2 }, { 0, 0, 3 }, { 6, 5, 100 } }) do
-        assert_unchanged(polygon.polygonCircleCollideV, p, c[1], c[2], c[3])
+        assertUnchanged(polygon.polygonCircleCollideV, p, c[1], c[2], c[3])
       end
     end
   end)
 
   it("are unchanged by Polygon.new, Polygon() and p:contains", function()
     for _, p in ipairs({ SQUARE, SQUARE_CCW, L, STAR, REPEATED }) do
-      assert_unchanged(polygon.Polygon.new, p)
-      assert_unchanged(polygon.Polygon, p)
-      assert_unchanged(function(points) return polygon.Polygon.new(points):contains(5, 5) end, p)
+      assertUnchanged(polygon.Polygon.new, p)
+      assertUnchanged(polygon.Polygon, p)
+      assertUnchanged(function(points) return polygon.Polygon.new(points):contains(5, 5) end, p)
     end
   end)
 
   it("are unchanged by validate on rejected input", function()
     for _, bad in ipairs({ { 0, 0, 10 }, { 0, 0, 10, 0 }, { 0, 0, 10, 0 / 1, "x", 5 } }) do
-      assert_unchanged(polygon.validate, bad)
+      assertUnchanged(polygon.validate, bad)
     end
   end)
 
   it("keep extra fields and metatables the caller put on them", function()
     local mt = { __index = function() return nil end }
     local p = setmetatable({ 0, 0, 10, 0, 10, 10, 0, 10, name = "box" }, mt)
-    assert_unchanged(polygon.polygonArea, p)
-    assert_unchanged(polygon.polygonsCollideV, p, OVERLAP)
-    assert_unchanged(polygon.polygonCircleCollideV, p, 12, 5, 3)
-    assert_unchanged(polygon.Polygon.new, p)
+    assertUnchanged(polygon.polygonArea, p)
+    assertUnchanged(polygon.polygonsCollideV, p, OVERLAP)
+    assertUnchanged(polygon.polygonCircleCollideV, p, 12, 5, 3)
+    assertUnchanged(polygon.Polygon.new, p)
   end)
 end)

@@ -12,33 +12,15 @@ local oracle = require "oracle"
 local exact = require "exact"
 local prng = require "prng"
 local tally = require "tally"
+local helpers = require "shapes" -- (this file's `shapes` are its polygons)
 
--- math.type and math.tointeger exist from Lua 5.3 on (rawget: luacheck's std is the common one)
-local mathType, toInteger = rawget(math, "type"), rawget(math, "tointeger")
+-- int(x): x as a Lua integer where there is one; ints, floats: copies of an array as integers, floats
+local int, ints, floats = helpers.integer, helpers.integers, helpers.floats
+
+-- math.type exists from Lua 5.3 on (rawget: luacheck's std is the common one)
+local mathType = rawget(math, "type")
 local hasIntegers = mathType ~= nil and mathType(1) == "integer"
 local SUBTYPE = hasIntegers and "integer subtype" or "floats (no integer subtype on this Lua)"
-
--- An integer-valued number as a Lua integer where there is one.
-local function int(x)
-  if hasIntegers then
-    local i = toInteger(x)
-    assert(i, "not an integer: " .. tostring(x))
-    return i
-  end
-  return x
-end
-
-local function ints(list)
-  local out = {}
-  for i, v in ipairs(list) do out[i] = int(v) end
-  return out
-end
-
-local function floats(list)
-  local out = {}
-  for i, v in ipairs(list) do out[i] = v + 0.0 end
-  return out
-end
 
 -- Near-collinear triangles: p0 = (a, b), p1 = p0 + (x1, y1), p2 = p0 + 2 (x1, y1) + (e1, e2), with
 -- x1, y1 even numbers near 2^50 and e1, e2 in -1 .. 1. The cross product is then

@@ -35,13 +35,7 @@ local function convexPolygon(rng, cx, cy, radius)
   return points
 end
 
-local function largestMagnitude(a, b)
-  local m = 0
-  for _, points in ipairs({ a, b }) do
-    for i = 1, #points do m = math.max(m, math.abs(points[i])) end
-  end
-  return m
-end
+local largestMagnitude = shapes.largestMagnitude
 
 -- The spacing of doubles at magnitude m (an ulp of m, for m a normal double).
 local function ulp(m)

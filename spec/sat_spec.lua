@@ -29,13 +29,13 @@ end
 
 -- after adding (dx, dy) to every vertex of p2 the polygons touch without colliding, and
 -- pushed back by a millionth of the way they collide again
-local function assert_just_touch(p1, p2, dx, dy)
+local function assertJustTouch(p1, p2, dx, dy)
   assert.is_false(collide(p1, translate(p2, dx, dy)))
   assert.is_true(collide(p1, translate(p2, dx - dx * 1e-6, dy - dy * 1e-6)))
 end
 
 -- the V variants return false exactly when the booleans do
-local function assert_consistent(a, b)
+local function assertConsistent(a, b)
   assert.are.equal(collidesWith(a, b), collidesWithV(a, b) ~= false)
   assert.are.equal(collide(a, b), collideV(a, b) ~= false)
 end
@@ -50,22 +50,22 @@ describe("polygonsCollide and polygonsCollideV", function()
       windings(A, B, function(a, b)
         assert.is_true(collide(a, b))
         assert.is_true(collide(b, a))
-        assert_consistent(a, b)
-        assert_consistent(b, a)
+        assertConsistent(a, b)
+        assertConsistent(b, a)
       end)
     end)
 
     it("returns overlap 2 and pushes the second square by (2, 0)", function()
       windings(A, B, function(a, b)
         assert.are.same({ 2, 2, 0 }, call3(collideV, a, b))
-        assert_just_touch(a, b, 2, 0)
+        assertJustTouch(a, b, 2, 0)
       end)
     end)
 
     it("pushes the first square by (-2, 0) when the arguments are swapped", function()
       windings(A, B, function(a, b)
         assert.are.same({ 2, -2, 0 }, call3(collideV, b, a))
-        assert_just_touch(b, a, -2, 0)
+        assertJustTouch(b, a, -2, 0)
       end)
     end)
   end)
@@ -120,7 +120,7 @@ describe("polygonsCollide and polygonsCollideV", function()
     it("returns the penetration depth 4 and pushes the inner square out by (4, 0)", function()
       windings(A, S, function(a, s)
         assert.are.same({ 4, 4, 0 }, call3(collideV, a, s))
-        assert_just_touch(a, s, 4, 0)
+        assertJustTouch(a, s, 4, 0)
       end)
     end)
 
@@ -129,7 +129,7 @@ describe("polygonsCollide and polygonsCollideV", function()
       -- moves along -x by 4 to [-4,6]
       windings(A, S, function(a, s)
         assert.are.same({ 4, -4, 0 }, call3(collideV, s, a))
-        assert_just_touch(s, a, -4, 0)
+        assertJustTouch(s, a, -4, 0)
       end)
     end)
   end)
@@ -145,7 +145,7 @@ describe("polygonsCollide and polygonsCollideV", function()
         assert.are.equal(7, overlap)
         assert.are.equal(7, math.abs(dx))
         assert.are.equal(0, dy)
-        assert_just_touch(a, r, dx, dy)
+        assertJustTouch(a, r, dx, dy)
       end)
     end)
 
@@ -155,7 +155,7 @@ describe("polygonsCollide and polygonsCollideV", function()
         assert.are.equal(7, overlap)
         assert.are.equal(7, math.abs(dx))
         assert.are.equal(0, dy)
-        assert_just_touch(r, a, dx, dy)
+        assertJustTouch(r, a, dx, dy)
       end)
     end)
 
@@ -165,7 +165,7 @@ describe("polygonsCollide and polygonsCollideV", function()
         assert.are.equal(10, overlap)
         assert.are.equal(10, math.abs(dx) + math.abs(dy))
         assert.are.equal(0, dx * dy)
-        assert_just_touch(a, b, dx, dy)
+        assertJustTouch(a, b, dx, dy)
       end)
     end)
   end)
@@ -308,11 +308,7 @@ end)
 describe("polygonsCollideV and polygonCollidesWithV at extreme scales", function()
   -- the hand cases above scaled by powers of two (exact), all within the contract's
   -- exactness range [2^-447, 2^500]: every result scales by the same factor k
-  local function scaled(points, k)
-    local out = {}
-    for i = 1, #points do out[i] = points[i] * k end
-    return out
-  end
+  local scaled = shapes.scale
   local B = translate(A, 8, 2)
   local S = { 6, 3, 8, 3, 8, 5, 6, 5 }
   local T = { 7, 15, 14, 8, 16, 16 }
@@ -365,8 +361,8 @@ describe("polygonCollidesWith and polygonCollidesWithV", function()
       assert.are.equal(false, collidesWithV(t, a))
       assert.are.equal(false, collideV(a, t))
       assert.are.equal(false, collideV(t, a))
-      assert_consistent(a, t)
-      assert_consistent(t, a)
+      assertConsistent(a, t)
+      assertConsistent(t, a)
     end)
   end)
 

@@ -14,6 +14,7 @@ local exact = require "exact"
 local prng = require "prng"
 local tally = require "tally"
 local probe = require "probe"
+local shapes = require "shapes"
 
 local OFFSETS = {}
 for _, e in ipairs({ 3, 6, 9, 12, 14, 15 }) do
@@ -79,11 +80,7 @@ local KINDS = {
 -- Whether (x, y) is inside the bounding box of the polygon (closed): a cheap exact prefilter for
 -- the oracle's boundary test.
 local function inBox(p, x, y)
-  local x0, x1, y0, y1 = p[1], p[1], p[2], p[2]
-  for i = 3, #p - 1, 2 do
-    x0, x1 = math.min(x0, p[i]), math.max(x1, p[i])
-    y0, y1 = math.min(y0, p[i + 1]), math.max(y1, p[i + 1])
-  end
+  local x0, y0, x1, y1 = shapes.bounds(p)
   return x0 <= x and x <= x1 and y0 <= y and y <= y1
 end
 

@@ -2,6 +2,7 @@
 -- (message names the function, the argument and the type got, raised at the caller's level);
 -- Polygon.new raises validate's message.
 local polygon = require "polygon"
+local callsite = require "callsite"
 
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 local validate, Polygon = polygon.validate, polygon.Polygon
@@ -36,17 +37,8 @@ local function with(args, i, value)
   return out
 end
 
--- calls fn(args) from a line of this file; returns ok, the error, and that line
-local function call_here(fn, args)
-  local line
-  local ok, err = pcall(function()
-    line = debug.getinfo(1, "l").currentline; fn(unpack(args, 1, args.n or #args))
-  end)
-  return ok, err, line
-end
-
 -- whether s ends with suffix (Polygon.new may put its own name before validate's message)
-local function ends_with(s, suffix)
+local function endsWith(s, suffix)
   return s:sub(-#suffix) == suffix
 end
 
@@ -136,7 +128,7 @@ describe("argument errors", function()
 
     describe(name, function()
       it("accepts the good arguments", function()
-        assert.is_true((call_here(fn, args)))
+        assert.is_true((callsite.call(fn, args)))
       end)
 
       for i, slot in ipairs(slots) do
@@ -157,10 +149,8 @@ describe("argument errors", function()
                 name .. ": " .. slot .. " must hold an even number of coordinates, got 5")
             end)
 
-          it("raises the error for " .. slot .. " at the caller's level (this spec file)", function()
-            local ok, err, line = call_here(fn, with(args, i, nil))
-            assert.is_false(ok)
-            assert.is_truthy(tostring(err):find("validate_spec.lua:" .. line .. ": ", 1, true))
+          it("raises the error for " .. slot .. " at the caller's level", function()
+            assert.is_true(callsite.raisesAtCaller(fn, with(args, i, nil)))
           end)
         else
           it("raises '" .. name .. ": " .. slot .. " must be a number, got string'", function()
@@ -168,10 +158,8 @@ describe("argument errors", function()
               name .. ": " .. slot .. " must be a number, got string")
           end)
 
-          it("raises the error for " .. slot .. " at the caller's level (this spec file)", function()
-            local ok, err, line = call_here(fn, with(args, i, "5"))
-            assert.is_false(ok)
-            assert.is_truthy(tostring(err):find("validate_spec.lua:" .. line .. ": ", 1, true))
+          it("raises the error for " .. slot .. " at the caller's level", function()
+            assert.is_true(callsite.raisesAtCaller(fn, with(args, i, "5")))
           end)
         end
       end
@@ -180,13 +168,13 @@ describe("argument errors", function()
 
   describe("when the radius is negative", function()
     it("polygonCircleCollideV raises an error naming the function and radius", function()
-      local ok, err = call_here(polygon.polygonCircleCollideV, { SQUARE, 5, 5, -1 })
+      local ok, err = callsite.call(polygon.polygonCircleCollideV, { SQUARE, 5, 5, -1 })
       assert.is_false(ok)
       assert.is_truthy(strip(err):find("^polygonCircleCollideV: radius"))
     end)
 
     it("projectCircle raises an error naming the function and radius", function()
-      local ok, err = call_here(polygon.projectCircle, { 5, 5, -1, 0, 0, 1, 0 })
+      local ok, err = callsite.call(polygon.projectCircle, { 5, 5, -1, 0, 0, 1, 0 })
       assert.is_false(ok)
       assert.is_truthy(strip(err):find("^projectCircle: radius"))
     end)
@@ -212,7 +200,7 @@ describe("Polygon.new", function()
       assert.is_nil(ok)
       local raised, err = pcall(Polygon.new, bad)
       assert.is_false(raised)
-      assert.is_true(ends_with(strip(err), msg), tostring(err))
+      assert.is_true(endsWith(strip(err), msg), tostring(err))
     end
   end)
 
@@ -222,17 +210,13 @@ describe("Polygon.new", function()
       local _, msg = validate(bad)
       local raised, err = pcall(Polygon, bad)
       assert.is_false(raised)
-      assert.is_true(ends_with(strip(err), msg), tostring(err))
+      assert.is_true(endsWith(strip(err), msg), tostring(err))
     end
   end)
 
-  it("raises at the caller's level (this spec file)", function()
-    local ok, err, line = call_here(Polygon.new, { n = 1 })
-    assert.is_false(ok)
-    assert.is_truthy(tostring(err):find("validate_spec.lua:" .. line .. ": ", 1, true))
-    ok, err, line = call_here(Polygon, { { 0, 0 } })
-    assert.is_false(ok)
-    assert.is_truthy(tostring(err):find("validate_spec.lua:" .. line .. ": ", 1, true))
+  it("raises at the caller's level", function()
+    assert.is_true(callsite.raisesAtCaller(Polygon.new, { n = 1 }))
+    assert.is_true(callsite.raisesAtCaller(Polygon, { { 0, 0 } }))
   end)
 
   it("accepts what validate accepts", function()

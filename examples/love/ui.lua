@@ -76,13 +76,23 @@ function ui.copy(points)
   return result
 end
 
+--- Moves every vertex of points by (dx, dy), in place; returns points.
+function ui.move(points, dx, dy)
+  for i = 1, #points, 2 do
+    points[i], points[i + 1] = points[i] + dx, points[i + 1] + dy
+  end
+  return points
+end
+
 --- Returns a copy of points moved by (dx, dy).
 function ui.translated(points, dx, dy)
-  local result = {}
-  for i = 1, #points, 2 do
-    result[i], result[i + 1] = points[i] + dx, points[i + 1] + dy
-  end
-  return result
+  return ui.move(ui.copy(points), dx, dy)
+end
+
+--- Whether (x, y) is within radius of (cx, cy): a press on a round handle.
+function ui.within(x, y, cx, cy, radius)
+  local dx, dy = x - cx, y - cy
+  return dx * dx + dy * dy <= radius * radius
 end
 
 --- Fills any polygon, concave or self-intersecting, with the even-odd rule.
@@ -176,36 +186,49 @@ local function segmentDistance(px, py, x1, y1, x2, y2)
   return math.sqrt(dx * dx + dy * dy)
 end
 
+-- Distance from (px, py) to vertex i of points.
+local function vertexDistance(px, py, points, i)
+  local dx, dy = points[i] - px, points[i + 1] - py
+  return math.sqrt(dx * dx + dy * dy)
+end
+
+-- Distance from (px, py) to the edge that starts at vertex i of points.
+local function edgeDistance(px, py, points, i)
+  local j = i + 2 > #points and 1 or i + 2
+  return segmentDistance(px, py, points[i], points[i + 1], points[j], points[j + 1])
+end
+
+-- The grab { kind = kind, index = i } of the vertex or edge i nearest to (x, y) by distance(x, y,
+-- points, i), if one is within radius; else nil.
+local function nearest(points, x, y, kind, radius, distance)
+  local best, bestDistance = nil, radius
+  for i = 1, #points, 2 do
+    local d = distance(x, y, points, i)
+    if d <= bestDistance then
+      best, bestDistance = { kind = kind, index = i }, d
+    end
+  end
+  return best
+end
+
 --- What the mouse at (x, y) grabs of points: { kind = "vertex" | "edge" | "body", index = i }
 -- (index of the vertex's x, or of the edge's first vertex), or nil. Vertices win over edges,
 -- edges over the body; the body test is polygon.lua's own polygonContains.
 function ui.pick(polygon, points, x, y)
-  local best, bestDistance = nil, ui.GRAB_RADIUS
-  for i = 1, #points, 2 do
-    local dx, dy = points[i] - x, points[i + 1] - y
-    local distance = math.sqrt(dx * dx + dy * dy)
-    if distance <= bestDistance then
-      best, bestDistance = { kind = "vertex", index = i }, distance
-    end
-  end
-  if best then
-    return best
-  end
-  bestDistance = ui.GRAB_RADIUS * 0.7
-  for i = 1, #points, 2 do
-    local j = i + 2 > #points and 1 or i + 2
-    local distance = segmentDistance(x, y, points[i], points[i + 1], points[j], points[j + 1])
-    if distance <= bestDistance then
-      best, bestDistance = { kind = "edge", index = i }, distance
-    end
-  end
-  if best then
-    return best
+  local grab = nearest(points, x, y, "vertex", ui.GRAB_RADIUS, vertexDistance)
+    or nearest(points, x, y, "edge", ui.GRAB_RADIUS * 0.7, edgeDistance)
+  if grab then
+    return grab
   end
   if polygon.polygonContains(points, x, y) then
     return { kind = "body" }
   end
   return nil
+end
+
+--- The vertex the mouse at (x, y) grabs of points, as ui.pick gives it, or nil.
+function ui.pickVertex(points, x, y)
+  return nearest(points, x, y, "vertex", ui.GRAB_RADIUS, vertexDistance)
 end
 
 --- Moves the grabbed part of points (in place) by (dx, dy).
@@ -228,9 +251,7 @@ function ui.drag(points, grab, dx, dy)
     points[i], points[i + 1] = points[i] + dx, points[i + 1] + dy
     points[j], points[j + 1] = points[j] + dx, points[j + 1] + dy
   else
-    for i = 1, #points, 2 do
-      points[i], points[i + 1] = points[i] + dx, points[i + 1] + dy
-    end
+    ui.move(points, dx, dy)
   end
 end
 

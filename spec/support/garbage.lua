@@ -1,6 +1,6 @@
---- Heap growth of a loop, for the zero-garbage specs: the method of no_garbage_spec.lua, made
--- robust to LuaJIT's trace compiler. The collector must be stopped around the call
--- (before_each/after_each in the spec).
+--- Heap growth of a loop, for the zero-garbage specs: the heap counted around a stopped
+-- collector, made robust to LuaJIT's trace compiler. garbage.growth stops the collector itself
+-- and restarts it before returning, so the specs need no before_each/after_each for it.
 local garbage = {}
 
 -- LuaJIT's compiled traces live on the heap, so they must be built before measuring. A loop over
@@ -12,8 +12,10 @@ local WARMUPS = 2
 local RUNS = 4
 
 --- The smallest heap growth in KB over one run of `rounds` calls of body(i), over RUNS runs
--- after WARMUPS runs.
+-- after WARMUPS runs, with the collector stopped (a full collection first, a restart after).
 function garbage.growth(body, rounds)
+  collectgarbage("collect")
+  collectgarbage("stop")
   for _ = 1, WARMUPS do
     for i = 1, rounds do body(i) end
   end
@@ -23,6 +25,7 @@ function garbage.growth(body, rounds)
     for i = 1, rounds do body(i) end
     least = math.min(least, collectgarbage("count") - before)
   end
+  collectgarbage("restart")
   return least
 end
 

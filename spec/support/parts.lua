@@ -1,43 +1,16 @@
 --- Helpers for specs on compound shapes (lists of convex parts). Shares no code with polygon.lua.
 local oracle = require "oracle"
+local shapes = require "shapes"
 
 local parts = {}
 
---- A new list with every part moved by (dx, dy) (each coordinate rounded as a game would).
-function parts.translate(list, dx, dy)
-  local out = {}
-  for k, p in ipairs(list) do
-    local q = {}
-    for i = 1, #p, 2 do
-      q[i], q[i + 1] = p[i] + dx, p[i + 1] + dy
-    end
-    out[k] = q
-  end
-  return out
-end
+--- A new list with every part moved by (dx, dy) (each coordinate rounded as a game would), and
+-- a new list with every part in the other winding: the shape helpers under the names the compound
+-- specs use.
+parts.translate = shapes.translateEach
+parts.reverse = shapes.reverseEach
 
---- A new list with every part in the other winding.
-function parts.reverse(list)
-  local out = {}
-  for k, p in ipairs(list) do
-    local q, n = {}, #p
-    for i = 1, n, 2 do
-      q[n - i], q[n - i + 1] = p[i], p[i + 1]
-    end
-    out[k] = q
-  end
-  return out
-end
-
--- xmin, ymin, xmax, ymax of a flat array
-local function box(p)
-  local xmin, ymin, xmax, ymax = math.huge, math.huge, -math.huge, -math.huge
-  for i = 1, #p, 2 do
-    xmin, xmax = math.min(xmin, p[i]), math.max(xmax, p[i])
-    ymin, ymax = math.min(ymin, p[i + 1]), math.max(ymax, p[i + 1])
-  end
-  return xmin, ymin, xmax, ymax
-end
+local box = shapes.bounds
 
 --- Whether some part of one list overlaps some part of the other, by the exact oracle (parts
 -- whose boxes do not overlap cannot: the comparisons of coordinates are exact).
@@ -58,16 +31,15 @@ end
 -- documents is about 80 eps E + 5 eps S (E the width plus height of the box around both shapes,
 -- S the largest coordinate magnitude); this is three times that.
 function parts.slack(list1, list2)
-  local xmin, ymin, xmax, ymax, size = math.huge, math.huge, -math.huge, -math.huge, 0
+  local xmin, ymin, xmax, ymax = math.huge, math.huge, -math.huge, -math.huge
   for _, list in ipairs({ list1, list2 }) do
     for _, p in ipairs(list) do
-      for i = 1, #p, 2 do
-        xmin, xmax = math.min(xmin, p[i]), math.max(xmax, p[i])
-        ymin, ymax = math.min(ymin, p[i + 1]), math.max(ymax, p[i + 1])
-        size = math.max(size, math.abs(p[i]), math.abs(p[i + 1]))
-      end
+      local x0, y0, x1, y1 = box(p)
+      xmin, ymin, xmax, ymax = math.min(xmin, x0), math.min(ymin, y0), math.max(xmax, x1), math.max(ymax, y1)
     end
   end
+  -- the largest coordinate magnitude is at a side of the box
+  local size = math.max(-xmin, xmax, -ymin, ymax)
   local eps = 2 ^ -53
   return 3 * (80 * eps * ((xmax - xmin) + (ymax - ymin)) + 5 * eps * size)
 end

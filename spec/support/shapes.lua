@@ -20,6 +20,83 @@ function shapes.reverse(points)
   return out
 end
 
+--- The bounding box of a flat array: xmin, ymin, xmax, ymax (math.huge, math.huge, -math.huge,
+-- -math.huge when it has no vertex).
+function shapes.bounds(points)
+  local xmin, ymin, xmax, ymax = math.huge, math.huge, -math.huge, -math.huge
+  for i = 1, #points - 1, 2 do
+    xmin, xmax = math.min(xmin, points[i]), math.max(xmax, points[i])
+    ymin, ymax = math.min(ymin, points[i + 1]), math.max(ymax, points[i + 1])
+  end
+  return xmin, ymin, xmax, ymax
+end
+
+--- A new array with every coordinate multiplied by k (exact for k a power of two, barring
+-- overflow and underflow).
+function shapes.scale(points, k)
+  local out = {}
+  for i = 1, #points do
+    out[i] = points[i] * k
+  end
+  return out
+end
+
+--- The largest coordinate magnitude of any of the given flat arrays (0 for none).
+function shapes.largestMagnitude(...)
+  local largest = 0
+  for k = 1, select("#", ...) do
+    local points = select(k, ...)
+    for i = 1, #points do
+      largest = math.max(largest, math.abs(points[i]))
+    end
+  end
+  return largest
+end
+
+-- math.tointeger exists from Lua 5.3 on (rawget: luacheck's std is the common one).
+local toInteger = rawget(math, "tointeger")
+
+--- x as a Lua integer on a Lua with an integer subtype (5.3, 5.4), else x itself; an error when
+-- x has no integer value.
+function shapes.integer(x)
+  if not toInteger then return x end
+  local i = toInteger(x)
+  assert(i, "not an integer: " .. tostring(x))
+  return i
+end
+
+--- A new array of shapes.integer of every value.
+function shapes.integers(list)
+  local out = {}
+  for i, v in ipairs(list) do out[i] = shapes.integer(v) end
+  return out
+end
+
+--- A new array of every value as a float (v + 0.0).
+function shapes.floats(list)
+  local out = {}
+  for i, v in ipairs(list) do out[i] = v + 0.0 end
+  return out
+end
+
+--- A new list of polygons, each moved by (dx, dy): a compound shape, or a benchmark's inputs.
+function shapes.translateEach(list, dx, dy)
+  local out = {}
+  for k, points in ipairs(list) do
+    out[k] = shapes.translate(points, dx, dy)
+  end
+  return out
+end
+
+--- A new list of polygons, each in the other winding.
+function shapes.reverseEach(list)
+  local out = {}
+  for k, points in ipairs(list) do
+    out[k] = shapes.reverse(points)
+  end
+  return out
+end
+
 --- A random convex polygon of m vertices around (cx, cy), clockwise on screen, drawn from rng
 -- (spec/support/prng.lua): vertex i at angle (i - 1 + u_i) * 2 pi / m, u_i in -jitter .. jitter
 -- (below 0.5 the angles keep increasing, so it stays convex), on an ellipse whose radii are size

@@ -78,8 +78,7 @@ return function(polygon, ui)
   end
 
   function scene.pressed(x, y)
-    local dx, dy = x - scene.cx, y - scene.cy
-    if dx * dx + dy * dy <= scene.r * scene.r then
+    if ui.within(x, y, scene.cx, scene.cy, scene.r) then
       scene.grab = "circle"
       scene.last = nil
       return

@@ -84,8 +84,7 @@ return function(polygon, ui)
   end
 
   function scene.pressed(x, y)
-    local ddx, ddy = x - scene.ball[1], y - scene.ball[2]
-    if ddx * ddx + ddy * ddy <= scene.ball[3] ^ 2 then
+    if ui.within(x, y, scene.ball[1], scene.ball[2], scene.ball[3]) then
       scene.grab, scene.what = { kind = "body" }, "ball"
     elseif polygon.polygonContains(scene.crate, x, y) then
       scene.grab, scene.what = { kind = "body" }, "crate"
@@ -110,9 +109,7 @@ return function(polygon, ui)
     if what == "ball" then
       scene.ball[1], scene.ball[2] = scene.ball[1] + dx, scene.ball[2] + dy
     else
-      for i = 1, #scene.crate, 2 do
-        scene.crate[i], scene.crate[i + 1] = scene.crate[i] + dx, scene.crate[i + 1] + dy
-      end
+      ui.move(scene.crate, dx, dy)
     end
     scene.last = { what = what, overlap = overlap, dx = dx, dy = dy, after = push(what) }
   end

@@ -111,14 +111,10 @@ return function(polygon, ui)
   end
 
   function scene.pressed(x, y)
-    local dx, dy = x - scene.px, y - scene.py
-    if dx * dx + dy * dy <= (ui.GRAB_RADIUS + 2) ^ 2 then
+    if ui.within(x, y, scene.px, scene.py, ui.GRAB_RADIUS + 2) then
       scene.grab = "point"
-      return
-    end
-    local grab = ui.pick(polygon, scene.points, x, y)
-    if grab and grab.kind == "vertex" then
-      scene.grab = grab
+    else
+      scene.grab = ui.pickVertex(scene.points, x, y)
     end
   end
 

@@ -73,10 +73,7 @@ return function(polygon, ui)
   end
 
   function scene.pressed(x, y)
-    local grab = ui.pick(polygon, scene.points, x, y)
-    if grab and grab.kind == "vertex" then
-      scene.grab = grab
-    end
+    scene.grab = ui.pickVertex(scene.points, x, y)
   end
 
   function scene.moved(_, _, dx, dy)

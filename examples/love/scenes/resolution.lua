@@ -122,9 +122,7 @@ return function(polygon, ui)
       return
     end
     local dropped = ui.copy(moving)
-    for i = 1, #moving, 2 do
-      moving[i], moving[i + 1] = moving[i] + dx, moving[i + 1] + dy
-    end
+    ui.move(moving, dx, dy)
     local after, afterDx, afterDy = polygon.polygonsCollideV(static, moving)
     scene.last = {
       moving = scene.moving, dropped = dropped, overlap = overlap, dx = dx, dy = dy,
