@@ -1398,19 +1398,21 @@ end
 -- (e premultiplied by that sign, which is exact) and bound is cross's error bound, its filter
 -- inlined (a call per vertex is most of the loop's time on PUC Lua). No vertex is inside when
 -- it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better of
--- the two kept. Only indices and the push cross the call: on LuaJIT the side traces that leave
--- this loop inherit few values from their parent (with the line's six coordinates passed in, they
--- needed more registers than there are: "NYI: register coalescing too complex", retried on
--- every push); and the loop is branch-free there.
+-- the two kept. On LuaJIT the loop is branch-free and takes the line from pushLine in every
+-- step: LuaJIT hoists those loads and products out of its compiled loop, and a side trace that
+-- leaves the loop midway (a trace that ran on into it before it was compiled had unrolled it)
+-- inherits only the push from its parent. With the line's eight numbers held across the loop
+-- such side traces needed more registers than there are ("NYI: register coalescing too complex",
+-- retried on every push, `luajit bench/isolated.lua polygonsCollideV`).
 local lineShortfall
-if rawget(_G, "jit") then
+if JIT then
   lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
-    local ex, ey, qx, qy, qbx, qby, dx, dy =
-      pushLine(lines, ia, ib, base, second, lineMoves, ux * push + 0.0, uy * push + 0.0)
-    ex, ey = ex * inside, ey * inside
+    local dx, dy = ux * push + 0.0, uy * push + 0.0
     local worst = 0.0
     for i = 1, n - 1, 2 do
-      local px, py = points[i] + dx, points[i + 1] + dy
+      local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
+      ex, ey = ex * inside, ey * inside
+      local px, py = points[i] + vx, points[i + 1] + vy
       local l, r = ex * (py - qy), ey * (px - qx)
       local lb, rb = ex * (py - qby), ey * (px - qbx)
       worst = max(worst, min(l - r + CROSS_BOUND * (abs(l) + abs(r)),

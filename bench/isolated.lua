@@ -3,6 +3,10 @@
 -- from the repository root: `luajit bench/isolated.lua polygonsCollideV` (or
 -- polygonCircleCollideV; any Lua). Prints ns per call of each side for 7 alternating rounds and
 -- the median ratio. Compare with bench/run.lua's row to see what a crowded process costs.
+-- On LuaJIT it also counts the traces compiled for polygon.lua's side (polygon.lua's side runs
+-- first, alone, until its traces settle) and the aborted ones by reason: a healthy function
+-- compiles a few dozen traces and aborts few, none with "NYI". Which traces form depends on the
+-- order in which exits grow hot, which differs from run to run: run it several times.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local W = require "bench.workloads"
 local polygon = require "polygon"
@@ -22,6 +26,28 @@ local function run(f, reps)
     end
   end
   return (os.clock() - t) / (reps * n) * 1e9, hits
+end
+
+-- LuaJIT's trace events while polygon.lua's side warms up alone
+local jit = rawget(_G, "jit")
+local traces, aborts, reasons, fallbacks = 0, 0, {}, 0
+if jit then
+  local util, vmdef = require "jit.util", require "jit.vmdef"
+  jit.attach(function(what, tr, _, _, code, info)
+    if what == "stop" then
+      traces = traces + 1
+      if util.traceinfo(tr).linktype == "interpreter" then fallbacks = fallbacks + 1 end
+    elseif what == "abort" then
+      aborts = aborts + 1
+      local reason = (vmdef.traceerr[code] or "?"):format(info)
+      reasons[reason] = (reasons[reason] or 0) + 1
+    end
+  end, "trace")
+  for _ = 1, 5 do run(polygon[fname], 200) end
+  jit.attach(function() end)
+  print(("%s on LuaJIT, alone: %d traces (%d falling back to the interpreter), %d aborts"):format(
+    fname, traces, fallbacks, aborts))
+  for reason, count in pairs(reasons) do print(("  %4d aborted: %s"):format(count, reason)) end
 end
 
 local ratios = {}
