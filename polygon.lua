@@ -188,6 +188,21 @@ local function crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
   local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
   local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
   local byh, byl = twoDiff(vy1 * s, vy0 * s)
+  if axl == 0 and ayl == 0 and bxl == 0 and byl == 0 then
+    -- The differences were exact (the common case: nearby coordinates): the determinant is
+    -- ph + pl - qh - ql, two exact products, whose difference Shewchuk's Two-Two-Diff writes as
+    -- four nonoverlapping parts x3 > x2 > x1 > x0 in magnitude, zeros allowed, without a loop
+    -- (the expansion's loops, unrolled into LuaJIT traces, left exits it could not compile).
+    -- Its sign is that of its largest nonzero part.
+    local ph, pl = twoProduct(axh, byh)
+    local qh, ql = twoProduct(ayh, bxh)
+    local i, x0 = twoDiff(pl, ql)
+    local j, k = twoDiff(ph, -i)
+    local g, x1 = twoDiff(k, qh)
+    local x3, x2 = twoDiff(j, -g)
+    if x3 ~= 0 then return x3 elseif x2 ~= 0 then return x2 elseif x1 ~= 0 then return x1 end
+    return x0
+  end
   expLen = 0
   expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
   expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh); expAddProduct(-ayl, bxl)
@@ -196,25 +211,39 @@ end
 
 -- A number with the sign of (u1 - u0) x (v1 - v0), exact for the given doubles: positive when
 -- v turns clockwise from u on screen. orient(a, b, c) is cross(a, b, a, c).
-local function cross(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-  local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
-  local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
-  local det = l - r
-  local sum
-  -- When l and r differ in sign (or one is zero) no cancellation can happen and det's sign is
-  -- right; otherwise the filter compares det with the rounding error Shewchuk bounds.
-  if l > 0 then
-    if r <= 0 then return det end
-    sum = l + r
-  elseif l < 0 then
-    if r >= 0 then return det end
-    sum = -l - r
-  else
-    return det
+-- The filter: det = l - r is certain when |det| >= CROSS_BOUND (|l| + |r|) (Shewchuk's bound;
+-- when l and r differ in sign or one is zero no cancellation happens and that always holds).
+-- Two bodies computing the same test: on PUC Lua the signs of l and r are compared first (abs
+-- is a call there); on LuaJIT abs is one instruction and the single branch leaves loops that
+-- call cross with one side exit instead of five.
+local cross
+if JIT then
+  cross = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+    local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
+    local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
+    local det = l - r
+    if abs(det) >= CROSS_BOUND * (abs(l) + abs(r)) then return det end
+    return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
   end
-  local bound = CROSS_BOUND * sum
-  if det >= bound or -det >= bound then return det end
-  return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+else
+  cross = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+    local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
+    local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
+    local det = l - r
+    local sum
+    if l > 0 then
+      if r <= 0 then return det end
+      sum = l + r
+    elseif l < 0 then
+      if r >= 0 then return det end
+      sum = -l - r
+    else
+      return det
+    end
+    local bound = CROSS_BOUND * sum
+    if det >= bound or -det >= bound then return det end
+    return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+  end
 end
 
 -- Twice the signed area of points[1..n] (n = #points >= 6), with what its error bound needs.
@@ -246,21 +275,23 @@ end
 -- functions, so there the comparisons are faster. The two bodies compute the same numbers.
 local shoelaceBounds
 if JIT then
+  -- The first vertex and the previous one are read from points in every step (LuaJIT hoists the
+  -- first and forwards the previous): only the seven sums cross from one step to the next, so a
+  -- side trace that leaves the loop midway inherits few values (see lineShortfall).
   shoelaceBounds = function(points, n)
-    local x0, y1 = points[1] + 0.0, points[2] + 0.0
-    local px, py = 0.0, y1
     local sum, sx, sd = 0.0, 0.0, 0.0
-    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+    local xmin, xmax, ymin, ymax = points[1] + 0.0, points[1] + 0.0, points[2] + 0.0, points[2] + 0.0
     for i = 3, n - 1, 2 do
+      local x0 = points[1] + 0.0
       local vx, y = points[i] + 0.0, points[i + 1] + 0.0
+      local px, py = points[i - 2] - x0, points[i - 1] + 0.0
       local x, d = vx - x0, y - py
       sum = sum + (px + x) * d
       sx, sd = sx + x * x, sd + d * d
       xmin, xmax, ymin, ymax = min(xmin, vx), max(xmax, vx), min(ymin, y), max(ymax, y)
-      px, py = x, y
     end
-    local d = y1 - py
-    return sum + px * d, sx, sd + d * d, xmin, xmax, ymin, ymax
+    local d = (points[2] + 0.0) - points[n]
+    return sum + (points[n - 1] - points[1]) * d, sx, sd + d * d, xmin, xmax, ymin, ymax
   end
 else
   shoelaceBounds = function(points, n)
@@ -1154,10 +1185,14 @@ local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n)
   local found = 0.0
   for i = 1, n - 1, 2 do
     local px, py = points[i] + 0.0, points[i + 1] + 0.0
-    local l, r = ex * (py - cy), ey * (px - cx)
-    if l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r)) > 0 then   -- maybe
-      local side = cross(ax, ay, bx, by, cx, cy, px, py) * inside
-      if side > found then found = side end
+    if JIT then   -- every vertex through cross, whose one branch is its filter's
+      found = max(found, cross(ax, ay, bx, by, cx, cy, px, py) * inside)
+    else          -- only the vertices the filter cannot place (a call costs PUC Lua)
+      local l, r = ex * (py - cy), ey * (px - cx)
+      if l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r)) > 0 then
+        local side = cross(ax, ay, bx, by, cx, cy, px, py) * inside
+        if side > found then found = side end
+      end
     end
   end
   return found > 0
@@ -1296,11 +1331,15 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 --     index base, with `inside` the cross product's sign on the side the other must leave.
 local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if n1 < 6 or n2 < 6 then return false end
+  -- Each polygon's sums, then at once its turn, the sign of its area decided exactly, so that
+  -- only the sign and the box are kept while the other's sums are taken (on LuaJIT fewer values
+  -- for a side trace to inherit). A NaN or infinity makes the sums non-finite; so does overflow,
+  -- which is not an error.
   local area1, sx1, sd1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
-  local area2, sx2, sd2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
-  -- a NaN or infinity makes these sums non-finite; so does overflow, which is not an error
   -- luacheck: ignore 581 (NaN must count as non-finite)
   if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
+  local area2, sx2, sd2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
   -- luacheck: ignore 581 (NaN must count as non-finite)
   if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
   -- Between the loops, the same numbers in two forms, as in shoelaceBounds: on LuaJIT min,
@@ -1317,8 +1356,7 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     end
     if gap <= 0 then return false end   -- (the one-sided test may still see overlap)
   end
-  -- zero area never collides: the turn is the sign of the area, decided exactly
-  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
+  -- zero area never collides
   if turn1 == 0 then return false end
   local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
   if turn2 == 0 then return false end
