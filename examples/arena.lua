@@ -102,6 +102,12 @@ end
 -- shape about its centroid at angle 0) or a circle; invMass is 0 for the static walls.
 --------------------------------------------------------------------------------------------------
 
+-- Sets a circle body's box from its centre and radius.
+local function circleBox(body)
+  body.minx, body.miny, body.maxx, body.maxy = body.x - body.r, body.y - body.r, body.x + body.r,
+    body.y + body.r
+end
+
 -- Moves a body by (dx, dy): its position, its box and, for a polygon, its world points in place.
 -- The polygon's box moves with it exactly: rounding keeps order, so min(x_i) + dx rounds to
 -- min(x_i + dx) rounded.
@@ -112,8 +118,7 @@ local function move(body, dx, dy)
     body.minx, body.miny, body.maxx, body.maxy = body.minx + dx, body.miny + dy, body.maxx + dx,
       body.maxy + dy
   else
-    body.minx, body.miny, body.maxx, body.maxy = body.x - body.r, body.y - body.r, body.x + body.r,
-      body.y + body.r
+    circleBox(body)
   end
 end
 
@@ -173,8 +178,7 @@ local function place(body)
     end
     body.minx, body.miny, body.maxx, body.maxy = polygon.polygonBounds(body.points)
   else
-    body.minx, body.miny, body.maxx, body.maxy = body.x - body.r, body.y - body.r, body.x + body.r,
-      body.y + body.r
+    circleBox(body)
   end
 end
 

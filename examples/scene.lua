@@ -58,9 +58,7 @@ end
 
 local function move(shape, dx, dy)
   if shape.points then
-    for k = 1, #shape.points, 2 do
-      shape.points[k], shape.points[k + 1] = shape.points[k] + dx, shape.points[k + 1] + dy
-    end
+    polygon.polygonTranslate(shape.points, dx, dy, shape.points) -- in place: out is points
   else
     shape.x, shape.y = shape.x + dx, shape.y + dy
   end
