@@ -666,10 +666,14 @@ else
     local firstTurn = s
     local e = l + r   -- the first turn's error bound is CROSS_BOUND |e|
     local firstBound = e * e
-    -- the x direction (+-1) of the last edge before vertex 1 that has one
+    -- dir has the sign of the x direction of the last edge before vertex 1 that has one; only
+    -- the signs of products fx * dir are read, which in the exact range are at least 2^-998
+    -- (a NaN dir leaves a NaN coordinate that the loop's turns carry to the careful walk)
     local dir = ex
-    if dir == 0 then dir = (points[n - 3] + 0.0) - points[n - 5] end
-    if dir > 0 then dir = 1.0 elseif dir < 0 then dir = -1.0 else s = 0 end
+    if dir == 0 then
+      dir = (points[n - 3] + 0.0) - points[n - 5]
+      if dir == 0 then s = 0 end
+    end
     local lo, errSq, flips, start = huge, 0.0, 0, 1
     if n % 4 == 2 then   -- an odd number of vertices: keep the first turn, go on from vertex 1
       lo = s
@@ -722,8 +726,7 @@ else
       else
         -- both turns certain (compared squared: underflow or overflow only fails the test)
         e = l + r
-        local boundSq = CROSS_BOUND * CROSS_BOUND
-        if s * s > boundSq * (e * e) and firstTurn * firstTurn > boundSq * firstBound then
+        if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
           return "concave"
         end
       end
