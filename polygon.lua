@@ -403,9 +403,12 @@ local TURN_BOUND_SQ = 2 * CROSS_BOUND * CROSS_BOUND
 -- coordinate raises an error (it makes the sum NaN or infinite, which takes the exact path).
 function polygon.polygonWindingOrder(points)
   -- The checks written out where they pass, and shoelace's loop copied here, unrolled by two
-  -- (no multiple assignment): each Lua call costs about 13 ns on Lua 5.4, and this came to 1.6
-  -- times the baseline with them (bench/run.lua --only 'polygonWindingOrder ord'), 1.3 now.
-  -- A change to shoelace or to areaUncertain's bound must be made here too.
+  -- (no multiple assignment): each Lua call costs about 13 ns on Lua 5.4. Calling shoelace
+  -- instead took this from 1.2 to 1.4 times the tutorial's time on Lua 5.4, and an unrolled
+  -- shoelace to 1.3 (21 interleaved rounds on bench/workloads.lua's ordinary polygons; the
+  -- target is 1.3 in lua5.4 bench/run.lua --only 'polygonWindingOrder ord'). polygonArea's
+  -- loop is this one without the squares. A change to shoelace or to areaUncertain's bound
+  -- must be made here too.
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
   local n = #points
   if n < 6 then return nil end
@@ -452,7 +455,9 @@ function polygon.polygonArea(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonArea") end
   local n = #points
   if n < 6 then return nil end
-  -- shoelace's sum alone, unrolled as in polygonWindingOrder
+  -- shoelace's sum alone, unrolled as in polygonWindingOrder: the loop that sums the squares
+  -- too took this from 0.92 to 1.19 times the tutorial's time on Lua 5.4 and from 0.81 to
+  -- 0.97 on LuaJIT (targets 1.1 and 1.0), measured as in polygonWindingOrder
   local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py, sum = 0.0, y1, 0.0
   local start = 3
@@ -642,8 +647,10 @@ if rawget(_G, "jit") then
 else
   -- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
   -- function with a branchy loop, one comparison per vertex in the common case, unrolled by
-  -- two so that no multiple assignment moves the vertex and edge along. The first turn's sign
-  -- picks ySign, which flips y so that every turn of a convex polygon is positive. The filter
+  -- two so that no multiple assignment moves the vertex and edge along. The turns at the last
+  -- vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y so that
+  -- every turn of a convex polygon is positive, and a second turn against it ends the call
+  -- early (most concave polygons turn both ways within their first few vertices). The filter
   -- bounds every |l + r| by the square root of the sum of their squares and compares squares
   -- (NaN or overflow only make it fail; squares that underflow come with an lo that does too).
   polygonType = function(points)
@@ -655,13 +662,11 @@ else
     local qx, qy = points[1] + 0.0, points[2] + 0.0
     local fx, fy = qx - cx, qy - cy
     local l, r = ex * fy, ey * fx
-    local s = l - r
+    local s = l - r   -- the turn at the last vertex, from edge e to edge f
     local ySign = 1.0
     if s < 0 then   -- (one statement each: a multiple assignment costs a move per value)
       ySign = -1.0
       s = -s
-      cy = -cy
-      ey = -ey
       qy = -qy
       fy = -fy
     end
@@ -670,62 +675,75 @@ else
     local firstBound = e * e
     -- dir has the sign of the x direction of the last edge before vertex 1 that has one; only
     -- the signs of products fx * dir are read, which in the exact range are at least 2^-998
-    -- (a NaN dir leaves a NaN coordinate that the loop's turns carry to the careful walk)
+    -- (a NaN dir leaves a NaN coordinate that the turns carry to the careful walk)
     local dir = ex
     if dir == 0 then
       dir = (points[n - 3] + 0.0) - points[n - 5]
       if dir == 0 then s = 0 end
     end
-    local lo, errSq, flips, start = huge, 0.0, 0, 1
-    if n % 4 == 2 then   -- an odd number of vertices: keep the first turn, go on from vertex 1
-      lo = s
-      errSq = firstBound
-      start = 3
-      if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
-      cx = qx
-      cy = qy
-      ex = fx
-      ey = fy
-    end
-    -- A turn s <= 0 leaves the loop (so does a first turn of 0 or NaN, or no x direction), as
-    -- does any turn against the first one: concave when both are certain.
+    -- A turn s <= 0 (or NaN) ends the walk: concave when it and the first turn are certain,
+    -- as is a first turn of 0 or NaN or no x direction.
     if s > 0 then
-      for i = start, n - 3, 4 do
-        qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
-        qy = points[i + 1] * ySign
-        fx = qx - cx
-        fy = qy - cy
-        l = ex * fy
-        r = ey * fx
-        s = l - r
-        if s < lo then
-          if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
-          lo = s
-        end
-        e = l + r
-        errSq = errSq + e * e
-        if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
-        cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
-        cy = points[i + 3] * ySign
-        ex = cx - qx
-        ey = cy - qy
-        l = fx * ey
-        r = fy * ex
-        s = l - r
-        if s < lo then
-          if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
-          lo = s
-        end
-        e = l + r
-        errSq = errSq + e * e
-        if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
-      end
+      cx = points[3] + 0.0   -- the turn at vertex 1, from edge f to edge e
+      cy = points[4] * ySign
+      ex = cx - qx
+      ey = cy - qy
+      l = fx * ey
+      r = fy * ex
+      s = l - r
       if s > 0 then
-        if lo * lo > TURN_BOUND_SQ * errSq then
+        local flips = 0
+        if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
+        local lo = firstTurn
+        if s < lo then lo = s end
+        e = l + r
+        local errSq = firstBound + e * e
+        local start = 5
+        if n % 4 == 0 then   -- an even number of vertices: on from vertex 2
+          if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
+        else   -- odd: on from vertex 1 again (its turn counted twice changes nothing)
+          cx = qx
+          cy = qy
+          ex = fx
+          ey = fy
+          start = 3
+        end
+        for i = start, n - 3, 4 do
+          qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
+          qy = points[i + 1] * ySign
+          fx = qx - cx
+          fy = qy - cy
+          l = ex * fy
+          r = ey * fx
+          s = l - r
+          if s < lo then
+            if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
+            lo = s
+          end
+          e = l + r
+          errSq = errSq + e * e
+          if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
+          cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
+          cy = points[i + 3] * ySign
+          ex = cx - qx
+          ey = cy - qy
+          l = fx * ey
+          r = fy * ex
+          s = l - r
+          if s < lo then
+            if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
+            lo = s
+          end
+          e = l + r
+          errSq = errSq + e * e
+          if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
+        end
+        if s > 0 and lo * lo > TURN_BOUND_SQ * errSq then
           if flips == 2 then return "convex" end
           return "concave"
         end
-      else
+      end
+      if not (s > 0) then   -- luacheck: ignore 581
         -- both turns certain (compared squared: underflow or overflow only fails the test)
         e = l + r
         if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
