@@ -447,6 +447,15 @@ function polygon.polygonWindingOrder(points)
   return nil
 end
 
+-- Twice the signed area, summed exactly and rounded once: the rare path of polygonArea (terms
+-- that overflowed) and of polygonAreaAccurate (a sum its bound cannot vouch for). Raises fname's
+-- error, at its caller's caller, for a NaN or infinite coordinate.
+local function twiceAreaExact(points, n, fname)
+  checkFinitePoints(points, n, fname, "points", 4)
+  local s = shoelaceExact(points, n)
+  return expCompress() / s / s
+end
+
 --- The area (non-negative) by the shoelace formula, relative to the first vertex.
 -- @return area; nil for fewer than 3 points. Off by a few ulps for ordinary polygons at any
 -- offset; a self-intersecting polygon's lobes count with their winding's sign. An area that
@@ -477,28 +486,22 @@ function polygon.polygonArea(points)
   if sum - sum ~= 0 then
     -- NaN or infinite: a non-finite coordinate (an error), or terms that overflowed, whose
     -- exact sum (scaled) may still be finite
-    checkFinitePoints(points, n, "polygonArea", "points", 3)
-    local s = shoelaceExact(points, n)
-    sum = expCompress() / s / s
+    sum = twiceAreaExact(points, n, "polygonArea")
   end
   return (sum < 0 and -sum or sum) * 0.5
 end
 
--- Dot2's bound on its rounding beyond the final one, per unit of T and of m^2 (m vertices):
--- the m TwoSum errors are each below eps |partial sum| <= eps T, and summing them with the
--- product errors adds at most 3m eps times that; 16 leaves room for the terms' own parts.
-local DOT2_BOUND = 16 * EPS * EPS
-
 --- The exact area of the given doubles, rounded to within one ulp.
 -- A compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
--- x * hi product too (TwoProduct): its error is below eps |2A| plus DOT2_BOUND m^2 T, T the sum
+-- x * hi product too (TwoProduct): its error is below eps |2A| plus dot2Bound m^2 T, T the sum
 -- of |products| (bounded through their squares, which need no branch or abs). When that second
 -- part could reach a quarter ulp of the result the area is summed exactly as an expansion
 -- instead (several times slower). The x are not taken relative to vertex 1 (as shoelace does):
--- far from the origin that makes T larger, but Dot2 absorbs a cancellation of 2^40 and more at
--- 16 vertices, and the x differences' own TwoSums cost a fifth of the time (bench/run.lua
--- --only 'polygonAreaAccurate').
+-- far from the origin that makes T larger, but the test below still passes while T / |2A| is
+-- below about 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the
+-- x differences' TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4
+-- (interleaved rounds on bench/workloads.lua's ordinary polygons).
 -- @return area; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function polygon.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
@@ -514,7 +517,10 @@ function polygon.polygonAreaAccurate(points)
     local dh = yNext - yPrev              -- D = dh + dl exactly (TwoSum)
     local bv = yNext - dh
     local dl = (yNext - (dh + bv)) + (bv - yPrev)
-    local p = x * dh                      -- x dh = p + e exactly (Dekker's TwoProduct)
+    -- x dh = p + e exactly: twoProduct written out, as calling it took this from 3.2 to 4.1
+    -- times polygonArea's time on Lua 5.4 (no change on LuaJIT), in 61 interleaved rounds on
+    -- bench/workloads.lua's ordinary polygons
+    local p = x * dh
     local c = splitter * x
     local ah = c - (c - x)
     local al = x - ah
@@ -533,14 +539,16 @@ function polygon.polygonAreaAccurate(points)
   end
   local twice = sum + err
   local m = n / 2
-  -- T <= sqrt(m magSq) (Cauchy-Schwarz), so the test is DOT2_BOUND m^2 T < eps |twice| / 4,
+  -- Dot2's bound on its rounding beyond the final one, per unit of T and of m^2 (m vertices):
+  -- the m TwoSum errors are each below eps |partial sum| <= eps T, and summing them with the
+  -- product errors adds at most 3m eps times that; 16 leaves room for the terms' own parts.
+  local dot2Bound = 16 * EPS * EPS
+  -- T <= sqrt(m magSq) (Cauchy-Schwarz), so the test is dot2Bound m^2 T < eps |twice| / 4,
   -- squared. NaN and infinity fail it, and so do squares that underflow to 0 (strict <).
   local quarterUlp, m2 = 0.25 * EPS * twice, m * m
-  local boundSq = DOT2_BOUND * DOT2_BOUND * m2 * m2 * m * magSq
+  local boundSq = dot2Bound * dot2Bound * m2 * m2 * m * magSq
   if not (boundSq < quarterUlp * quarterUlp) then   -- luacheck: ignore 581
-    checkFinitePoints(points, n, "polygonAreaAccurate", "points", 3)
-    local s = shoelaceExact(points, n)
-    twice = expCompress() / s / s
+    twice = twiceAreaExact(points, n, "polygonAreaAccurate")
   end
   return (twice < 0 and -twice or twice) * 0.5
 end
