@@ -494,7 +494,7 @@ end
 --- The exact area of the given doubles, rounded to within one ulp.
 -- A compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
--- x * hi product too (TwoProduct): its error is below eps |2A| plus dot2Bound m^2 T, T the sum
+-- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
 -- of |products| (bounded through their squares, which need no branch or abs). When that second
 -- part could reach a quarter ulp of the result the area is summed exactly as an expansion
 -- instead (several times slower). The x are not taken relative to vertex 1 (as shoelace does):
@@ -509,8 +509,9 @@ function polygon.polygonAreaAccurate(points)
   if n < 6 then return nil end
   local splitter = SPLITTER   -- a register, not an upvalue, in the loop
   -- x and y of the vertex whose term is summed next, and the y before it: the last vertex first
-  -- (so that every next y is points[i + 1], with no test for the end)
-  local x, y, yPrev = points[n - 1] + 0.0, points[n] + 0.0, points[n - 2] + 0.0
+  -- (so that every next y is points[i + 1], with no test for the end). x is not converted: a
+  -- Lua 5.3+ integer x meets a float in every operation, which converts it as + 0.0 would
+  local x, y, yPrev = points[n - 1], points[n] + 0.0, points[n - 2] + 0.0
   local sum, err, magSq = 0.0, 0.0, 0.0
   for i = 1, n - 1, 2 do
     local yNext = points[i + 1] + 0.0
@@ -533,20 +534,20 @@ function polygon.polygonAreaAccurate(points)
     err = err + ((sum - (t - bv)) + (p - bv)) + (e + x * dl)
     sum = t
     magSq = magSq + p * p
-    x = points[i] + 0.0
+    x = points[i]
     yPrev = y
     y = yNext
   end
   local twice = sum + err
   local m = n / 2
-  -- Dot2's bound on its rounding beyond the final one, per unit of T and of m^2 (m vertices):
-  -- the m TwoSum errors are each below eps |partial sum| <= eps T, and summing them with the
-  -- product errors adds at most 3m eps times that; 16 leaves room for the terms' own parts.
-  local dot2Bound = 16 * EPS * EPS
-  -- T <= sqrt(m magSq) (Cauchy-Schwarz), so the test is dot2Bound m^2 T < eps |twice| / 4,
-  -- squared. NaN and infinity fail it, and so do squares that underflow to 0 (strict <).
-  local quarterUlp, m2 = 0.25 * EPS * twice, m * m
-  local boundSq = dot2Bound * dot2Bound * m2 * m2 * m * magSq
+  -- Dot2's bound on its rounding beyond the final one is dot2Bound m^2 T, dot2Bound = 16 eps^2
+  -- = 2^-102: the m TwoSum errors are each below eps |partial sum| <= eps T, and summing them
+  -- with the product errors adds at most 3m eps times that; 16 leaves room for the terms' own
+  -- parts. T <= sqrt(m magSq) (Cauchy-Schwarz), so the test is dot2Bound m^2 T < eps |twice| / 4
+  -- (eps / 4 = 2^-55), squared. NaN and infinity fail it, and so do squares that underflow to 0
+  -- (strict <). The powers of two are literals, which the compiler folds.
+  local quarterUlp, m2 = 2^-55 * twice, m * m
+  local boundSq = 2^-204 * m2 * m2 * m * magSq
   if not (boundSq < quarterUlp * quarterUlp) then   -- luacheck: ignore 581
     twice = twiceAreaExact(points, n, "polygonAreaAccurate")
   end
