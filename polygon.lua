@@ -655,11 +655,13 @@ if rawget(_G, "jit") then
   end
 else
   -- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
-  -- function with a branchy loop, one comparison per vertex in the common case, unrolled by
-  -- two so that no multiple assignment moves the vertex and edge along. The turns at the last
-  -- vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y so that
-  -- every turn of a convex polygon is positive, and a second turn against it ends the call
-  -- early (most concave polygons turn both ways within their first few vertices). The filter
+  -- function with a branchy loop, one comparison per vertex in the common case. The turns at
+  -- the last vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y
+  -- so that every turn of a convex polygon is positive, and a second turn against it ends the
+  -- call early (most concave polygons turn both ways within their first few vertices). The loop
+  -- is not unrolled: unrolled by two (no moves of the vertex and edge, but a start that depends
+  -- on the parity of the vertex count) it took 1.06 to 1.08 times as long on Lua 5.4, in 61
+  -- interleaved rounds on bench/workloads.lua's ordinary polygons. The filter
   -- bounds every |l + r| by the square root of the sum of their squares and compares squares
   -- (NaN or overflow only make it fail; squares that underflow come with an lo that does too).
   polygonType = function(points)
@@ -707,17 +709,8 @@ else
         if s < lo then lo = s end
         e = l + r
         local errSq = firstBound + e * e
-        local start = 5
-        if n % 4 == 0 then   -- an even number of vertices: on from vertex 2
-          if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
-        else   -- odd: on from vertex 1 again (its turn counted twice changes nothing)
-          cx = qx
-          cy = qy
-          ex = fx
-          ey = fy
-          start = 3
-        end
-        for i = start, n - 3, 4 do
+        if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
+        for i = 5, n - 1, 2 do
           qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
           qy = points[i + 1] * ySign
           fx = qx - cx
@@ -732,20 +725,10 @@ else
           e = l + r
           errSq = errSq + e * e
           if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
-          cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
-          cy = points[i + 3] * ySign
-          ex = cx - qx
-          ey = cy - qy
-          l = fx * ey
-          r = fy * ex
-          s = l - r
-          if s < lo then
-            if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
-            lo = s
-          end
-          e = l + r
-          errSq = errSq + e * e
-          if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
+          cx = qx
+          cy = qy
+          ex = fx
+          ey = fy
         end
         if s > 0 and lo * lo > TURN_BOUND_SQ * errSq then
           if flips == 2 then return "convex" end
