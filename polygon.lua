@@ -462,9 +462,12 @@ local TURN_BOUND_SQ = 2 * CROSS_BOUND * CROSS_BOUND
 -- coordinate raises an error (it makes the sum NaN or infinite, which takes the exact path).
 function polygon.polygonWindingOrder(points)
   -- The checks written out where they pass, and shoelace's loop copied here, unrolled by two
-  -- (no multiple assignment): each Lua call costs about 13 ns on Lua 5.4, and this came to 1.6
-  -- times the baseline with them (bench/run.lua --only 'polygonWindingOrder ord'), 1.3 now.
-  -- A change to shoelace or to areaUncertain's bound must be made here too.
+  -- (no multiple assignment): each Lua call costs about 13 ns on Lua 5.4. Calling shoelace
+  -- instead took this from 1.2 to 1.4 times the tutorial's time on Lua 5.4, and an unrolled
+  -- shoelace to 1.3 (21 interleaved rounds on bench/workloads.lua's ordinary polygons; the
+  -- target is 1.3 in lua5.4 bench/run.lua --only 'polygonWindingOrder ord'). polygonArea's
+  -- loop is this one without the squares. A change to shoelace or to areaUncertain's bound
+  -- must be made here too.
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
   local n = #points
   if n < 6 then return nil end
@@ -503,6 +506,15 @@ function polygon.polygonWindingOrder(points)
   return nil
 end
 
+-- Twice the signed area, summed exactly and rounded once: the rare path of polygonArea (terms
+-- that overflowed) and of polygonAreaAccurate (a sum its bound cannot vouch for). Raises fname's
+-- error, at its caller's caller, for a NaN or infinite coordinate.
+local function twiceAreaExact(points, n, fname)
+  checkFinitePoints(points, n, fname, "points", 4)
+  local s = shoelaceExact(points, n)
+  return expCompress() / s / s
+end
+
 --- The area (non-negative) by the shoelace formula, relative to the first vertex.
 -- @return area; nil for fewer than 3 points. Off by a few ulps for ordinary polygons at any
 -- offset; a self-intersecting polygon's lobes count with their winding's sign. An area that
@@ -511,7 +523,9 @@ function polygon.polygonArea(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonArea") end
   local n = #points
   if n < 6 then return nil end
-  -- shoelace's sum alone, unrolled as in polygonWindingOrder
+  -- shoelace's sum alone, unrolled as in polygonWindingOrder: the loop that sums the squares
+  -- too took this from 0.92 to 1.19 times the tutorial's time on Lua 5.4 and from 0.81 to
+  -- 0.97 on LuaJIT (targets 1.1 and 1.0), measured as in polygonWindingOrder
   local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py, sum = 0.0, y1, 0.0
   local start = 3
@@ -531,68 +545,70 @@ function polygon.polygonArea(points)
   if sum - sum ~= 0 then
     -- NaN or infinite: a non-finite coordinate (an error), or terms that overflowed, whose
     -- exact sum (scaled) may still be finite
-    checkFinitePoints(points, n, "polygonArea", "points", 3)
-    local s = shoelaceExact(points, n)
-    sum = expCompress() / s / s
+    sum = twiceAreaExact(points, n, "polygonArea")
   end
   return (sum < 0 and -sum or sum) * 0.5
 end
 
--- Dot2's bound on its rounding beyond the final one, per unit of T and of m^2 (m vertices):
--- the m TwoSum errors are each below eps |partial sum| <= eps T, and summing them with the
--- product errors adds at most 3m eps times that; 16 leaves room for the terms' own parts.
-local DOT2_BOUND = 16 * EPS * EPS
-
 --- The exact area of the given doubles, rounded to within one ulp.
 -- A compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
--- X_i (y_{i+1} - y_{i-1}), X = x - x_1, with every difference split into hi + lo exactly
--- (TwoSum) and every hi * hi product too (TwoProduct): its error is below eps |2A| plus
--- DOT2_BOUND m^2 T, T the sum of |products| (bounded through their squares, which need no
--- branch or abs). When that second part could reach a quarter ulp of the result the area is
--- summed exactly as an expansion instead (several times slower).
+-- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
+-- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
+-- of |products| (bounded through their squares, which need no branch or abs). When that second
+-- part could reach a quarter ulp of the result the area is summed exactly as an expansion
+-- instead (several times slower). The x are not taken relative to vertex 1 (as shoelace does):
+-- far from the origin that makes T larger, but the test below still passes while T / |2A| is
+-- below about 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the
+-- x differences' TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4
+-- (interleaved rounds on bench/workloads.lua's ordinary polygons).
 -- @return area; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function polygon.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
   local n = #points
   if n < 6 then return nil end
-  local x1, y1 = points[1] + 0.0, points[2] + 0.0
-  local yPrev, y = y1, points[4] + 0.0
+  local splitter = SPLITTER   -- a register, not an upvalue, in the loop
+  -- x and y of the vertex whose term is summed next, and the y before it: the last vertex first
+  -- (so that every next y is points[i + 1], with no test for the end). x is not converted: a
+  -- Lua 5.3+ integer x meets a float in every operation, which converts it as + 0.0 would
+  local x, y, yPrev = points[n - 1], points[n] + 0.0, points[n - 2] + 0.0
   local sum, err, magSq = 0.0, 0.0, 0.0
-  -- vertex 1 adds nothing (X_1 = 0); the others in order, the last one's next y being y1
-  for i = 3, n - 1, 2 do
-    local yNext = i < n - 1 and points[i + 3] + 0.0 or y1
-    local x = points[i] + 0.0
-    local xh = x - x1                     -- X = xh + xl exactly (TwoSum)
-    local bv = x - xh
-    local xl = (x - (xh + bv)) + (bv - x1)
-    local dh = yNext - yPrev              -- D = dh + dl exactly
-    bv = yNext - dh
+  for i = 1, n - 1, 2 do
+    local yNext = points[i + 1] + 0.0
+    local dh = yNext - yPrev              -- D = dh + dl exactly (TwoSum)
+    local bv = yNext - dh
     local dl = (yNext - (dh + bv)) + (bv - yPrev)
-    local p = xh * dh                     -- xh dh = p + e exactly (Dekker's TwoProduct)
-    local c = SPLITTER * xh
-    local ah = c - (c - xh)
-    local al = xh - ah
-    c = SPLITTER * dh
+    -- x dh = p + e exactly: twoProduct written out, as calling it took this from 3.2 to 4.1
+    -- times polygonArea's time on Lua 5.4 (no change on LuaJIT), in 61 interleaved rounds on
+    -- bench/workloads.lua's ordinary polygons
+    local p = x * dh
+    local c = splitter * x
+    local ah = c - (c - x)
+    local al = x - ah
+    c = splitter * dh
     local bh = c - (c - dh)
     local bl = dh - bh
     local e = al * bl - (((p - ah * bh) - al * bh) - ah * bl)
     local t = sum + p                     -- sum + p = t + (TwoSum error)
     bv = t - sum
-    err = err + ((sum - (t - bv)) + (p - bv)) + (e + (xh * dl + xl * (dh + dl)))
+    err = err + ((sum - (t - bv)) + (p - bv)) + (e + x * dl)
     sum = t
     magSq = magSq + p * p
-    yPrev, y = y, yNext
+    x = points[i]
+    yPrev = y
+    y = yNext
   end
   local twice = sum + err
   local m = n / 2
-  -- T <= sqrt(m magSq) (Cauchy-Schwarz), so the test is DOT2_BOUND m^2 T < eps |twice| / 4,
-  -- squared. NaN and infinity fail it, and so do squares that underflow to 0 (strict <).
-  local quarterUlp, m2 = 0.25 * EPS * twice, m * m
-  local boundSq = DOT2_BOUND * DOT2_BOUND * m2 * m2 * m * magSq
+  -- Dot2's bound on its rounding beyond the final one is dot2Bound m^2 T, dot2Bound = 16 eps^2
+  -- = 2^-102: the m TwoSum errors are each below eps |partial sum| <= eps T, and summing them
+  -- with the product errors adds at most 3m eps times that; 16 leaves room for the terms' own
+  -- parts. T <= sqrt(m magSq) (Cauchy-Schwarz), so the test is dot2Bound m^2 T < eps |twice| / 4
+  -- (eps / 4 = 2^-55), squared. NaN and infinity fail it, and so do squares that underflow to 0
+  -- (strict <). The powers of two are literals, which the compiler folds.
+  local quarterUlp, m2 = 2^-55 * twice, m * m
+  local boundSq = 2^-204 * m2 * m2 * m * magSq
   if not (boundSq < quarterUlp * quarterUlp) then   -- luacheck: ignore 581
-    checkFinitePoints(points, n, "polygonAreaAccurate", "points", 3)
-    local s = shoelaceExact(points, n)
-    twice = expCompress() / s / s
+    twice = twiceAreaExact(points, n, "polygonAreaAccurate")
   end
   return (twice < 0 and -twice or twice) * 0.5
 end
@@ -698,9 +714,13 @@ if rawget(_G, "jit") then
   end
 else
   -- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
-  -- function with a branchy loop, one comparison per vertex in the common case, unrolled by
-  -- two so that no multiple assignment moves the vertex and edge along. The first turn's sign
-  -- picks ySign, which flips y so that every turn of a convex polygon is positive. The filter
+  -- function with a branchy loop, one comparison per vertex in the common case. The turns at
+  -- the last vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y
+  -- so that every turn of a convex polygon is positive, and a second turn against it ends the
+  -- call early (most concave polygons turn both ways within their first few vertices). The loop
+  -- is not unrolled: unrolled by two (no moves of the vertex and edge, but a start that depends
+  -- on the parity of the vertex count) it took 1.06 to 1.08 times as long on Lua 5.4, in 61
+  -- interleaved rounds on bench/workloads.lua's ordinary polygons. The filter
   -- bounds every |l + r| by the square root of the sum of their squares and compares squares
   -- (NaN or overflow only make it fail; squares that underflow come with an lo that does too).
   polygonType = function(points)
@@ -712,77 +732,72 @@ else
     local qx, qy = points[1] + 0.0, points[2] + 0.0
     local fx, fy = qx - cx, qy - cy
     local l, r = ex * fy, ey * fx
-    local s = l - r
+    local s = l - r   -- the turn at the last vertex, from edge e to edge f
     local ySign = 1.0
     if s < 0 then   -- (one statement each: a multiple assignment costs a move per value)
       ySign = -1.0
       s = -s
-      cy = -cy
-      ey = -ey
       qy = -qy
       fy = -fy
     end
     local firstTurn = s
     local e = l + r   -- the first turn's error bound is CROSS_BOUND |e|
     local firstBound = e * e
-    -- the x direction (+-1) of the last edge before vertex 1 that has one
+    -- dir has the sign of the x direction of the last edge before vertex 1 that has one; only
+    -- the signs of products fx * dir are read, which in the exact range are at least 2^-998
+    -- (a NaN dir leaves a NaN coordinate that the turns carry to the careful walk)
     local dir = ex
-    if dir == 0 then dir = (points[n - 3] + 0.0) - points[n - 5] end
-    if dir > 0 then dir = 1.0 elseif dir < 0 then dir = -1.0 else s = 0 end
-    local lo, errSq, flips, start = huge, 0.0, 0, 1
-    if n % 4 == 2 then   -- an odd number of vertices: keep the first turn, go on from vertex 1
-      lo = s
-      errSq = firstBound
-      start = 3
-      if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
-      cx = qx
-      cy = qy
-      ex = fx
-      ey = fy
+    if dir == 0 then
+      dir = (points[n - 3] + 0.0) - points[n - 5]
+      if dir == 0 then s = 0 end
     end
-    -- A turn s <= 0 leaves the loop (so does a first turn of 0 or NaN, or no x direction), as
-    -- does any turn against the first one: concave when both are certain.
+    -- A turn s <= 0 (or NaN) ends the walk: concave when it and the first turn are certain,
+    -- as is a first turn of 0 or NaN or no x direction.
     if s > 0 then
-      for i = start, n - 3, 4 do
-        qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
-        qy = points[i + 1] * ySign
-        fx = qx - cx
-        fy = qy - cy
-        l = ex * fy
-        r = ey * fx
-        s = l - r
-        if s < lo then
-          if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
-          lo = s
-        end
-        e = l + r
-        errSq = errSq + e * e
-        if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
-        cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
-        cy = points[i + 3] * ySign
-        ex = cx - qx
-        ey = cy - qy
-        l = fx * ey
-        r = fy * ex
-        s = l - r
-        if s < lo then
-          if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
-          lo = s
-        end
-        e = l + r
-        errSq = errSq + e * e
-        if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
-      end
+      cx = points[3] + 0.0   -- the turn at vertex 1, from edge f to edge e
+      cy = points[4] * ySign
+      ex = cx - qx
+      ey = cy - qy
+      l = fx * ey
+      r = fy * ex
+      s = l - r
       if s > 0 then
-        if lo * lo > TURN_BOUND_SQ * errSq then
+        local flips = 0
+        if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
+        local lo = firstTurn
+        if s < lo then lo = s end
+        e = l + r
+        local errSq = firstBound + e * e
+        if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
+        for i = 5, n - 1, 2 do
+          qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
+          qy = points[i + 1] * ySign
+          fx = qx - cx
+          fy = qy - cy
+          l = ex * fy
+          r = ey * fx
+          s = l - r
+          if s < lo then
+            if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
+            lo = s
+          end
+          e = l + r
+          errSq = errSq + e * e
+          if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
+          cx = qx
+          cy = qy
+          ex = fx
+          ey = fy
+        end
+        if s > 0 and lo * lo > TURN_BOUND_SQ * errSq then
           if flips == 2 then return "convex" end
           return "concave"
         end
-      else
+      end
+      if not (s > 0) then   -- luacheck: ignore 581
         -- both turns certain (compared squared: underflow or overflow only fails the test)
         e = l + r
-        local boundSq = CROSS_BOUND * CROSS_BOUND
-        if s * s > boundSq * (e * e) and firstTurn * firstTurn > boundSq * firstBound then
+        if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
           return "concave"
         end
       end
