@@ -57,9 +57,17 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- cross's is CROSS_BOUND, the area's is areaUncertain. Only when the bound cannot vouch for the
 -- sign does it redo the sum exactly, as a floating-point expansion: a sum of doubles whose bits
 -- do not overlap, built from TwoSum and TwoProduct (Dekker's split). The exact path allocates
--- nothing: it reuses one scratch array. Hot loops that inline cross's filter say so where they
--- do it, with the measured reason (vertexInside, separatingPush); they call cross where the
--- filter cannot decide, or, in separatingPush, lengthen the push until it can.
+-- nothing: it reuses one scratch array (and when the differences are exact, the common case,
+-- cross needs no loop at all). Hot loops that inline cross's filter say so where they do it,
+-- with the measured reason (insideFilter, lineShortfall, polygonType); they call cross where
+-- the filter cannot decide, or, in separatingPush, lengthen the push until it can.
+--
+-- LuaJIT and the PUC interpreters want different code: PUC Lua pays for every call (math.min
+-- and math.abs included) and little for a branch; LuaJIT compiles min, max and abs to single
+-- instructions, and turns every branch that goes both ways into a side trace, whose number is
+-- limited (100 per loop, 1000 in all by default). Where that matters a function has two bodies
+-- computing the same numbers, chosen once by JIT below; the LuaJIT bodies keep few values alive
+-- across their loops, since a side trace leaving a loop must take them all over in registers.
 --
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
 -- 2^-447 and 2^500 in magnitude (then all coordinates are multiples of 2^-499, all products of
@@ -68,8 +76,7 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- 2^63 and an integer beyond 2^53 counts as the double it converts to.
 
 local EPS = 2^-53                         -- unit roundoff of a double
--- LuaJIT (LÖVE's runtime) or a PUC interpreter: where the fastest form differs, both are written
--- (see shoelaceBounds for why); LuaJIT compiles a test of this constant away
+-- LuaJIT (LÖVE's runtime) or a PUC interpreter (see above); LuaJIT compiles a test of it away
 local JIT = rawget(_G, "jit") ~= nil
 local SPLITTER = 134217729.0              -- 2^27 + 1, splits a double into two 26-bit halves
 local CROSS_BOUND = (3 + 16 * EPS) * EPS  -- Shewchuk's ccwerrboundA for a 2x2 determinant
@@ -670,7 +677,7 @@ end
 -- or more for a pentagram): with every turn below a half turn, the signs of dx run
 -- + (0) - (0) + once per winding.
 local polygonType
-if rawget(_G, "jit") then
+if JIT then
   -- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
   -- math.abs compile to single instructions; data-dependent branches became side traces and
   -- made this loop over twice the baseline's time (bench/run.lua --only 'polygonType ord').
@@ -1072,7 +1079,7 @@ end
 -- comparisons would cost it most of the loop; the PUC interpreters call them as functions, so for
 -- them plain comparisons are faster. The two bodies compute the same numbers.
 local projectRange, minProjection
-if rawget(_G, "jit") then
+if JIT then
   projectRange = function(points, n, ax, ay, nx, ny)
     local lo, hi = huge, -huge
     for i = 1, n - 1, 2 do
@@ -1117,7 +1124,7 @@ end
 -- (measured: compiling them took most of the time of a mixed collision workload), so there the
 -- scan is whole, branch-free, every time.
 local deepestPast
-if rawget(_G, "jit") then
+if JIT then
   deepestPast = function(points, n, ax, ay, nx, ny, deepest)
     return deepest, minProjection(points, n, ax, ay, nx, ny)
   end
