@@ -3035,9 +3035,13 @@ local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 local pairGap = {}                 -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
 
--- Whether two convex parts overlap (exact), by the SAT engine; non-finite input was caught.
-local function overlapsConvex(p1, p2)
-  return convexPenetration(p1, #p1, p2, #p2, true) and true or false
+-- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
+-- checks of the views did not see (one off the box of a list's part) raises the argument error
+-- at the caller of the public function (level 4).
+local function overlapsConvex(fname, p1, p2)
+  local depth, argname = convexPenetration(p1, #p1, p2, #p2, true)
+  if depth == nil then error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4) end
+  return depth ~= false
 end
 
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
@@ -3178,7 +3182,7 @@ function collideParts(fname, shape1, shape2, wantPush)
       for j = 1, count2 do
         local b = 4 * j
         if xmin < boxes2[b - 1] and boxes2[b - 3] < xmax and ymin < boxes2[b] and boxes2[b - 2] < ymax
-          and overlapsConvex(parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
+          and overlapsConvex(fname, parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
           return true
         end
       end
