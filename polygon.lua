@@ -2720,10 +2720,12 @@ do   -- this section's helpers are local to it
 -- inside it) and so is never free; off the edge it is on another line, found there. Crossings use
 -- every line, as an end of an internal edge can be a corner of the union.
 --
--- Which pairs. A pair matters only if its D comes nearer the origin than the push found so far,
--- and D lies in the box [A's box - B's box]: the pairs whose boxes overlap come first, then the
--- pairs whose box of D is nearer than the best push found, round after round (each round can
--- only lengthen the push: a nearer free point would have been free among fewer pairs).
+-- Which pairs. D lies in the box [A's box - B's box]. The pairs whose boxes overlap (D holds the
+-- origin) come first. The nearest point t free among them is the least push of all when it lies
+-- outside every other D too, as more pairs can only take free points away; so a pair is added
+-- only when its box of D comes within 4 delta of t (largest coordinate gap), and the nearest
+-- free point is sought again, round after round. (The distance from the origin to a box of D
+-- bounds the one from t from below, less |t|: most pairs are passed over on that.)
 --
 -- Margin: one push separates. The faces are computed in floating point and the moved vertices
 -- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
@@ -3226,26 +3228,34 @@ function collideParts(fname, shape1, shape2, wantPush)
     end
   end
   if not hit then return false end
-  local reach = -huge   -- the pairs whose box of D is nearer than reach are in already
   local best, tx, ty = nearestFree(np, margin)
+  local near = 4 * margin   -- a box of D this far from t cannot hold it, widened by delta
   while true do
-    local nextReach = best + 4 * margin
-    if nextReach <= reach or nearest >= nextReach then break end   -- no pair is added
+    local reach = best == huge and huge or max(abs(tx), abs(ty)) + near
+    if nearest >= reach then break end   -- every other box of D is farther from t than near
     local before = np
-    pair = 0
+    nearest, pair = huge, 0
     for i = 1, count1 do
-      local p1 = parts1 and shape1[i] or shape1
+      local a = 4 * i
       for j = 1, count2 do
         pair = pair + 1
         local gap = pairGap[pair]
-        if gap >= reach and gap < nextReach then
-          np, top = addPair(view1, p1, i, view2, parts2 and shape2[j] or shape2, j, k, np, top)
+        if gap < reach then
+          local b = 4 * j
+          -- how far t lies beyond the box of D, along x and along y (< 0 inside)
+          local outX = max((boxes1[a - 3] - boxes2[b - 1]) * k - tx, tx - (boxes1[a - 1] - boxes2[b - 3]) * k)
+          local outY = max((boxes1[a - 2] - boxes2[b]) * k - ty, ty - (boxes1[a] - boxes2[b - 2]) * k)
+          if best == huge or max(outX, outY) < near then
+            pairGap[pair], gap = huge, huge
+            np, top = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
+              parts2 and shape2[j] or shape2, j, k, np, top)
+          end
         end
+        if gap < nearest then nearest = gap end
       end
     end
-    reach = nextReach
     if np == before then break end
-    -- More pairs can only lengthen the least push: if the best point is still free, it stays.
+    -- If the best point is still free among the pairs added, it stays (see "Which pairs").
     if best == huge or not pushFree(tx, ty, np, margin) then best, tx, ty = nearestFree(np, margin) end
   end
   if best == huge then
