@@ -3178,15 +3178,14 @@ function collideParts(fname, shape1, shape2, wantPush)
   local count1, count2 = view1.count, view2.count
   boxes1, boxes2 = view1.boxes, view2.boxes
   if not wantPush then
-    for i = 1, count1 do
-      local a = 4 * i
-      local xmin, ymin, xmax, ymax = boxes1[a - 3], boxes1[a - 2], boxes1[a - 1], boxes1[a]
-      for j = 1, count2 do
-        local b = 4 * j
-        if xmin < boxes2[b - 1] and boxes2[b - 3] < xmax and ymin < boxes2[b] and boxes2[b - 2] < ymax
+    local i, j = 1, 0
+    for _ = 1, count1 * count2 do   -- one loop over the pairs: see below
+      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+      local a, b = 4 * i, 4 * j
+      if boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
+          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
           and overlapsConvex(fname, parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
-          return true
-        end
+        return true
       end
     end
     return false
@@ -3201,30 +3200,28 @@ function collideParts(fname, shape1, shape2, wantPush)
   -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
   -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box,
   -- or once the pair is in), and `nearest` is the least of those.
-  local np, top, hit, nearest, pair = 0, 0, false, huge, 0
-  for i = 1, count1 do
-    local p1 = parts1 and shape1[i] or shape1
-    local a = 4 * i
-    local xmin, ymin, xmax, ymax = boxes1[a - 3], boxes1[a - 2], boxes1[a - 1], boxes1[a]
-    for j = 1, count2 do
-      pair = pair + 1
-      local b = 4 * j
-      -- a - b < 0 exactly when a < b: no NaN, as an empty box is (huge, huge, -huge, -huge)
-      local gapX = max(xmin - boxes2[b - 1], boxes2[b - 3] - xmax)
-      local gapY = max(ymin - boxes2[b], boxes2[b - 2] - ymax)
-      if gapX < 0 and gapY < 0 then
-        pairGap[pair] = huge
-        local overlaps
-        np, top, overlaps = addPair(view1, p1, i, view2, parts2 and shape2[j] or shape2, j, k, np,
-          top)
-        if overlaps then hit = true end
-      elseif xmin <= xmax and boxes2[b - 3] <= boxes2[b - 1] then
-        local gap = max(gapX * k, gapY * k, 0.0)
-        pairGap[pair] = gap
-        if gap < nearest then nearest = gap end
-      else
-        pairGap[pair] = huge
-      end
+  -- One loop over the pairs, not two nested (on LuaJIT an inner loop of one part, as for a flat
+  -- second shape, costs a trace exit for every part of the first).
+  local np, top, hit, nearest = 0, 0, false, huge
+  local i, j = 1, 0
+  for pair = 1, count1 * count2 do
+    if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+    local a, b = 4 * i, 4 * j
+    -- a - b < 0 exactly when a < b: no NaN, as an empty box is (huge, huge, -huge, -huge)
+    local gapX = max(boxes1[a - 3] - boxes2[b - 1], boxes2[b - 3] - boxes1[a - 1])
+    local gapY = max(boxes1[a - 2] - boxes2[b], boxes2[b - 2] - boxes1[a])
+    if gapX < 0 and gapY < 0 then
+      pairGap[pair] = huge
+      local overlaps
+      np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
+        parts2 and shape2[j] or shape2, j, k, np, top)
+      if overlaps then hit = true end
+    elseif boxes1[a - 3] <= boxes1[a - 1] and boxes2[b - 3] <= boxes2[b - 1] then
+      local gap = max(gapX * k, gapY * k, 0.0)
+      pairGap[pair] = gap
+      if gap < nearest then nearest = gap end
+    else
+      pairGap[pair] = huge
     end
   end
   if not hit then return false end
@@ -3234,25 +3231,22 @@ function collideParts(fname, shape1, shape2, wantPush)
     local reach = best == huge and huge or max(abs(tx), abs(ty)) + near
     if nearest >= reach then break end   -- every other box of D is farther from t than near
     local before = np
-    nearest, pair = huge, 0
-    for i = 1, count1 do
-      local a = 4 * i
-      for j = 1, count2 do
-        pair = pair + 1
-        local gap = pairGap[pair]
-        if gap < reach then
-          local b = 4 * j
-          -- how far t lies beyond the box of D, along x and along y (< 0 inside)
-          local outX = max((boxes1[a - 3] - boxes2[b - 1]) * k - tx, tx - (boxes1[a - 1] - boxes2[b - 3]) * k)
-          local outY = max((boxes1[a - 2] - boxes2[b]) * k - ty, ty - (boxes1[a] - boxes2[b - 2]) * k)
-          if best == huge or max(outX, outY) < near then
-            pairGap[pair], gap = huge, huge
-            np, top = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
-              parts2 and shape2[j] or shape2, j, k, np, top)
-          end
+    nearest, i, j = huge, 1, 0
+    for pair = 1, count1 * count2 do
+      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+      local gap = pairGap[pair]
+      if gap < reach then
+        local a, b = 4 * i, 4 * j
+        -- how far t lies beyond the box of D, along x and along y (< 0 inside)
+        local outX = max((boxes1[a - 3] - boxes2[b - 1]) * k - tx, tx - (boxes1[a - 1] - boxes2[b - 3]) * k)
+        local outY = max((boxes1[a - 2] - boxes2[b]) * k - ty, ty - (boxes1[a] - boxes2[b - 2]) * k)
+        if best == huge or max(outX, outY) < near then
+          pairGap[pair], gap = huge, huge
+          np, top = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
+            parts2 and shape2[j] or shape2, j, k, np, top)
         end
-        if gap < nearest then nearest = gap end
       end
+      if gap < nearest then nearest = gap end
     end
     if np == before then break end
     -- If the best point is still free among the pairs added, it stays (see "Which pairs").
