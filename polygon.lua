@@ -3394,13 +3394,7 @@ local function nearestFreeCircle(np, r, margin)
   return best, bestX, bestY
 end
 
--- The Chebyshev distance from the origin to the box of D for part i of boxes1 and a circle.
-local function circleBoxGap(i, cx, cy, r, k)
-  local a = 4 * i
-  local gx = max((boxes1[a - 3] - cx - r) * k, (cx - r - boxes1[a - 1]) * k, 0.0)
-  local gy = max((boxes1[a - 2] - cy - r) * k, (cy - r - boxes1[a]) * k, 0.0)
-  return max(gx, gy)
-end
+local circleAdded = {}   -- circleAdded[i] == callStamp: part i's faces are in
 
 -- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
 function collideCircleParts(fname, shape, cx, cy, r)
@@ -3437,29 +3431,33 @@ function collideCircleParts(fname, shape, cx, cy, r)
     end
   end
   if not hit then return false end
-  local reach = -huge   -- parts whose grown box is nearer than reach are in already
+  -- The other parts go in when their box of D (the part's box less the centre, grown by r) comes
+  -- within 4 delta of the best free point, round after round, as for polygons ("Which pairs"):
+  -- farther, its part is more than r + delta from the moved centre.
   local best, tx, ty = nearestFreeCircle(np, r * k, margin)
+  local near = 4 * margin
   while true do
-    local nextReach = best + 4 * margin
-    if nextReach <= reach then break end
     local before = np
     for i = 1, count do
       local a = 4 * i
-      if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
-          and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
-        local gap = circleBoxGap(i, cx, cy, r, k)
-        if gap >= reach and gap < nextReach and view.checked[i] ~= callStamp then
-          checkCopy(view, i, shape[i], 5)
-        end
-        if gap >= reach and gap < nextReach and turns[i] ~= 0 then
-          np = np + 1
-          faceFirst[np] = last + 1
-          last = addCircleFaces(shape[i], #shape[i], normals[i], internal[i], cx, cy, k, last)
-          faceFirst[np + 1] = last + 1
+      if boxes1[a - 3] <= boxes1[a - 1] and circleAdded[i] ~= callStamp
+          and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
+                   and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+        -- how far t lies beyond the box of D, along x and along y (< 0 inside)
+        local outX = max((boxes1[a - 3] - cx - r) * k - tx, tx - (boxes1[a - 1] - cx + r) * k)
+        local outY = max((boxes1[a - 2] - cy - r) * k - ty, ty - (boxes1[a] - cy + r) * k)
+        if best == huge or max(outX, outY) < near then
+          circleAdded[i] = callStamp
+          if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 5) end
+          if turns[i] ~= 0 then
+            np = np + 1
+            faceFirst[np] = last + 1
+            last = addCircleFaces(shape[i], #shape[i], normals[i], internal[i], cx, cy, k, last)
+            faceFirst[np + 1] = last + 1
+          end
         end
       end
     end
-    reach = nextReach
     if np == before then break end
     -- More parts can only lengthen the least move: if the best point is still free, it stays.
     if best == huge or not circleFree(tx, ty, np, r * k + margin) then
