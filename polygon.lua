@@ -2794,11 +2794,11 @@ end
 
 -- A view of a shape is what the collisions read of it: count, lengths[k], boxes (xmin, ymin,
 -- xmax, ymax of part k at 4k - 3 .. 4k; in extremes, the indices of the coordinates that gave
--- them), turns[k] (area sign 1, -1 or 0: signs, never
--- magnitudes, are multiplied), normals[k] (the outward unit normal of the edge ending at vertex
--- index i at [i], [i + 1]), internal[k], and over all parts size (the largest coordinate
--- magnitude) and the box left, top, right, bottom. A list's preparation is its view; a flat
--- array is seen through one of two scratch views, filled on every call.
+-- them), turns[k] (area sign 1, -1 or 0: signs, never magnitudes, are multiplied), normals[k]
+-- (the outward unit normal of the edge ending at vertex index i at [i], [i + 1]), internal[k],
+-- and over all parts size (the largest coordinate magnitude) and the box left, top, right,
+-- bottom. A list's preparation is its view; a flat array is seen through one of two scratch
+-- views, filled on every call.
 
 -- The box of part k (n coordinates) into view.boxes; false when a coordinate is inf or NaN.
 local function partBox(view, k, part, n)
