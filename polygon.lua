@@ -2854,10 +2854,12 @@ do   -- this section's helpers are local to it
 -- inside it) and so is never free; off the edge it is on another line, found there. Crossings use
 -- every line, as an end of an internal edge can be a corner of the union.
 --
--- Which pairs. A pair matters only if its D comes nearer the origin than the push found so far,
--- and D lies in the box [A's box - B's box]: the pairs whose boxes overlap come first, then the
--- pairs whose box of D is nearer than the best push found, round after round (each round can
--- only lengthen the push: a nearer free point would have been free among fewer pairs).
+-- Which pairs. D lies in the box [A's box - B's box]. The pairs whose boxes overlap (D holds the
+-- origin) come first. The nearest point t free among them is the least push of all when it lies
+-- outside every other D too, as more pairs can only take free points away; so a pair is added
+-- only when its box of D comes within 4 delta of t (largest coordinate gap), and the nearest
+-- free point is sought again, round after round. (The distance from the origin to a box of D
+-- bounds the one from t from below, less |t|: most pairs are passed over on that.)
 --
 -- Margin: one push separates. The faces are computed in floating point and the moved vertices
 -- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
@@ -2885,13 +2887,25 @@ function isParts(shape)
   return type(shape) == "table" and type(shape[1]) == "table"
 end
 
--- The preparation each list of parts gets once, on first use, kept while the list lives:
--- internal[k][e] is true when the edge of part k from vertex e to vertex e + 1 (the last to the
--- first) is covered by edges of other parts running the opposite way along the same line (shared
--- with the neighbours, whole or in pieces). Recomputed when the number of parts or of a part's
--- coordinates changes. Moving a shape keeps it right; a stale table after other edits costs at
--- most a longer push (a foot skipped) or some time (a foot tried), never a wrong one, as every
--- candidate is checked against every part.
+-- The preparation each list of parts gets on first use, kept while the list lives (weak keys):
+-- per part a copy of its coordinates, its bounding box, its area sign and its outward unit edge
+-- normals, and which of its edges are internal: internal[k][e] is true when the edge of part k
+-- from vertex e to vertex e + 1 (the last to the first) is covered by edges of other parts
+-- running the opposite way along the same line (shared with the neighbours, whole or in pieces).
+-- Keeping it right. Reading every coordinate on every call costs as much as the pair tests a
+-- call needs, so each call checks, per part, only its table, its length and the four
+-- coordinates on its box (the vertices that gave xmin, ymin, xmax, ymax). That is exact for a
+-- move (polygonTranslate in place, or p[i] = p[i] + dx on every coordinate, rounded): rounding
+-- is monotonic, so if the coordinates on the box did not change, no moved coordinate left the
+-- box, and the box is right. A part whose box is used (it overlaps the other shape's) is
+-- compared with its whole copy too, so its sign and normals are always those of its present
+-- coordinates. What is not seen: an edit other than a move that leaves the coordinates on a
+-- part's box as they were and takes another vertex beyond it (give the part a new table then).
+-- A changed part gets its copy, box, sign and normals again, in place, without allocating; a
+-- change in the number of parts or of a part's coordinates prepares the list again
+-- (allocates). The internal edges are kept when coordinates change: moving a shape keeps them
+-- right, and after other edits a stale table costs at most a longer push (a foot skipped) or
+-- some time (a foot tried), never a wrong one, as every candidate is checked against every part.
 local preparedParts = setmetatable({}, { __mode = "k" })
 
 -- The interval an edge covers along its line: on x unless the line is vertical (exact).
@@ -2912,15 +2926,92 @@ local function covered(covers, lo, hi)
   return reach >= hi
 end
 
--- Builds the preparation of a list of parts (allocates: load time, or after the parts changed).
-local function prepareParts(parts)
+-- A view of a shape is what the collisions read of it: count, lengths[k], boxes (xmin, ymin,
+-- xmax, ymax of part k at 4k - 3 .. 4k; in extremes, the indices of the coordinates that gave
+-- them), turns[k] (area sign 1, -1 or 0: signs, never magnitudes, are multiplied), normals[k]
+-- (the outward unit normal of the edge ending at vertex index i at [i], [i + 1]), internal[k],
+-- and over all parts size (the largest coordinate magnitude) and the box left, top, right,
+-- bottom. A list's preparation is its view; a flat array is seen through one of two scratch
+-- views, filled on every call.
+
+-- The box of part k (n coordinates) into view.boxes; false when a coordinate is inf or NaN.
+local function partBox(view, k, part, n)
+  local finite = 0.0
+  local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+  local ixmin, iymin, ixmax, iymax = 1, 2, 1, 2
+  for i = 1, n - 1, 2 do
+    local x, y = part[i] + 0.0, part[i + 1] + 0.0
+    finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
+    if x < xmin then xmin, ixmin = x, i end
+    if x > xmax then xmax, ixmax = x, i end
+    if y < ymin then ymin, iymin = y, i + 1 end
+    if y > ymax then ymax, iymax = y, i + 1 end
+  end
+  if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+  local boxes, extremes, b = view.boxes, view.extremes, 4 * k
+  boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
+  extremes[b - 3], extremes[b - 2], extremes[b - 1], extremes[b] = ixmin, iymin, ixmax, iymax
+  return finite == 0
+end
+
+-- The area sign and the edge normals of part k (finite coordinates) into view.
+local function partNormals(view, k, part, n)
+  local turn = 0.0
+  if n >= 6 then
+    local sign = areaSign(part, n)
+    turn = sign > 0 and 1.0 or sign < 0 and -1.0 or 0.0
+  end
+  view.turns[k] = turn
+  if turn == 0 then return end   -- never collides: no normal is read
+  local normals = view.normals[k]
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    local ux, uy = 0.0, 0.0   -- a repeated vertex gives no edge
+    if bx ~= ax or by ~= ay then ux, uy = unit((by - ay) * turn, (ax - bx) * turn) end
+    normals[i], normals[i + 1] = ux, uy
+    ax, ay = bx, by
+  end
+end
+
+-- The box around all parts of view and their largest coordinate magnitude, into view.
+local function shapeBox(view)
+  local size, left, top, right, bottom = 0.0, huge, huge, -huge, -huge
+  local boxes = view.boxes
+  for b = 4, 4 * view.count, 4 do
+    local xmin, ymin, xmax, ymax = boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b]
+    if xmin <= xmax then   -- parts of fewer than 3 points have none
+      size = max(size, -xmin, xmax, -ymin, ymax)
+      left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
+    end
+  end
+  view.size, view.left, view.top, view.right, view.bottom = size, left, top, right, bottom
+end
+
+-- Builds the preparation of a list of parts, whose parts were checked to be tables of even
+-- length (allocates: on first use, or after the number of parts or coordinates changed). A
+-- non-finite coordinate raises the argument error at the caller of the public function.
+local function prepareParts(fname, argname, parts)
   local count = #parts
-  local info = { count = count, lengths = {}, internal = {} }
+  local info = { count = count, lengths = {}, internal = {}, copies = {}, boxes = {}, turns = {},
+                 normals = {}, extremes = {}, tables = {}, checked = {} }
+  for k = 1, count do
+    local part = parts[k]
+    local n = #part
+    local copy = {}
+    for i = 1, n do copy[i] = part[i] end
+    info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, {}, copy, {}
+    info.tables[k], info.checked[k] = part, 0
+    if not partBox(info, k, part, n) then
+      error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
+    end
+    partNormals(info, k, part, n)
+  end
+  shapeBox(info)
   local edges = {}
   for k = 1, count do
     local part = parts[k]
     local n = #part
-    info.lengths[k], info.internal[k] = n, {}
     for e = 1, n / 2 do
       local j = e % (n / 2) + 1
       local ax, ay = part[2 * e - 1] + 0.0, part[2 * e] + 0.0
@@ -2966,87 +3057,143 @@ local function prepareParts(parts)
   return info
 end
 
--- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
-local boxes1, boxes2 = {}, {}      -- part boxes: xmin, ymin, xmax, ymax at 4k - 3 .. 4k
-local turns1, turns2 = {}, {}      -- part area signs, valid when stamps[k] == callStamp
-local stamps1, stamps2 = {}, {}
-local callStamp = 0
-local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
-local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
+-- Checks that every part of a list is a table of even length: the argument errors, raised at
+-- the caller of the public function (level 5: it is called by listView).
+local function checkList(fname, argname, shape)
+  for k = 1, #shape do
+    local part = shape[k]
+    if type(part) ~= "table" then
+      error(("%s: %s[%d] must be a table, got %s"):format(fname, argname, k, type(part)), 5)
+    end
+    if #part % 2 ~= 0 then
+      error(("%s: %s[%d] must hold an even number of coordinates, got %d")
+        :format(fname, argname, k, #part), 5)
+    end
+  end
+end
 
--- The part count of a shape, its boxes in `boxes`, the largest coordinate magnitude, whether
--- `info` (its preparation, if any) no longer matches its parts' lengths, and the box around all
--- parts (xmin, ymin, xmax, ymax). Raises the
--- argument errors at the caller of the public function (level 4).
-local function scanShape(fname, argname, shape, parts, boxes, info)
+local callStamp = 0   -- counts the calls that push: checked[k] == callStamp when compared
+
+-- Brings part k of a prepared list up to date from its present coordinates, in place. Raises the
+-- non-finite error at `level` (counted from here, 1).
+local function refreshPart(view, k, part, n, level)
+  if not partBox(view, k, part, n) then
+    view.lengths[k] = -1   -- the next call prepares the list again, and raises again
+    error(("%s: %s holds a non-finite coordinate"):format(view.fname, view.argname), level)
+  end
+  partNormals(view, k, part, n)
+  local copy = view.copies[k]
+  for i = 1, n do copy[i] = part[i] end
+end
+
+-- Compares part k of a prepared list with its whole copy, once per call, before its sign and
+-- normals are read (see preparedParts); level as in refreshPart, counted from here.
+local function checkCopy(view, k, part, level)
+  view.checked[k] = callStamp
+  local copy, n = view.copies[k], view.lengths[k]
+  for i = 1, n do
+    if part[i] ~= copy[i] then
+      refreshPart(view, k, part, n, level + 1)
+      return
+    end
+  end
+end
+
+-- The view of a list of parts: its preparation, brought up to date (see preparedParts). Raises
+-- the argument errors at the caller of the public function (level 4).
+local function listView(fname, argname, shape)
+  local info = preparedParts[shape]
+  if info and info.count == #shape then
+    info.fname, info.argname = fname, argname
+    local lengths, tables, boxes, extremes = info.lengths, info.tables, info.boxes, info.extremes
+    local changed = false
+    for k = 1, info.count do
+      local part, n = shape[k], lengths[k]
+      if part ~= tables[k] or n < 0 then   -- another table, or a non-finite coordinate before
+        if type(part) ~= "table" or #part ~= n then
+          changed = nil   -- prepare again (or raise the error)
+          break
+        end
+        tables[k], changed = part, true
+        refreshPart(info, k, part, n, 5)
+      elseif part[n + 1] ~= nil or n > 0 and part[n] == nil then   -- another length
+        changed = nil
+        break
+      elseif n >= 6 then
+        local b = 4 * k
+        if part[extremes[b - 3]] ~= boxes[b - 3] or part[extremes[b - 2]] ~= boxes[b - 2]
+            or part[extremes[b - 1]] ~= boxes[b - 1] or part[extremes[b]] ~= boxes[b] then
+          changed = true
+          refreshPart(info, k, part, n, 5)
+        end
+      end
+    end
+    if changed ~= nil then
+      if changed then shapeBox(info) end
+      return info
+    end
+  end
+  checkList(fname, argname, shape)
+  info = prepareParts(fname, argname, shape)
+  info.fname, info.argname = fname, argname
+  return info
+end
+
+-- The two views of flat arrays (one per argument), refilled on every call. `pending`: the area
+-- sign and normals are still to compute (only a push on overlapping boxes needs them).
+local function newFlatView()
+  return { count = 1, lengths = {}, internal = {}, boxes = {}, extremes = {}, turns = {},
+           normals = { {} }, pending = false }
+end
+local flatView1, flatView2 = newFlatView(), newFlatView()
+
+-- Fills `view` for the flat array shape. Raises the argument errors at the caller of the public
+-- function (level 4).
+local function flatView(fname, argname, shape, view)
   if type(shape) ~= "table" then
     error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), 4)
   end
-  local count = parts and #shape or 1
-  local stale = info and info.count ~= count
-  local size, finite = 0.0, 0.0
-  local left, top, right, bottom = huge, huge, -huge, -huge
-  for k = 1, count do
-    local part = parts and shape[k] or shape
-    if type(part) ~= "table" then
-      error(("%s: %s[%d] must be a table, got %s"):format(fname, argname, k, type(part)), 4)
-    end
-    local n = #part
-    if n % 2 ~= 0 then
-      error(("%s: %s must hold an even number of coordinates, got %d")
-        :format(fname, parts and ("%s[%d]"):format(argname, k) or argname, n), 4)
-    end
-    if info and info.lengths[k] ~= n then stale = true end
-    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
-    for i = 1, n - 1, 2 do
-      local x, y = part[i] + 0.0, part[i + 1] + 0.0
-      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
-      if x < xmin then xmin = x end
-      if x > xmax then xmax = x end
-      if y < ymin then ymin = y end
-      if y > ymax then ymax = y end
-    end
-    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
-    local b = 4 * k
-    boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
-    if n >= 6 then
-      size = max(size, -xmin, xmax, -ymin, ymax)
-      left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
-    end
+  local n = #shape
+  if n % 2 ~= 0 then
+    error(("%s: %s must hold an even number of coordinates, got %d"):format(fname, argname, n), 4)
   end
-  if finite ~= 0 then
+  if not partBox(view, 1, shape, n) then
     error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
   end
-  return count, size, stale, left, top, right, bottom
+  view.lengths[1], view.pending = n, true
+  shapeBox(view)
+  return view
 end
 
--- The area sign of part k (1, -1 or 0: signs, never magnitudes, are multiplied), once per call.
-local function partTurn(part, k, turns, stamps)
-  if stamps[k] ~= callStamp then
-    local orientation = areaSign(part, #part)
-    stamps[k], turns[k] = callStamp, orientation > 0 and 1.0 or orientation < 0 and -1.0 or 0.0
-  end
-  return turns[k]
-end
+-- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
+local boxes1, boxes2 = {}, {}      -- the boxes of the two views of the call
+local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
+local pairGap = {}                 -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
 
--- Whether two convex parts overlap (exact), by the SAT engine; non-finite input was caught.
-local function overlapsConvex(p1, p2)
-  return convexPenetration(p1, #p1, p2, #p2, true) and true or false
+-- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
+-- checks of the views did not see (one off the box of a list's part) raises the argument error
+-- at the caller of the public function (level 4).
+local function overlapsConvex(fname, p1, p2)
+  local depth, argname = convexPenetration(p1, #p1, p2, #p2, true)
+  if depth == nil then error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4) end
+  return depth ~= false
 end
 
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
--- part give (sense 1 for a part of the first shape, -1 for one of the second, whose outward
--- normal points the other way in t), with `other` the part it is paired with. Coordinates are
--- scaled by k. Returns the last index used and whether some edge separates the two parts,
--- decided exactly (w, h bound the scaled coordinate differences, for projectionTolerance).
-local function addFaces(edges, ne, orientation, other, no, internal, sense, k, w, h, top)
+-- part give (turn its area sign, normals its outward unit normals; sense 1 for a part of the
+-- first shape, -1 for one of the second, whose outward normal points the other way in t), with
+-- `other` the part it is paired with. Coordinates are scaled by k. Returns the last index used
+-- and whether some edge separates the two parts, decided exactly (w, h bound the scaled
+-- coordinate differences, for projectionTolerance).
+local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, w, h, top)
   local separated = false
   local e = ne / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for i = 1, ne - 1, 2 do
     local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = unit((by - ay) * orientation, (ax - bx) * orientation)   -- outward
+      local ux, uy = normals[i], normals[i + 1]
       local kax, kay = ax * k, ay * k
       local lo = huge
       for j = 1, no - 1, 2 do
@@ -3056,7 +3203,7 @@ local function addFaces(edges, ne, orientation, other, no, internal, sense, k, w
       if not separated then
         local tol = projectionTolerance(w, h, ux, uy)
         if -lo <= tol and (-lo < -tol
-            or not vertexInside(ax, ay, bx, by, ax, ay, orientation, other, no)) then
+            or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no)) then
           separated = true
         end
       end
@@ -3089,6 +3236,17 @@ local function nearestFree(np, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
+  -- The nearest foot first: it is usually free, and then no farther candidate is tried.
+  local nearest, nearestD = 0, huge
+  for f = 1, last do
+    local d = abs(faceC[f] + lift)
+    if faceOuter[f] and d < nearestD then nearest, nearestD = f, d end
+  end
+  if nearest > 0 then
+    local d = faceC[nearest] + lift
+    local tx, ty = faceX[nearest] * d, faceY[nearest] * d
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+  end
   for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
     local d = faceC[f] + lift
     if faceOuter[f] and abs(d) < best then
@@ -3117,35 +3275,27 @@ local function nearestFree(np, margin)
   return best, bestX, bestY
 end
 
--- The distance (largest coordinate gap) from the origin to the box of D for parts i and j.
-local function boxGap(i, j, k)
-  local a, b = 4 * i, 4 * j
-  local gx = max((boxes1[a - 3] - boxes2[b - 1]) * k, (boxes2[b - 3] - boxes1[a - 1]) * k, 0.0)
-  local gy = max((boxes1[a - 2] - boxes2[b]) * k, (boxes2[b - 2] - boxes1[a]) * k, 0.0)
-  return max(gx, gy)
-end
-
--- Whether the boxes of part i of the first shape and part j of the second overlap (not touch).
-local function boxesOverlap(i, j)
-  local a, b = 4 * i, 4 * j
-  return boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
-    and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
-end
-
--- Appends the faces of D for part p1 (number i of the first shape) and p2 (number j of the
--- second) as pair np + 1. Returns np, top and whether the parts overlap, decided exactly.
-local function addPair(p1, i, internal1, p2, j, internal2, k, np, top)
-  local n1, n2 = #p1, #p2
-  local turn1 = partTurn(p1, i, turns1, stamps1)
-  local turn2 = partTurn(p2, j, turns2, stamps2)
+-- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair
+-- np + 1. Returns np, top and whether the parts overlap, decided exactly.
+local function addPair(view1, p1, i, view2, p2, j, k, np, top)
+  if view1.pending then partNormals(view1, 1, p1, #p1); view1.pending = false end
+  if view2.pending then partNormals(view2, 1, p2, #p2); view2.pending = false end
+  -- a list's part: its whole copy compared (the non-finite error raised at the public
+  -- function's caller, level 6 from checkCopy)
+  if view1.copies and view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 6) end
+  if view2.copies and view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 6) end
+  local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  local n1, n2 = view1.lengths[i], view2.lengths[j]
   local a, b = 4 * i, 4 * j
   local w = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
   local h = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
   faceFirst[np + 1] = top + 1
   local apart1, apart2
-  top, apart1 = addFaces(p1, n1, turn1, p2, n2, internal1, 1.0, k, w, h, top)
-  top, apart2 = addFaces(p2, n2, turn2, p1, n1, internal2, -1.0, k, w, h, top)
+  top, apart1 = addFaces(p1, n1, turn1, view1.normals[i], p2, n2, view1.internal[i], 1.0, k, w, h,
+    top)
+  top, apart2 = addFaces(p2, n2, turn2, view2.normals[j], p1, n1, view2.internal[j], -1.0, k, w, h,
+    top)
   faceFirst[np + 2] = top + 1
   return np + 1, top, not (apart1 or apart2)
 end
@@ -3155,64 +3305,85 @@ end
 -- overlap, dx, dy, or false.
 function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
-  local info1 = wantPush and parts1 and preparedParts[shape1]
-  local info2 = wantPush and parts2 and preparedParts[shape2]
-  local count1, size1, stale1, x1, y1, x2, y2 = scanShape(fname, "points1", shape1, parts1, boxes1, info1)
-  local count2, size2, stale2, x3, y3, x4, y4 = scanShape(fname, "points2", shape2, parts2, boxes2, info2)
-  callStamp = callStamp + 1
+  local view1 = parts1 and listView(fname, "points1", shape1)
+    or flatView(fname, "points1", shape1, flatView1)
+  local view2 = parts2 and listView(fname, "points2", shape2)
+    or flatView(fname, "points2", shape2, flatView2)
+  local count1, count2 = view1.count, view2.count
+  boxes1, boxes2 = view1.boxes, view2.boxes
   if not wantPush then
-    for i = 1, count1 do
-      for j = 1, count2 do
-        if boxesOverlap(i, j)
-          and overlapsConvex(parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
-          return true
-        end
+    local i, j = 1, 0
+    for _ = 1, count1 * count2 do   -- one loop over the pairs: see below
+      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+      local a, b = 4 * i, 4 * j
+      if boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
+          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
+          and overlapsConvex(fname, parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
+        return true
       end
     end
     return false
   end
-  if parts1 and (not info1 or stale1) then info1 = prepareParts(shape1) end
-  if parts2 and (not info2 or stale2) then info2 = prepareParts(shape2) end
-  local size = max(size1, size2)
+  local size = max(view1.size, view2.size)
   local k = 1.0
   if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
-  local extent = ((max(x2, x4) - min(x1, x3)) + (max(y2, y4) - min(y1, y3))) * k
+  local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
+    + (max(view1.bottom, view2.bottom) - min(view1.top, view2.top))) * k
   local margin = 2^-47 * extent + 2^-52 * size * k   -- delta above: 64 eps E + 2 eps S
-  local np, top, hit = 0, 0, false
-  for i = 1, count1 do
-    local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
-    for j = 1, count2 do
-      if boxesOverlap(i, j) then
-        local overlaps
-        np, top, overlaps = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
-          info2 and info2.internal[j], k, np, top)
-        if overlaps then hit = true end
-      end
+  callStamp = callStamp + 1
+  -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
+  -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box,
+  -- or once the pair is in), and `nearest` is the least of those.
+  -- One loop over the pairs, not two nested (on LuaJIT an inner loop of one part, as for a flat
+  -- second shape, costs a trace exit for every part of the first).
+  local np, top, hit, nearest = 0, 0, false, huge
+  local i, j = 1, 0
+  for pair = 1, count1 * count2 do
+    if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+    local a, b = 4 * i, 4 * j
+    -- a - b < 0 exactly when a < b: no NaN, as an empty box is (huge, huge, -huge, -huge)
+    local gapX = max(boxes1[a - 3] - boxes2[b - 1], boxes2[b - 3] - boxes1[a - 1])
+    local gapY = max(boxes1[a - 2] - boxes2[b], boxes2[b - 2] - boxes1[a])
+    if gapX < 0 and gapY < 0 then
+      pairGap[pair] = huge
+      local overlaps
+      np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
+        parts2 and shape2[j] or shape2, j, k, np, top)
+      if overlaps then hit = true end
+    elseif boxes1[a - 3] <= boxes1[a - 1] and boxes2[b - 3] <= boxes2[b - 1] then
+      local gap = max(gapX * k, gapY * k, 0.0)
+      pairGap[pair] = gap
+      if gap < nearest then nearest = gap end
+    else
+      pairGap[pair] = huge
     end
   end
   if not hit then return false end
-  local reach = -huge   -- the pairs whose box of D is nearer than reach are in already
   local best, tx, ty = nearestFree(np, margin)
+  local near = 4 * margin   -- a box of D this far from t cannot hold it, widened by delta
   while true do
-    local nextReach = best + 4 * margin
-    if nextReach <= reach then break end
+    local reach = best == huge and huge or max(abs(tx), abs(ty)) + near
+    if nearest >= reach then break end   -- every other box of D is farther from t than near
     local before = np
-    for i = 1, count1 do
-      local p1, internal1 = parts1 and shape1[i] or shape1, info1 and info1.internal[i]
-      for j = 1, count2 do
-        if boxes1[4 * i - 3] <= boxes1[4 * i - 1] and boxes2[4 * j - 3] <= boxes2[4 * j - 1]
-          and not boxesOverlap(i, j) then
-          local gap = boxGap(i, j, k)
-          if gap >= reach and gap < nextReach then
-            np, top = addPair(p1, i, internal1, parts2 and shape2[j] or shape2, j,
-              info2 and info2.internal[j], k, np, top)
-          end
+    nearest, i, j = huge, 1, 0
+    for pair = 1, count1 * count2 do
+      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+      local gap = pairGap[pair]
+      if gap < reach then
+        local a, b = 4 * i, 4 * j
+        -- how far t lies beyond the box of D, along x and along y (< 0 inside)
+        local outX = max((boxes1[a - 3] - boxes2[b - 1]) * k - tx, tx - (boxes1[a - 1] - boxes2[b - 3]) * k)
+        local outY = max((boxes1[a - 2] - boxes2[b]) * k - ty, ty - (boxes1[a] - boxes2[b - 2]) * k)
+        if best == huge or max(outX, outY) < near then
+          pairGap[pair], gap = huge, huge
+          np, top = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
+            parts2 and shape2[j] or shape2, j, k, np, top)
         end
       end
+      if gap < nearest then nearest = gap end
     end
-    reach = nextReach
     if np == before then break end
-    -- More pairs can only lengthen the least push: if the best point is still free, it stays.
+    -- If the best point is still free among the pairs added, it stays (see "Which pairs").
     if best == huge or not pushFree(tx, ty, np, margin) then best, tx, ty = nearestFree(np, margin) end
   end
   if best == huge then
@@ -3234,17 +3405,18 @@ end
 local faceAX, faceAY, faceBX, faceBY = {}, {}, {}, {}   -- edge ends relative to the centre
 local faceQ = {}                                        -- |faceAX, faceAY|: the vertex's distance
 
--- Appends the edges of part (area sign orientation) as faces relative to the centre (cx, cy), all
--- scaled by k: the outward unit normal, the signed distance faceC of the edge's line from the
--- centre (u.t - faceC is how far t lies beyond it) and the edge's ends. Returns the last index.
-local function addCircleFaces(part, n, orientation, internal, cx, cy, k, top)
+-- Appends the edges of part (normals: its outward unit normals, from its view) as faces relative
+-- to the centre (cx, cy), all scaled by k: the outward unit normal, the signed distance faceC of
+-- the edge's line from the centre (u.t - faceC is how far t lies beyond it) and the edge's ends.
+-- Returns the last index.
+local function addCircleFaces(part, n, normals, internal, cx, cy, k, top)
   local e = n / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
   local kcx, kcy = cx * k, cy * k
   for i = 1, n - 1, 2 do
     local bx, by = part[i] + 0.0, part[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = unit((by - ay) * orientation, (ax - bx) * orientation)   -- outward
+      local ux, uy = normals[i], normals[i + 1]
       local qax, qay = ax * k - kcx, ay * k - kcy
       top = top + 1
       faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
@@ -3356,13 +3528,7 @@ local function nearestFreeCircle(np, r, margin)
   return best, bestX, bestY
 end
 
--- The Chebyshev distance from the origin to the box of D for part i of boxes1 and a circle.
-local function circleBoxGap(i, cx, cy, r, k)
-  local a = 4 * i
-  local gx = max((boxes1[a - 3] - cx - r) * k, (cx - r - boxes1[a - 1]) * k, 0.0)
-  local gy = max((boxes1[a - 2] - cy - r) * k, (cy - r - boxes1[a]) * k, 0.0)
-  return max(gx, gy)
-end
+local circleAdded = {}   -- circleAdded[i] == callStamp: part i's faces are in
 
 -- polygonCircleCollideV for a list of parts: overlap, dx, dy (move the circle) or false.
 function collideCircleParts(fname, shape, cx, cy, r)
@@ -3370,13 +3536,14 @@ function collideCircleParts(fname, shape, cx, cy, r)
   checkFiniteNumber(cy, fname, "cy", 4)
   checkFiniteNumber(r, fname, "radius", 4)
   if r < 0 then error(("%s: radius must not be negative, got %s"):format(fname, tostring(r)), 3) end
-  local info = preparedParts[shape]
-  local count, size, stale, left, top, right, bottom = scanShape(fname, "points", shape, true, boxes1, info)
-  if stale or not info then info = prepareParts(shape) end
+  local view = listView(fname, "points", shape)
+  local count, turns, normals, internal = view.count, view.turns, view.normals, view.internal
+  local left, top, right, bottom = view.left, view.top, view.right, view.bottom
+  boxes1 = view.boxes
   cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
   if r == 0 then return false end
+  local size = max(view.size, abs(cx) + r, abs(cy) + r)
   callStamp = callStamp + 1
-  size = max(size, abs(cx) + r, abs(cy) + r)
   local k = 1.0
   if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
   local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
@@ -3387,38 +3554,44 @@ function collideCircleParts(fname, shape, cx, cy, r)
         and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
       local part = shape[i]
       local n = #part
-      local orientation = partTurn(part, i, turns1, stamps1)
-      if orientation ~= 0 then
+      if view.checked[i] ~= callStamp then checkCopy(view, i, part, 5) end
+      if turns[i] ~= 0 then
         if circleCollision(part, n, cx, cy, r) then hit = true end
         np = np + 1
         faceFirst[np] = last + 1
-        last = addCircleFaces(part, n, orientation, info.internal[i], cx, cy, k, last)
+        last = addCircleFaces(part, n, normals[i], internal[i], cx, cy, k, last)
         faceFirst[np + 1] = last + 1
       end
     end
   end
   if not hit then return false end
-  local reach = -huge   -- parts whose grown box is nearer than reach are in already
+  -- The other parts go in when their box of D (the part's box less the centre, grown by r) comes
+  -- within 4 delta of the best free point, round after round, as for polygons ("Which pairs"):
+  -- farther, its part is more than r + delta from the moved centre.
   local best, tx, ty = nearestFreeCircle(np, r * k, margin)
+  local near = 4 * margin
   while true do
-    local nextReach = best + 4 * margin
-    if nextReach <= reach then break end
     local before = np
     for i = 1, count do
       local a = 4 * i
-      if boxes1[a - 3] <= boxes1[a - 1] and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
-          and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
-        local gap = circleBoxGap(i, cx, cy, r, k)
-        local orientation = gap >= reach and gap < nextReach and partTurn(shape[i], i, turns1, stamps1)
-        if orientation and orientation ~= 0 then
-          np = np + 1
-          faceFirst[np] = last + 1
-          last = addCircleFaces(shape[i], #shape[i], orientation, info.internal[i], cx, cy, k, last)
-          faceFirst[np + 1] = last + 1
+      if boxes1[a - 3] <= boxes1[a - 1] and circleAdded[i] ~= callStamp
+          and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
+                   and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+        -- how far t lies beyond the box of D, along x and along y (< 0 inside)
+        local outX = max((boxes1[a - 3] - cx - r) * k - tx, tx - (boxes1[a - 1] - cx + r) * k)
+        local outY = max((boxes1[a - 2] - cy - r) * k - ty, ty - (boxes1[a] - cy + r) * k)
+        if best == huge or max(outX, outY) < near then
+          circleAdded[i] = callStamp
+          if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 5) end
+          if turns[i] ~= 0 then
+            np = np + 1
+            faceFirst[np] = last + 1
+            last = addCircleFaces(shape[i], #shape[i], normals[i], internal[i], cx, cy, k, last)
+            faceFirst[np + 1] = last + 1
+          end
         end
       end
     end
-    reach = nextReach
     if np == before then break end
     -- More parts can only lengthen the least move: if the best point is still free, it stays.
     if best == huge or not circleFree(tx, ty, np, r * k + margin) then

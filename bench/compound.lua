@@ -115,18 +115,7 @@ local function excess(seed, trials)
   for _ = 1, trials do
     local kind = g:int(1, 3)
     local off = offsets[g:int(1, 4)]
-    local s1, s2
-    if kind == 1 then
-      s1, s2 = scenes.cluster(g, g:int(1, 5), 60, 30), scenes.cluster(g, g:int(1, 2), 60, 20)
-    elseif kind == 2 then
-      local width
-      s1, width = scenes.terrain(g, 12)
-      local x, y = g:range(0, width - 10), g:range(10, 80)
-      s2 = { { x, y, x + 10, y, x + 10, y + 10, x, y + 10 } }
-    else
-      s1 = scenes.terrain(g, 8)
-      s2 = scenes.cluster(g, 2, 60, 10)
-    end
+    local s1, s2 = scenes.pair(g, kind)
     s1, s2 = parts.translate(s1, off, off), parts.translate(s2, off, off)
     measure(s1, s2, off)
     measure(s2, s1, off)

@@ -47,18 +47,7 @@ describe("compound shapes against the union oracle", function()
     local collisions, beyondSlack, worst = 0, 0, 0
     for trial = 1, 240 do
       local off = OFFSETS[trial % #OFFSETS + 1]
-      local s1, s2
-      local kind = trial % 3
-      if kind == 0 then
-        s1, s2 = scenes.cluster(g, g:int(1, 5), 60, 30), scenes.cluster(g, g:int(1, 2), 60, 20)
-      elseif kind == 1 then
-        local width
-        s1, width = scenes.terrain(g, 12)
-        local x, y = g:range(0, width - 10), g:range(10, 80)
-        s2 = { parts.box(x, y, 10, 10) }
-      else
-        s1, s2 = scenes.terrain(g, 8), scenes.cluster(g, 2, 60, 10)
-      end
+      local s1, s2 = scenes.pair(g, trial % 3 + 1)
       if trial % 2 == 0 then s1 = parts.reverse(s1) end
       s1, s2 = parts.translate(s1, off, off), parts.translate(s2, off, off)
       for _, order in ipairs({ { s1, s2 }, { s2, s1 } }) do

@@ -179,6 +179,94 @@ describe("compound shapes", function()
     end)
   end)
 
+  describe("when a list's parts change between calls", function()
+    -- Each list keeps its parts' boxes, signs and normals from call to call: the changes a game
+    -- makes must be seen, and each answer be the one for the coordinates of the moment.
+    it("follows a floor moved in place by polygonTranslate", function()
+      local floor = parts.floor(20, 10, 100, 0)
+      local crate = parts.box(50, 95, 8, 8)   -- bottom y = 103: sunk 3
+      assert_push(floor, crate, 0, -3)
+      polygon.polygonTranslate(floor, 0, 10, floor)   -- top edge now y = 110: 7 below the crate
+      assert.is_false(collide(floor, crate))
+      assert.is_false(collideV(floor, crate))
+      polygon.polygonTranslate(floor, 0, -11, floor)   -- top edge y = 99: sunk 4
+      assert_push(floor, crate, 0, -4)
+    end)
+
+    it("follows one part moved by hand, coordinate by coordinate", function()
+      local list = { parts.box(0, 0, 10, 10), parts.box(100, 0, 10, 10) }
+      local crate = parts.box(40, 2, 8, 6)
+      assert.is_false(collideV(list, crate))
+      local far = list[2]
+      for i = 1, #far, 2 do far[i] = far[i] - 58 end   -- x from 42 to 52: 48 - 42 = 6 into the crate
+      assert.is_true(collide(list, crate))
+      assert_push(list, crate, -6, 0)
+    end)
+
+    it("follows a part reshaped with its first vertex kept", function()
+      local list = { { 0, 0, 10, 0, 10, 10, 0, 10 } }
+      local crate = parts.box(40, 2, 8, 6)
+      assert.is_false(collideV(list, crate))
+      list[1][3], list[1][5] = 42, 42   -- the right side from x = 10 to 42: 42 - 40 = 2 into it
+      assert.is_true(collide(list, crate))
+      assert_push(list, crate, 2, 0)
+    end)
+
+    it("follows a part whose table is replaced or whose vertex count changes", function()
+      local list = { parts.box(0, 0, 10, 10) }
+      local crate = parts.box(40, 2, 8, 6)
+      assert.is_false(collideV(list, crate))
+      -- x from 35 to 45: right by 45 - 40 = 5, left by 48 - 35 = 13, up or down by 8
+      list[1] = parts.box(35, 0, 10, 10)
+      assert_push(list, crate, 5, 0)
+      -- a fifth vertex: the tip (44, 5) reaches into the crate
+      list[1] = parts.box(0, 0, 10, 10)
+      assert.is_false(collideV(list, crate))
+      table.insert(list[1], 5, 44)
+      table.insert(list[1], 6, 5)
+      assert.is_true(parts.collide(list, { crate }))
+      assert.is_true(collide(list, crate))
+      local overlap, dx, dy = collideV(list, crate)
+      assert.is_number(overlap)
+      assert.is_false(parts.collide(list, parts.translate({ crate }, dx, dy)))
+    end)
+
+    it("sees the interior coordinates of a part moved by a tie (extremes kept)", function()
+      -- x = 2 and 3 have even last bits, 2 + 2^-51 an odd one: adding half their ulp (2^-52)
+      -- leaves 2 and 3 (ties round to even) and moves 2 + 2^-51 to 2 + 2^-50. The box is unchanged
+      -- (rounding is monotonic), and the answers are the oracle's for the moved coordinates.
+      local odd = 2 + 2 ^ -51
+      local list = { { 2, 0, 3, 0, 3, 1, odd, 2 } }
+      local crate = { 2.5, 1.5, 4, 1.5, 4, 3, 2.5, 3 }
+      local before = collideV(list, crate)
+      for i = 1, 7, 2 do list[1][i] = list[1][i] + 2 ^ -52 end
+      assert.are.equal(2, list[1][1])
+      assert.are.equal(2 + 2 ^ -50, list[1][7])
+      assert.are.equal(parts.collide(list, { crate }), collide(list, crate))
+      local overlap, dx, dy = collideV(list, crate)
+      assert.are.equal(before ~= false, overlap ~= false)
+      if overlap then assert.is_false(parts.collide(list, parts.translate({ crate }, dx, dy))) end
+    end)
+
+    it("raises the error for a non-finite coordinate written into a prepared part", function()
+      local list = { parts.box(0, 0, 10, 10), parts.box(100, 0, 10, 10) }
+      local crate = parts.box(5, 5, 8, 8)
+      assert.is_number(collideV(list, crate))
+      list[2][3] = 0 / 0   -- far from the crate, but on the part's box (its xmax)
+      for _ = 1, 2 do
+        assert.has_error(function() collideV(list, crate) end,
+          "polygonsCollideV: points1 holds a non-finite coordinate")
+      end
+      list[2][3] = 110
+      assert.is_number(collideV(list, crate))
+      list[1][5] = math.huge   -- near the crate, off the watched coordinates of the box
+      assert.has_error(function() collideV(list, crate) end,
+        "polygonsCollideV: points1 holds a non-finite coordinate")
+      assert.has_error(function() collide(list, crate) end,
+        "polygonsCollide: points1 holds a non-finite coordinate")
+    end)
+  end)
+
   describe("when arguments are bad", function()
     it("names the function, the argument and the part", function()
       local box = parts.box(0, 0, 10, 10)

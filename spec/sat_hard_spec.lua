@@ -351,7 +351,8 @@ describe("a vertex on another polygon's edge line, coordinates on a grid", funct
       local px, py = ax + k * (bx - ax), ay + k * (by - ay)
       if r:int(0, 1) == 1 then px = px + r:int(-3, 3) * scale * 2 ^ -r:int(20, 52) end
       local a = { ax, ay, bx, by, cx, cy }
-      local b = { px, py, px + r:int(-9, 9) * scale, py - 9 * scale, px - 9 * scale, py + r:int(-9, 9) * scale }
+      local b = { px, py, px + r:int(-9, 9) * scale, py - 9 * scale,
+                  px - 9 * scale, py + r:int(-9, 9) * scale }
       if oracle.winding(a) and oracle.winding(b) then
         cases = cases + 1
         local want = oracle.collides(a, b, true)

@@ -41,4 +41,18 @@ function scenes.terrain(g, count)
   return list, x
 end
 
+--- One of the three kinds of scenes the compound measurements mix: kind 1, two clusters (1-5
+-- parts and 1-2); 2, a terrain of 12 columns and a 10 by 10 crate placed in its span; 3, a
+-- terrain of 8 columns and a cluster of 2. Returns the two lists of parts.
+function scenes.pair(g, kind)
+  if kind == 1 then
+    return scenes.cluster(g, g:int(1, 5), 60, 30), scenes.cluster(g, g:int(1, 2), 60, 20)
+  elseif kind == 2 then
+    local terrain, width = scenes.terrain(g, 12)
+    local x, y = g:range(0, width - 10), g:range(10, 80)
+    return terrain, { { x, y, x + 10, y, x + 10, y + 10, x, y + 10 } }
+  end
+  return scenes.terrain(g, 8), scenes.cluster(g, 2, 60, 10)
+end
+
 return scenes
