@@ -10,7 +10,7 @@ local oracle = require "oracle"
 
 local collide, collideV = polygon.polygonsCollide, polygon.polygonsCollideV
 
--- The issue's U = {0,0, 50,0, 50,200, 250,200, 250,0, 300,0, 300,250, 0,250} cut by hand into
+-- The U-shaped floor U = {0,0, 50,0, 50,200, 250,200, 250,0, 300,0, 300,250, 0,250} cut by hand into
 -- two pillars and the floor between them (y down: the floor's top edge is y = 200).
 local U = {
   { 0, 0, 50, 0, 50, 250, 0, 250 },
@@ -37,7 +37,7 @@ end
 
 -- the push separates the shapes (module and oracle agree) and has the expected length and
 -- direction within the margin
-local function assert_push(s1, s2, ex, ey)
+local function assertPush(s1, s2, ex, ey)
   local overlap, dx, dy = collideV(s1, s2)
   assert.is_number(overlap)
   local slack = parts.slack(asList(s1), asList(s2))
@@ -63,9 +63,9 @@ describe("compound shapes", function()
 
     it("pushes the crate straight up by 5 (205 - 200), or the U down by 5", function()
       windings(U, CRATE, function(u, crate)
-        local dx = assert_push(u, crate, 0, -5)
+        local dx = assertPush(u, crate, 0, -5)
         assert.are.equal(0, dx)
-        dx = assert_push(crate, u, 0, 5)
+        dx = assertPush(crate, u, 0, 5)
         assert.are.equal(0, dx)
       end)
     end)
@@ -90,11 +90,11 @@ describe("compound shapes", function()
 
     it("goes out of the corner, not through a wall", function()
       windings(U, crate, function(u, c)
-        assert_push(u, c, 5, -10)
-        assert_push(c, u, -5, 10)
+        assertPush(u, c, 5, -10)
+        assertPush(c, u, -5, 10)
       end)
       windings(U, mirrored, function(u, c)
-        assert_push(u, c, -5, -10)
+        assertPush(u, c, -5, -10)
       end)
     end)
   end)
@@ -120,7 +120,7 @@ describe("compound shapes", function()
       for step = 0, 40 do
         local crate = parts.box(step * 4.75, 95, 8, 8)   -- sunk 3
         windings(floor, crate, function(f, c)
-          assert_push(c, f, 0, 3)
+          assertPush(c, f, 0, 3)
         end)
       end
     end)
@@ -130,8 +130,8 @@ describe("compound shapes", function()
         local x = step * 4.75
         local crate = { parts.box(x, 96, 4, 8), parts.box(x + 4, 96, 4, 8) }   -- sunk 4
         windings(floor, crate, function(f, c)
-          assert_push(f, c, 0, -4)
-          assert_push(c, f, 0, 4)
+          assertPush(f, c, 0, -4)
+          assertPush(c, f, 0, 4)
         end)
       end
     end)
@@ -151,10 +151,10 @@ describe("compound shapes", function()
       for step = 0, 30 do
         local x = 10 + step * 2.5
         windings(layered, parts.box(x, 94, 8, 8), function(l, c)
-          assert_push(l, c, 0, -2)   -- bottom at 102: sunk 2 into the top layer
+          assertPush(l, c, 0, -2)   -- bottom at 102: sunk 2 into the top layer
         end)
         windings(layered, parts.box(x, 119, 8, 8), function(l, c)
-          assert_push(l, c, 0, 1)    -- top at 119: 1 into the bottom layer from below
+          assertPush(l, c, 0, 1)    -- top at 119: 1 into the bottom layer from below
         end)
       end
     end)
@@ -164,8 +164,8 @@ describe("compound shapes", function()
     it("takes a flat polygon for either argument", function()
       local slab = { 0, 100, 200, 100, 200, 130, 0, 130 }
       local crate = { parts.box(50, 96, 4, 8), parts.box(54, 96, 4, 8) }   -- sunk 4
-      assert_push(slab, crate, 0, -4)
-      assert_push(crate, slab, 0, 4)
+      assertPush(slab, crate, 0, -4)
+      assertPush(crate, slab, 0, 4)
     end)
   end)
 
@@ -173,7 +173,7 @@ describe("compound shapes", function()
     it("ignores parts with fewer than 3 points or zero area", function()
       local list = { { 0, 0, 10, 0 }, { 0, 0, 5, 5, 10, 10 }, {}, parts.box(0, 0, 10, 10) }
       assert.is_true(collide(list, parts.box(8, 2, 10, 5)))
-      assert_push(list, parts.box(8, 2, 10, 5), 2, 0)
+      assertPush(list, parts.box(8, 2, 10, 5), 2, 0)
       assert.is_false(collide({ { 0, 0, 10, 0 }, { 0, 0, 5, 5, 10, 10 } }, parts.box(0, 0, 10, 10)))
       assert.is_false(collideV({ { 0, 0, 10, 0 } }, parts.box(0, 0, 10, 10)))
     end)
@@ -185,12 +185,12 @@ describe("compound shapes", function()
     it("follows a floor moved in place by polygonTranslate", function()
       local floor = parts.floor(20, 10, 100, 0)
       local crate = parts.box(50, 95, 8, 8)   -- bottom y = 103: sunk 3
-      assert_push(floor, crate, 0, -3)
+      assertPush(floor, crate, 0, -3)
       polygon.polygonTranslate(floor, 0, 10, floor)   -- top edge now y = 110: 7 below the crate
       assert.is_false(collide(floor, crate))
       assert.is_false(collideV(floor, crate))
       polygon.polygonTranslate(floor, 0, -11, floor)   -- top edge y = 99: sunk 4
-      assert_push(floor, crate, 0, -4)
+      assertPush(floor, crate, 0, -4)
     end)
 
     it("follows one part moved by hand, coordinate by coordinate", function()
@@ -200,7 +200,7 @@ describe("compound shapes", function()
       local far = list[2]
       for i = 1, #far, 2 do far[i] = far[i] - 58 end   -- x from 42 to 52: 48 - 42 = 6 into the crate
       assert.is_true(collide(list, crate))
-      assert_push(list, crate, -6, 0)
+      assertPush(list, crate, -6, 0)
     end)
 
     it("follows a part reshaped with its first vertex kept", function()
@@ -209,7 +209,7 @@ describe("compound shapes", function()
       assert.is_false(collideV(list, crate))
       list[1][3], list[1][5] = 42, 42   -- the right side from x = 10 to 42: 42 - 40 = 2 into it
       assert.is_true(collide(list, crate))
-      assert_push(list, crate, 2, 0)
+      assertPush(list, crate, 2, 0)
     end)
 
     it("follows a part whose table is replaced or whose vertex count changes", function()
@@ -218,7 +218,7 @@ describe("compound shapes", function()
       assert.is_false(collideV(list, crate))
       -- x from 35 to 45: right by 45 - 40 = 5, left by 48 - 35 = 13, up or down by 8
       list[1] = parts.box(35, 0, 10, 10)
-      assert_push(list, crate, 5, 0)
+      assertPush(list, crate, 5, 0)
       -- a fifth vertex: the tip (44, 5) reaches into the crate
       list[1] = parts.box(0, 0, 10, 10)
       assert.is_false(collideV(list, crate))
@@ -294,7 +294,7 @@ describe("compound shapes against circles", function()
   local circleV = polygon.polygonCircleCollideV
 
   -- the circle moved by the push meets no part, by the exact oracle and by the module
-  local function assert_circle_push(list, cx, cy, r, ex, ey)
+  local function assertCirclePush(list, cx, cy, r, ex, ey)
     local overlap, dx, dy = circleV(list, cx, cy, r)
     assert.is_number(overlap)
     local slack = parts.slack(list, { parts.box(cx - r, cy - r, 2 * r, 2 * r) })
@@ -311,7 +311,7 @@ describe("compound shapes against circles", function()
   it("pushes a circle sunk 5 into the U's floor straight up by 5", function()
     -- centre y 190, radius 15: the disc reaches y = 205, the floor's top is y = 200
     for _, u in ipairs({ U, parts.reverse(U) }) do
-      local dx = assert_circle_push(u, 150, 190, 15, 0, -5)
+      local dx = assertCirclePush(u, 150, 190, 15, 0, -5)
       assert.are.equal(0, dx)
     end
   end)
@@ -320,8 +320,8 @@ describe("compound shapes against circles", function()
     -- centre (60, 190), radius 15: 5 into the left pillar (x < 50) and 5 into the floor; out of
     -- the corner the centre goes to (65, 185), 15 from both lines: a move of (5, -5)
     for _, u in ipairs({ U, parts.reverse(U) }) do
-      assert_circle_push(u, 60, 190, 15, 5, -5)
-      assert_circle_push(u, 240, 190, 15, -5, -5)
+      assertCirclePush(u, 60, 190, 15, 5, -5)
+      assertCirclePush(u, 240, 190, 15, -5, -5)
     end
   end)
 
@@ -356,12 +356,12 @@ describe("compound shapes against circles", function()
 end)
 
 describe("compound shapes from polygonConvexParts", function()
-  it("push a crate out of the issue's U by 5, out of its corner by (5, -10)", function()
+  it("push a crate out of the U-shaped floor by 5, out of its corner by (5, -10)", function()
     local u = { 0, 0, 50, 0, 50, 200, 250, 200, 250, 0, 300, 0, 300, 250, 0, 250 }
     local parts1 = assert(polygon.polygonConvexParts(u))
-    assert_push(parts1, CRATE, 0, -5)
-    assert_push(parts1, parts.box(45, 190, 20, 20), 5, -10)
-    assert_push(CRATE, parts1, 0, 5)
+    assertPush(parts1, CRATE, 0, -5)
+    assertPush(parts1, parts.box(45, 190, 20, 20), 5, -10)
+    assertPush(CRATE, parts1, 0, 5)
   end)
 
   it("push a crate straight up along a floor whose parts meet the top at many seams", function()
