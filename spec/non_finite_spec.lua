@@ -1,5 +1,5 @@
 -- What the measures and polygonContains do with a NaN or an infinite value. Finite input never
--- gives NaN (nan_hard_spec.lua); a non-finite coordinate in the points raises an error naming the
+-- gives NaN (non_finite_hard_spec.lua); a non-finite coordinate in the points raises an error naming the
 -- function and the argument, at the caller's line, instead of answering "ccw", "convex", NaN or
 -- an infinite area. (The detection costs nothing on the ordinary path: a non-finite coordinate
 -- always makes the float sums or the turn filter fail, and the rare path that follows checks.)
