@@ -184,36 +184,52 @@ local function exactScale(m)
   return powerScale(m, 2^-64 * EXACT_TOP, EXACT_TOP)
 end
 
--- The exact sign of (u1 - u0) x (v1 - v0): each difference is split into hi + lo exactly, and the
--- sixteen partial products are summed as an expansion.
-local function crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-  local m = abs(ux0 + 0.0)
-  m = max(m, abs(uy0 + 0.0), abs(ux1 + 0.0), abs(uy1 + 0.0))
-  m = max(m, abs(vx0 + 0.0), abs(vy0 + 0.0), abs(vx1 + 0.0), abs(vy1 + 0.0))
-  local s = exactScale(m)
-  local axh, axl = twoDiff(ux1 * s, ux0 * s)
-  local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
-  local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
-  local byh, byl = twoDiff(vy1 * s, vy0 * s)
-  if axl == 0 and ayl == 0 and bxl == 0 and byl == 0 then
-    -- The differences were exact (the common case: nearby coordinates): the determinant is
-    -- ph + pl - qh - ql, two exact products, whose difference Shewchuk's Two-Two-Diff writes as
-    -- four nonoverlapping parts x3 > x2 > x1 > x0 in magnitude, zeros allowed, without a loop
-    -- (the expansion's loops, unrolled into LuaJIT traces, left exits it could not compile).
-    -- Its sign is that of its largest nonzero part.
+-- The exact sign of (u1 - u0) x (v1 - v0), for cross when its filter cannot decide: Shewchuk's
+-- adaptive stages after the filter's. Each difference is split into hi + lo exactly; the
+-- determinant of the his, B = ph + pl - qh - ql (two exact products), is written by his
+-- Two-Two-Diff as four nonoverlapping parts x3 > x2 > x1 > x0 in magnitude (zeros allowed).
+-- When every lo is 0 (nearby coordinates, the usual case) B is the determinant. Otherwise B's
+-- estimate, then the estimate with the los' products added, decide it when they clear his
+-- bounds for those stages; only what remains is summed as an expansion of the sixteen partial
+-- products. The first stages have no loop: the expansion's
+-- loops, recorded into LuaJIT's traces, left exits it could not compile.
+local crossExact
+do
+  local BOUND_B = (2 + 12 * EPS) * EPS             -- Shewchuk's ccwerrboundB
+  local BOUND_C = (9 + 64 * EPS) * EPS * EPS       -- ccwerrboundC
+  local BOUND_RESULT = (3 + 8 * EPS) * EPS         -- resulterrbound
+
+  crossExact = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+    local m = abs(ux0 + 0.0)
+    m = max(m, abs(uy0 + 0.0), abs(ux1 + 0.0), abs(uy1 + 0.0))
+    m = max(m, abs(vx0 + 0.0), abs(vy0 + 0.0), abs(vx1 + 0.0), abs(vy1 + 0.0))
+    local s = exactScale(m)
+    local axh, axl = twoDiff(ux1 * s, ux0 * s)
+    local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
+    local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
+    local byh, byl = twoDiff(vy1 * s, vy0 * s)
     local ph, pl = twoProduct(axh, byh)
     local qh, ql = twoProduct(ayh, bxh)
     local i, x0 = twoDiff(pl, ql)
     local j, k = twoDiff(ph, -i)
     local g, x1 = twoDiff(k, qh)
     local x3, x2 = twoDiff(j, -g)
-    if x3 ~= 0 then return x3 elseif x2 ~= 0 then return x2 elseif x1 ~= 0 then return x1 end
-    return x0
+    -- B's estimate (its parts summed from the smallest) has B's sign (Shewchuk), so it decides
+    -- when the los are all 0; else when it clears stage B's bound. Everything the next stage
+    -- needs is computed first, so that what is carried past a branch is three numbers.
+    local det, detsum = x0 + x1 + x2 + x3, abs(ph) + abs(qh)
+    local los = abs(axl) + abs(ayl) + abs(bxl) + abs(byl)
+    local tails = (axh * byl + byh * axl) - (ayh * bxl + bxh * ayl)
+    if los == 0 or abs(det) >= BOUND_B * detsum then return det end
+    local bound = BOUND_C * detsum + BOUND_RESULT * abs(det)
+    det = det + tails
+    if abs(det) >= bound then return det end
+    expLen = 0
+    expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh)
+    expAddProduct(axl, byl); expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl)
+    expAddProduct(-ayl, bxh); expAddProduct(-ayl, bxl)
+    return expSign()
   end
-  expLen = 0
-  expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
-  expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh); expAddProduct(-ayl, bxl)
-  return expSign()
 end
 
 -- A number with the sign of (u1 - u0) x (v1 - v0), exact for the given doubles: positive when
