@@ -1717,10 +1717,11 @@ local function distinctNeighbour(points, n, i, dir)
   return j
 end
 
--- (b - a) x (c - a) within 2 eps of itself plus 8 eps^2 of the magnitudes of its terms, and
--- |b - a|^2 within 2 eps: the differences split exactly into hi + lo, the main products by
--- TwoProduct, and the first-order terms of the low parts added once (what is dropped, products
--- of two low parts and the roundings of small terms, is of order eps^2).
+-- (b - a) x (c - a) and |b - a|^2, each as an unevaluated sum hi + low of two doubles, within
+-- 8 eps^2 t and 8 eps^2 |b - a|^2 (t = |ex wy| + |ey wx|, the magnitudes of the cross product's
+-- terms, returned last): the differences split exactly into hi + lo, the main products by
+-- TwoProduct, the first-order terms of the low parts added once; what is dropped (products of
+-- two low parts, the roundings of terms already of order eps) is of order eps^2.
 local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
   local exh, exl = twoDiff(bx, ax)
   local eyh, eyl = twoDiff(by, ay)
@@ -1728,31 +1729,40 @@ local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
   local wyh, wyl = twoDiff(cy, ay)
   local p, pLow = twoProduct(exh, wyh)
   local q, qLow = twoProduct(eyh, wxh)
-  local main, mainLow = twoDiff(p, q)
-  local crossed = main + (mainLow + (pLow - qLow) + (exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh))
+  local crossed, crossedLow = twoDiff(p, q)
+  crossedLow = crossedLow + (pLow - qLow) + (exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh)
   local xx, xxLow = twoProduct(exh, exh)
   local yy, yyLow = twoProduct(eyh, eyh)
-  local lengthSq = (xx + yy) + ((xxLow + yyLow) + 2 * (exh * exl + eyh * eyl))
-  return crossed, lengthSq
+  local lengthSq, lengthSqLow = twoDiff(xx, -yy)
+  lengthSqLow = lengthSqLow + (xxLow + yyLow) + 2 * (exh * exl + eyh * eyl)
+  return crossed, crossedLow, lengthSq, lengthSqLow, abs(p) + abs(q)
 end
 
 -- Whether the circle (cx, cy, r) certainly stays beyond the line of the edge a -> b (as
--- clearOfEdge), by a float test alone: false also when rounding cannot tell. It compares
--- outside^2 with r^2 |b - a|^2, outside = (b - a) x (a - c) turned outwards and positive:
--- the first within 5 eps, the second within 4 eps, so 4 eps of their sum bounds the error of
--- the difference (with room for the eps^2 terms).
+-- clearOfEdge), by float arithmetic alone: false also when rounding cannot tell. It compares
+-- outside^2 with r^2 |b - a|^2, outside = (b - a) x (a - c) turned outwards, every product kept
+-- as hi + low: the difference is off by less than 32 eps^2 (outside^2 + r^2 |b - a|^2 + t^2)
+-- (the high parts' difference is exact by Sterbenz's lemma when they are within a factor 2,
+-- and dwarfs the rest otherwise). So the test needs room of order eps^2, not eps: a push that
+-- clears by a rounding of the coordinates passes it. One comparison of a min, not a chain of
+-- them: on LuaJIT each comparison is a guard, and a failing guard grows a side trace.
 local function beyondEdgeFiltered(ax, ay, bx, by, sign, cx, cy, r)
-  local crossed, lengthSq = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
-  local outside = -crossed * sign
-  local outsideSq, reachSq = outside * outside, r * r * lengthSq
-  local bound = 4 * EPS * (outsideSq + reachSq)
-  return outside > 0 and outsideSq - reachSq > bound and bound > FILTER_LO and bound < FILTER_HI
+  local crossed, crossedLow, lengthSq, lengthSqLow, t = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+  local outside, outsideLow = -crossed * sign, -crossedLow * sign
+  local outsideSq, outsideSqLow = twoProduct(outside, outside)
+  local radiusSq, radiusSqLow = twoProduct(r, r)
+  local reachSq, reachSqLow = twoProduct(radiusSq, lengthSq)
+  local gap = (outsideSq - reachSq) + ((outsideSqLow + 2 * outside * outsideLow)
+    - (reachSqLow + (radiusSq * lengthSqLow + radiusSqLow * lengthSq)))
+  local bound = 32 * EPS * EPS * (outsideSq + reachSq + t * t)
+  return min(outside, gap - bound, bound - FILTER_LO, FILTER_HI - bound) > 0
 end
 
 -- Whether the circle (cx, cy, r) certainly lies in the corner region of the vertex b between
--- its neighbours a and q, at distance r or more from b, by float tests alone. Each dot product
--- (m - b).(a - b) is within 3 eps of the sum of its terms' magnitudes; |m - b|^2 is summed
--- from exact squares of the split differences (within 2 eps), r^2 within 1.
+-- its neighbours a and q, at distance r or more from b, by float arithmetic alone. Each dot
+-- product (m - b).(a - b) is within 3 eps of the sum of its terms' magnitudes; |m - b|^2 - r^2
+-- is summed from exact squares of the split differences, off by less than 16 eps^2 of
+-- |m - b|^2 + r^2 (as in beyondEdgeFiltered, room of order eps^2).
 local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
   local wx, wxLow = twoDiff(cx, bx)
   local wy, wyLow = twoDiff(cy, by)
@@ -1760,11 +1770,13 @@ local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
   local t1, t2 = wx * (qx - bx), wy * (qy - by)
   local xx, xxLow = twoProduct(wx, wx)
   local yy, yyLow = twoProduct(wy, wy)
-  local distSq = (xx + yy) + ((xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow))
-  local reachSq = r * r
-  local bound = 4 * EPS * (reachSq + distSq)
-  return s1 + s2 < -4 * EPS * (abs(s1) + abs(s2)) and t1 + t2 < -4 * EPS * (abs(t1) + abs(t2))
-    and distSq - reachSq > bound and bound > FILTER_LO and bound < FILTER_HI
+  local distSq, distSqLow = twoDiff(xx, -yy)
+  local radiusSq, radiusSqLow = twoProduct(r, r)
+  local gap = (distSq - radiusSq)
+    + ((distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)) - radiusSqLow)
+  local bound = 16 * EPS * EPS * (distSq + radiusSq)
+  return min(-(s1 + s2) - 4 * EPS * (abs(s1) + abs(s2)), -(t1 + t2) - 4 * EPS * (abs(t1) + abs(t2)),
+    gap - bound, bound - FILTER_LO, FILTER_HI - bound) > 0
 end
 
 -- One try of circlePush: the push of the given length along (ux, uy), and whether the
@@ -1780,7 +1792,11 @@ local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
       or late and clearOfEdge(ax, ay, bx, by, sign, mx, my, r)
   end
   local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
-  if cornerClearFiltered(ax, ay, bx, by, qx, qy, mx, my, r) then return px, py, true end
+  if cornerClearFiltered(ax, ay, bx, by, qx, qy, mx, my, r)
+      or beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r)
+      or beyondEdgeFiltered(bx, by, qx, qy, sign, mx, my, r) then
+    return px, py, true
+  end
   if not late then return px, py, false end
   -- in the corner region of b, where the distance to the polygon is |m - b|, or beyond an edge
   return px, py, dot(bx, by, mx, my, ax, ay) <= 0 and dot(bx, by, mx, my, qx, qy) <= 0
@@ -1788,10 +1804,20 @@ local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
     or clearOfEdge(ax, ay, bx, by, sign, mx, my, r) or clearOfEdge(bx, by, qx, qy, sign, mx, my, r)
 end
 
+-- The push out of the polygon along the unit (ux, uy), depth + depthLow (to order eps^2) the
+-- penetration along it: the first length tried that the certificate accepts. The first try
+-- adds what rounding can take from the push: cx + px rounds by at most EPS |cx + px| (half an
+-- ulp), which moves the centre along the push by at most EPS (|mx ux| + |my uy|), m the moved
+-- centre; and px, py's own roundings, the rounding of the length and |(ux, uy)| - 1 shorten it
+-- by less than 2 EPS depth. The certificates need room of order eps^2 only, so the first try
+-- clears unless a second edge is within rounding of touching, and the push exceeds the depth
+-- by at most about EPS (|mx ux| + |my uy| + 4 depth): a few ulps of the coordinates involved.
 -- far: whether some magnitude passes 2^240, where the float certificate's squares (degree 4)
 -- overflow and only the exact one tells.
-local function circlePush(points, n, sign, cx, cy, r, depth, ux, uy, e, v, far)
-  local extra = EPS * (abs(cx) + abs(cy) + 4 * r)
+local function circlePush(points, n, sign, cx, cy, r, depth, depthLow, ux, uy, e, v, far)
+  local mx, my = cx + ux * depth, cy + uy * depth
+  -- the last term keeps the extra positive (it doubles below) when the rest is zero
+  local extra = EPS * (abs(mx * ux) + abs(my * uy) + 2 * depth) + EPS * EPS * (abs(cx) + abs(cy) + r)
   -- the edge a -> b, or the vertex b and its neighbours a, q
   local a, b, q = e == 1 and n - 1 or e - 2, e, 0
   if e == 0 then
@@ -1799,13 +1825,16 @@ local function circlePush(points, n, sign, cx, cy, r, depth, ux, uy, e, v, far)
   end
   -- the first try outside the loop: LuaJIT cannot compile a loop entered from the caller's
   -- trace with this many live values ("register coalescing too complex"), and one try is usual
-  local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + extra, far)
+  local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy,
+    depth + (depthLow + extra), far)
   if cleared then return px, py end
-  local exactFrom = far and 0 or 16 * extra
-  for _ = 1, 64 do
-    extra = extra * 2
-    px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + extra,
-      extra >= exactFrom)
+  -- within rounding of touching a second edge or vertex: the exact tests decide from here on,
+  -- the extra growing by half of itself each try (a push at most 1.5 times the needed extra),
+  -- then by 4 (a concave polygon, which the certificate may never accept)
+  for i = 1, 40 do
+    extra = extra * (i <= 8 and 1.5 or 4)
+    px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + (depthLow + extra),
+      true)
     if cleared then return px, py end
   end
   -- only a concave polygon or sizes outside the exact range get here: the longest push tried
@@ -1965,32 +1994,49 @@ function circleCollision(points, n, cx, cy, r)
       edge, vertex = 0, near
     end
   end
-  local ux, uy, distance
+  -- The distance from the centre to the polygon, as distance + distanceLow to order eps^2
+  -- (computed again from the given coordinates, each square root and quotient refined by one
+  -- Newton step on the exact residual), and the unit direction (ux, uy) of the push.
+  local ux, uy, distance, distanceLow
   if vertex > 0 then
-    distance = sqrt(nearSq)
-    ux, uy = -vx / distance, -vy / distance
+    local wx, wxLow = twoDiff(cx, points[near] + 0.0)
+    local wy, wyLow = twoDiff(cy, points[near + 1] + 0.0)
+    local xx, xxLow = twoProduct(wx, wx)
+    local yy, yyLow = twoProduct(wy, wy)
+    local distSq, distSqLow = twoDiff(xx, -yy)
+    distSqLow = distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)
+    distance = sqrt(distSq)
+    local sq, sqLow = twoProduct(distance, distance)
+    distanceLow = ((distSq - sq) - sqLow + distSqLow) / (2 * distance)
+    ux, uy = wx / distance, wy / distance
   else
-    -- The winning edge a -> b: its outward unit normal, and the centre's signed distance from
-    -- its line, computed again from the given coordinates, accurately.
+    -- the winning edge a -> b: its outward unit normal, and the centre's signed distance from
+    -- its line, -((b - a) x (c - a)) / |b - a| turned outwards
     local a = best == 1 and n - 1 or best - 2
     local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
     local bx, by = points[best] + 0.0, points[best + 1] + 0.0
-    local crossed, lengthSq = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+    local crossed, crossedLow, lengthSq, lengthSqLow = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
     local length = sqrt(lengthSq)
+    local sq, sqLow = twoProduct(length, length)
+    local lengthLow = ((lengthSq - sq) - sqLow + lengthSqLow) / (2 * length)
+    local outside, outsideLow = -crossed * sign, -crossedLow * sign
+    distance = outside / length
+    local product, productLow = twoProduct(distance, length)
+    distanceLow = ((outside - product) - productLow + outsideLow - distance * lengthLow) / length
     ux, uy = (by - ay) * sign / length, (ax - bx) * sign / length
-    distance = -crossed * sign / length
   end
-  -- The exact filter: distance is off by at most a few eps times the farthest vertex's distance
-  -- (the coordinates relative to the centre are rounded, then multiplied by edges no longer).
-  local depth = r - distance
+  -- The exact filter: the float depth is off by far less than tol, a few eps times the farthest
+  -- vertex's distance and the radius.
+  local depth, depthLow = twoDiff(r, distance)
+  depthLow = depthLow - distanceLow
   if depth <= tol then
     if depth < -tol then return false end
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
-    if depth < 0 then depth = 0 end
+    if depth + depthLow < 0 then depth, depthLow = 0.0, 0.0 end
   end
-  local px, py = circlePush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex,
+  local px, py = circlePush(points, n, sign, cx, cy, r, depth, depthLow, ux, uy, edge, vertex,
     max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
-  return depth, px, py
+  return depth + depthLow, px, py
 end
 
 --- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
