@@ -1717,6 +1717,8 @@ local function distinctNeighbour(points, n, i, dir)
   return j
 end
 
+local penetration, circlePush
+do   -- the push's helpers are local to this block
 -- (b - a) x (c - a) and |b - a|^2, each as an unevaluated sum hi + low of two doubles, within
 -- 8 eps^2 t and 8 eps^2 |b - a|^2 (t = |ex wy| + |ey wx|, the magnitudes of the cross product's
 -- terms, returned last): the differences split exactly into hi + lo, the main products by
@@ -1731,10 +1733,13 @@ local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
   local q, qLow = twoProduct(eyh, wxh)
   local crossed, crossedLow = twoDiff(p, q)
   crossedLow = crossedLow + (pLow - qLow) + (exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh)
-  local xx, xxLow = twoProduct(exh, exh)
-  local yy, yyLow = twoProduct(eyh, eyh)
-  local lengthSq, lengthSqLow = twoDiff(xx, -yy)
-  lengthSqLow = lengthSqLow + (xxLow + yyLow) + 2 * (exh * exl + eyh * eyl)
+  local lengthSq, lengthSqLow
+  do   -- (scoped: a small frame, see circleCollision)
+    local xx, xxLow = twoProduct(exh, exh)
+    local yy, yyLow = twoProduct(eyh, eyh)
+    lengthSq, lengthSqLow = twoDiff(xx, -yy)
+    lengthSqLow = lengthSqLow + (xxLow + yyLow) + 2 * (exh * exl + eyh * eyl)
+  end
   return crossed, crossedLow, lengthSq, lengthSqLow, abs(p) + abs(q)
 end
 
@@ -1748,14 +1753,19 @@ end
 -- them: on LuaJIT each comparison is a guard, and a failing guard grows a side trace.
 local function beyondEdgeFiltered(ax, ay, bx, by, sign, cx, cy, r)
   local crossed, crossedLow, lengthSq, lengthSqLow, t = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
-  local outside, outsideLow = -crossed * sign, -crossedLow * sign
+  -- (few locals: this is the deepest frame of the push, and on Lua 5.4 a deeper stack means
+  -- one more stack reallocation after each full collection)
+  local outside = -crossed * sign
   local outsideSq, outsideSqLow = twoProduct(outside, outside)
+  outsideSqLow = outsideSqLow - 2 * outside * crossedLow * sign
   local radiusSq, radiusSqLow = twoProduct(r, r)
   local reachSq, reachSqLow = twoProduct(radiusSq, lengthSq)
-  local gap = (outsideSq - reachSq) + ((outsideSqLow + 2 * outside * outsideLow)
-    - (reachSqLow + (radiusSq * lengthSqLow + radiusSqLow * lengthSq)))
-  local bound = 32 * EPS * EPS * (outsideSq + reachSq + t * t)
-  return min(outside, gap - bound, bound - FILTER_LO, FILTER_HI - bound) > 0
+  reachSqLow = reachSqLow + (radiusSq * lengthSqLow + radiusSqLow * lengthSq)
+  -- gap - bound: the gap outside^2 - r^2 |b - a|^2 less its error bound
+  t = (outsideSq - reachSq) + (outsideSqLow - reachSqLow)
+    - 32 * EPS * EPS * (outsideSq + reachSq + t * t)
+  local bound = 32 * EPS * EPS * (outsideSq + reachSq)
+  return min(outside, t, bound - FILTER_LO, FILTER_HI - bound) > 0
 end
 
 -- Whether the circle (cx, cy, r) certainly lies in the corner region of the vertex b between
@@ -1779,12 +1789,19 @@ local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
     gap - bound, bound - FILTER_LO, FILTER_HI - bound) > 0
 end
 
--- One try of circlePush: the push of the given length along (ux, uy), and whether the
+-- One try of circlePush: the push of length depth + lengthLow along (ux, uy), and whether the
 -- certificate holds for it; `late`: consult the exact tests where the float ones cannot tell.
 -- For the edge a -> b (q == 0), or the vertex b between its distinct neighbours a and q (all
 -- indices into points, read here rather than held, which keeps few numbers live for LuaJIT).
-local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
-  local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
+local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLow, late)
+  -- (ux, uy) (depth + lengthLow), each coordinate rounded once: + 0.0 turns -0 into 0
+  local px, py
+  do   -- (scoped: a small frame, see circleCollision)
+    local hi, low = twoProduct(ux, depth)
+    px = hi + (low + ux * lengthLow) + 0.0
+    hi, low = twoProduct(uy, depth)
+    py = hi + (low + uy * lengthLow) + 0.0
+  end
   local mx, my = cx + px, cy + py
   local ax, ay, bx, by = points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0, points[b + 1] + 0.0
   if q == 0 then
@@ -1804,20 +1821,26 @@ local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
     or clearOfEdge(ax, ay, bx, by, sign, mx, my, r) or clearOfEdge(bx, by, qx, qy, sign, mx, my, r)
 end
 
--- The push out of the polygon along the unit (ux, uy), depth + depthLow (to order eps^2) the
--- penetration along it: the first length tried that the certificate accepts. The first try
--- adds what rounding can take from the push: cx + px rounds by at most EPS |cx + px| (half an
--- ulp), which moves the centre along the push by at most EPS (|mx ux| + |my uy|), m the moved
--- centre; and px, py's own roundings, the rounding of the length and |(ux, uy)| - 1 shorten it
--- by less than 2 EPS depth. The certificates need room of order eps^2 only, so the first try
--- clears unless a second edge is within rounding of touching, and the push exceeds the depth
--- by at most about EPS (|mx ux| + |my uy| + 4 depth): a few ulps of the coordinates involved.
+-- The push out of the polygon along (ux, uy), a unit vector to rounding, depth + lengthLow (to
+-- order eps^2) the length that moves the centre by the penetration (see penetration): the
+-- first length tried that the certificate accepts. That length is lengthened by what rounding
+-- can take from the push (EPS = 2^-53 bounds the relative error of one rounding): cx + px
+-- rounds by at most EPS |cx + px|, which moves the centre along the push by at most
+-- EPS (|mx ux| + |my uy|), m the moved centre; px and py, each rounded once (tryPush), by at
+-- most EPS depth along it. The certificates need room of order eps^2 only, so that first push
+-- clears unless a second edge is within rounding of touching (then the exact tests accept the
+-- same push), and its length exceeds the depth by at most EPS (|mx ux| + |my uy| + 2 depth)
+-- and terms of order eps^2: with M the largest coordinate magnitude, the moved centre's
+-- included, |m| <= sqrt(2) M and depth <= |m| + |c| <= 2 sqrt(2) M, so at most 7.1 eps M.
 -- far: whether some magnitude passes 2^240, where the float certificate's squares (degree 4)
 -- overflow and only the exact one tells.
-local function circlePush(points, n, sign, cx, cy, r, depth, depthLow, ux, uy, e, v, far)
-  local mx, my = cx + ux * depth, cy + uy * depth
-  -- the last term keeps the extra positive (it doubles below) when the rest is zero
-  local extra = EPS * (abs(mx * ux) + abs(my * uy) + 2 * depth) + EPS * EPS * (abs(cx) + abs(cy) + r)
+function circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, e, v, far)
+  -- EPS (|mx ux| + |my uy| + depth), m = c + depth u; the EPS^2 term keeps the extra positive
+  -- (it grows below) when the rest is zero; 1 + 2^-20 covers the roundings of the bound itself
+  local extra = (1 + 2^-20) * EPS
+    * (abs((cx + ux * depth) * ux) + abs((cy + uy * depth) * uy) + depth)
+    + EPS * EPS * (abs(cx) + abs(cy) + r)
+  lengthLow = lengthLow + extra
   -- the edge a -> b, or the vertex b and its neighbours a, q
   local a, b, q = e == 1 and n - 1 or e - 2, e, 0
   if e == 0 then
@@ -1825,20 +1848,68 @@ local function circlePush(points, n, sign, cx, cy, r, depth, depthLow, ux, uy, e
   end
   -- the first try outside the loop: LuaJIT cannot compile a loop entered from the caller's
   -- trace with this many live values ("register coalescing too complex"), and one try is usual
-  local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy,
-    depth + (depthLow + extra), far)
+  local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLow, far)
   if cleared then return px, py end
   -- within rounding of touching a second edge or vertex: the exact tests decide from here on,
-  -- the extra growing by half of itself each try (a push at most 1.5 times the needed extra),
-  -- then by 4 (a concave polygon, which the certificate may never accept)
+  -- first for the same push, then with the extra growing by a quarter of itself each try, then
+  -- by 4 (a concave polygon, which the certificate may never accept)
   for i = 1, 40 do
-    extra = extra * (i <= 8 and 1.5 or 4)
-    px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + (depthLow + extra),
-      true)
+    px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLow, true)
     if cleared then return px, py end
+    local more = extra * (i <= 8 and 0.25 or 3)
+    extra, lengthLow = extra + more, lengthLow + more
   end
   -- only a concave polygon or sizes outside the exact range get here: the longest push tried
   return px, py
+end
+
+-- The penetration of the circle (cx, cy, r) along the push out of the polygon: depth + depthLow,
+-- r less the distance from the centre to the polygon to order eps^2, the push's unit
+-- direction (ux, uy), to rounding, and lengthLow (see below). From the vertex v (index) when
+-- the centre lies in its corner region, else from the edge ending at index e. The distance is
+-- computed again from the given coordinates, each square root and quotient refined by one
+-- Newton step on the exact residual.
+-- (Apart from circleCollision, so that its frame stays small: on Lua 5.4 a larger frame makes
+-- the stack grow again, allocating, after every full collection.)
+function penetration(points, n, sign, cx, cy, r, e, v)
+  local ux, uy, distance, distanceLow
+  if v > 0 then
+    local wx, wxLow = twoDiff(cx, points[v] + 0.0)
+    local wy, wyLow = twoDiff(cy, points[v + 1] + 0.0)
+    local xx, xxLow = twoProduct(wx, wx)
+    local yy, yyLow = twoProduct(wy, wy)
+    local distSq, distSqLow = twoDiff(xx, -yy)
+    distSqLow = distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)
+    distance = sqrt(distSq)
+    local sq, sqLow = twoProduct(distance, distance)
+    distanceLow = ((distSq - sq) - sqLow + distSqLow) / (2 * distance)
+    ux, uy = wx / distance, wy / distance
+  else
+    -- the edge a -> b: its outward unit normal, and the centre's signed distance from its
+    -- line, -((b - a) x (c - a)) / |b - a| turned outwards
+    local a = e == 1 and n - 1 or e - 2
+    local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
+    local bx, by = points[e] + 0.0, points[e + 1] + 0.0
+    local crossed, crossedLow, lengthSq, lengthSqLow = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+    local length = sqrt(lengthSq)
+    local sq, sqLow = twoProduct(length, length)
+    local lengthLow = ((lengthSq - sq) - sqLow + lengthSqLow) / (2 * length)
+    local outside, outsideLow = -crossed * sign, -crossedLow * sign
+    distance = outside / length
+    local product, productLow = twoProduct(distance, length)
+    distanceLow = ((outside - product) - productLow + outsideLow - distance * lengthLow) / length
+    ux, uy = (by - ay) * sign / length, (ax - bx) * sign / length
+  end
+  local depth, depthLow = twoDiff(r, distance)
+  depthLow = depthLow - distanceLow
+  -- the push's length, depth + lengthLow, corrects for |(ux, uy)| - 1, which is known to order
+  -- eps^2 (the squares' high parts sum to within an ulp of 1, so less 1 is exact: Sterbenz)
+  local xx, xxLow = twoProduct(ux, ux)
+  local yy, yyLow = twoProduct(uy, uy)
+  local normSq, normSqLow = twoDiff(xx, -yy)
+  local normError = (normSq - 1) + (normSqLow + (xxLow + yyLow))
+  return depth, depthLow, ux, uy, depthLow - depth * normError * 0.5
+end
 end
 
 -- The edge walk, in coordinates relative to the centre (c): the nearest vertex, its squared
@@ -1965,14 +2036,19 @@ end
 --   the nearest-vertex axis: whether the centre is in that vertex's corner region,
 --   the exact filter: within rounding of touching, discMeetsExact decides.
 function circleCollision(points, n, cx, cy, r)
-  local area, sumX2, sumD2 = shoelace(points, n)
-  if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
-    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
-    return overlap, px, py
+  -- (the do-blocks here keep the frame small: on Lua 5.4 a larger one can make the stack grow
+  -- again, allocating, after every full collection)
+  local sign   -- 1 or -1: makes the signed distances positive outside
+  do
+    local area, sumX2, sumD2 = shoelace(points, n)
+    if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
+      local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+      return overlap, px, py
+    end
+    local turn = areaSignOf(points, n, area, sumX2, sumD2)
+    if turn == 0 then return false end
+    sign = turn > 0 and 1.0 or -1.0
   end
-  local turn = areaSignOf(points, n, area, sumX2, sumD2)
-  if turn == 0 then return false end
-  local sign = turn > 0 and 1.0 or -1.0   -- makes the signed distances positive outside
   local near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, sign, r)
   if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
   -- luacheck: ignore 581 (NaN too)
@@ -1980,13 +2056,12 @@ function circleCollision(points, n, cx, cy, r)
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
     return overlap, px, py
   end
-  local tol = 16 * EPS * (sqrt(farSq) + r)   -- see the exact filter below
   -- The nearest-vertex axis: the centre is in the corner region of the nearest vertex v when
   -- it lies behind neither edge meeting there, (c - v).(p - v) <= 0 for both distinct
   -- neighbours p; then the distance to the polygon is |c - v|, and the push goes along c - v.
   local edge, vertex = best, 0
-  local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
   if nearSq > 0 then
+    local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
     local p = distinctNeighbour(points, n, near, -2)
     local q = distinctNeighbour(points, n, near, 2)
     if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
@@ -1994,47 +2069,16 @@ function circleCollision(points, n, cx, cy, r)
       edge, vertex = 0, near
     end
   end
-  -- The distance from the centre to the polygon, as distance + distanceLow to order eps^2
-  -- (computed again from the given coordinates, each square root and quotient refined by one
-  -- Newton step on the exact residual), and the unit direction (ux, uy) of the push.
-  local ux, uy, distance, distanceLow
-  if vertex > 0 then
-    local wx, wxLow = twoDiff(cx, points[near] + 0.0)
-    local wy, wyLow = twoDiff(cy, points[near + 1] + 0.0)
-    local xx, xxLow = twoProduct(wx, wx)
-    local yy, yyLow = twoProduct(wy, wy)
-    local distSq, distSqLow = twoDiff(xx, -yy)
-    distSqLow = distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)
-    distance = sqrt(distSq)
-    local sq, sqLow = twoProduct(distance, distance)
-    distanceLow = ((distSq - sq) - sqLow + distSqLow) / (2 * distance)
-    ux, uy = wx / distance, wy / distance
-  else
-    -- the winning edge a -> b: its outward unit normal, and the centre's signed distance from
-    -- its line, -((b - a) x (c - a)) / |b - a| turned outwards
-    local a = best == 1 and n - 1 or best - 2
-    local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
-    local bx, by = points[best] + 0.0, points[best + 1] + 0.0
-    local crossed, crossedLow, lengthSq, lengthSqLow = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
-    local length = sqrt(lengthSq)
-    local sq, sqLow = twoProduct(length, length)
-    local lengthLow = ((lengthSq - sq) - sqLow + lengthSqLow) / (2 * length)
-    local outside, outsideLow = -crossed * sign, -crossedLow * sign
-    distance = outside / length
-    local product, productLow = twoProduct(distance, length)
-    distanceLow = ((outside - product) - productLow + outsideLow - distance * lengthLow) / length
-    ux, uy = (by - ay) * sign / length, (ax - bx) * sign / length
-  end
+  local depth, depthLow, ux, uy, lengthLow = penetration(points, n, sign, cx, cy, r, edge, vertex)
   -- The exact filter: the float depth is off by far less than tol, a few eps times the farthest
   -- vertex's distance and the radius.
-  local depth, depthLow = twoDiff(r, distance)
-  depthLow = depthLow - distanceLow
+  local tol = 16 * EPS * (sqrt(farSq) + r)
   if depth <= tol then
     if depth < -tol then return false end
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
-    if depth + depthLow < 0 then depth, depthLow = 0.0, 0.0 end
+    if depth + depthLow < 0 then depth, depthLow, lengthLow = 0.0, 0.0, 0.0 end
   end
-  local px, py = circlePush(points, n, sign, cx, cy, r, depth, depthLow, ux, uy, edge, vertex,
+  local px, py = circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, edge, vertex,
     max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
   return depth + depthLow, px, py
 end
