@@ -1506,6 +1506,14 @@ end
 -- the largest keeps every bit above the underflow threshold through four multiplications.
 local SCALE_LO, SCALE_HI = 2^186, 2^250
 
+-- The power of two for the exact tests: 2^200 for every m in [2^-14, 2^50], the sizes games
+-- use, without powerScale's loops (on LuaJIT a loop inside a function that a trace starts in
+-- aborts it: "inner loop in root trace").
+local function exactTestScale(m)
+  if m >= 2^-14 and m <= 2^50 then return 2^200 end
+  return powerScale(m, SCALE_LO, SCALE_HI)
+end
+
 -- The float filters below trust a result only inside [2^-900, 2^1000]: there no square or
 -- product of theirs has overflowed or lost bits to underflow.
 local FILTER_LO, FILTER_HI = 2^-900, 2^1000
@@ -1515,7 +1523,7 @@ local FILTER_LO, FILTER_HI = 2^-900, 2^1000
 local function reachesExact(x1, y1, x2, y2, rh, rl)
   local dxh, dxl = twoDiff(x2, x1)
   local dyh, dyl = twoDiff(y2, y1)
-  local s = powerScale(max(abs(dxh), abs(dyh), abs(rh)), SCALE_LO, SCALE_HI)
+  local s = exactTestScale(max(abs(dxh), abs(dyh), abs(rh)))
   expLen = 0
   expAddSquare(rh * s, rl * s, 1)
   expAddSquare(dxh * s, dxl * s, -1)
@@ -1553,7 +1561,7 @@ local function lineWithinExact(ax, ay, bx, by, cx, cy, r)
   local eyh, eyl = twoDiff(by, ay)
   local wxh, wxl = twoDiff(cx, ax)
   local wyh, wyl = twoDiff(cy, ay)
-  local s = powerScale(max(abs(exh), abs(eyh), abs(wxh), abs(wyh), r), SCALE_LO, SCALE_HI)
+  local s = exactTestScale(max(abs(exh), abs(eyh), abs(wxh), abs(wyh), r))
   exh, exl, eyh, eyl = exh * s, exl * s, eyh * s, eyl * s
   wxh, wxl, wyh, wyl = wxh * s, wxl * s, wyh * s, wyl * s
   expLen = 0
@@ -1705,13 +1713,11 @@ end
 -- the n coordinates; i itself when every vertex is the same point.
 local function distinctNeighbour(points, n, i, dir)
   local x, y = points[i] + 0.0, points[i + 1] + 0.0
-  local j = i + dir
-  if j > n then j = 1 elseif j < 1 then j = n - 1 end
+  local j = (i + dir - 1) % n + 1   -- wraps around without a branch: 1 after n - 1, n - 1 before 1
   -- the usual case without a loop, which LuaJIT would fail to compile inside the caller's trace
   if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
   for _ = 2, n / 2 - 1 do
-    j = j + dir
-    if j > n then j = 1 elseif j < 1 then j = n - 1 end
+    j = (j + dir - 1) % n + 1
     if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
   end
   return j
@@ -1917,14 +1923,30 @@ end
 -- whose line lies farthest behind the centre, with sign making distances positive outside.
 -- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
 -- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
--- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
+-- As in projectRange, LuaJIT gets loops without data-dependent branches: each such branch
 -- becomes a side trace, and the rest of the function is compiled again behind every one of
 -- them (measured: about 10 times slower). Its first pass keeps only the extremes with min and
--- max; a second finds their indices, recomputing the same numbers bit for bit, and stops at
--- the first match (a branch that almost never changes). The PUC interpreters call min and
--- max as functions, so for them one branchy pass is faster.
+-- max; a second finds their indices, recomputing the same numbers bit for bit, again with min
+-- alone: an index whose number matches the extreme keeps its value, any other is lifted past
+-- n, so the least key is the first match. (A loop that stopped at the first match left its
+-- trace early, which LuaJIT aborts and retries: "leaving loop in root trace".) The PUC
+-- interpreters call min and max as functions, so for them one branchy pass is faster.
 local edgeWalk
 if rawget(_G, "jit") then
+  -- min(x * LIFT * LIFT, 1) is 1 when x > 0 and 0 when x == 0, for x >= 0, without a branch:
+  -- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
+  -- function called per vertex it started traces of its own, which LuaJIT aborted.)
+  local LIFT = 2^537
+  -- an edge's key, outside |outside| / |b - a|^2; a repeated vertex (|b - a|^2 == 0, so
+  -- outside == 0 too) gets -2^1000 instead, below every real edge's key in the range where
+  -- the walk's answer is used (farSq < 2^1000)
+  local function edgeKey(ax, ay, bx, by, sign)
+    local ex, ey = bx - ax, by - ay
+    local lengthSq = ex * ex + ey * ey
+    local outside = (ex * ay - ey * ax) * sign
+    return outside * (abs(outside) / max(lengthSq, 2^-1074))
+      - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
+  end
   edgeWalk = function(points, n, cx, cy, sign)
     local nearSq, farSq, bestKey = huge, 0.0, -huge
     local ax, ay = points[n - 1] - cx, points[n] - cy
@@ -1932,28 +1954,24 @@ if rawget(_G, "jit") then
       local bx, by = points[i] - cx, points[i + 1] - cy
       local distSq = bx * bx + by * by
       nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
-      local ex, ey = bx - ax, by - ay
-      local lengthSq = ex * ex + ey * ey
-      if lengthSq > 0 then   -- a repeated vertex gives no edge (a branch almost never taken)
-        local outside = (ex * ay - ey * ax) * sign
-        bestKey = max(bestKey, outside * (abs(outside) / lengthSq))
-      end
+      bestKey = max(bestKey, edgeKey(ax, ay, bx, by, sign))
       ax, ay = bx, by
     end
-    local near, best = 1, 0
-    for i = 1, n - 1, 2 do
-      local bx, by = points[i] - cx, points[i + 1] - cy
-      if bx * bx + by * by == nearSq then near = i; break end
-    end
+    local lift = 2 * n   -- lifts a key past every index
+    local near, best = lift, lift
     ax, ay = points[n - 1] - cx, points[n] - cy
     for i = 1, n - 1, 2 do
       local bx, by = points[i] - cx, points[i + 1] - cy
-      local ex, ey = bx - ax, by - ay
-      local lengthSq = ex * ex + ey * ey
-      local outside = (ex * ay - ey * ax) * sign
-      if lengthSq > 0 and outside * (abs(outside) / lengthSq) == bestKey then best = i; break end
+      near = min(near, i + lift * min((bx * bx + by * by - nearSq) * LIFT * LIFT, 1))
+      best = min(best, i + lift * min((bestKey - edgeKey(ax, ay, bx, by, sign)) * LIFT * LIFT, 1))
       ax, ay = bx, by
     end
+    -- no match only after an overflow (NaN or infinite numbers): 0 sends the caller to its
+    -- scaled path (not (x <= n) is true for NaN too)
+    -- luacheck: push ignore 581
+    if not (near <= n) then near = 1 end
+    if not (best <= n) then best = 0 end
+    -- luacheck: pop
     return near, nearSq, farSq, best
   end
 else
