@@ -2107,8 +2107,9 @@ end
 -- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
 -- is the full penetration (r minus the signed distance from the centre to the polygon), so a
 -- circle deep inside is pushed out in one step, and the push separates for certain: after
--- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than overlap by
--- a few ulps of the coordinates at most.
+-- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than the exact
+-- depth by at most 8 eps M, eps = 2^-53 and M the largest coordinate magnitude involved (the
+-- polygon's, the centre's and the moved centre's; see circlePush for the bound, 7.1 eps M).
 -- @return overlap, dx, dy (move the circle by dx, dy) or false
 function polygon.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"
