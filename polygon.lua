@@ -1725,6 +1725,15 @@ end
 
 local penetration, circlePush
 do   -- the push's helpers are local to this block
+-- a * a as hi + lo exactly: twoProduct with one split instead of two (the push squares often)
+local function twoSquare(a)
+  local x = a * a
+  local c = SPLITTER * a
+  local ahi = c - (c - a)
+  local alo = a - ahi
+  return x, alo * alo - ((x - ahi * ahi) - 2 * ahi * alo)
+end
+
 -- (b - a) x (c - a) and |b - a|^2, each as an unevaluated sum hi + low of two doubles, within
 -- 8 eps^2 t and 8 eps^2 |b - a|^2 (t = |ex wy| + |ey wx|, the magnitudes of the cross product's
 -- terms, returned last): the differences split exactly into hi + lo, the main products by
@@ -1741,8 +1750,8 @@ local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
   crossedLow = crossedLow + (pLow - qLow) + (exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh)
   local lengthSq, lengthSqLow
   do   -- (scoped: a small frame, see circleCollision)
-    local xx, xxLow = twoProduct(exh, exh)
-    local yy, yyLow = twoProduct(eyh, eyh)
+    local xx, xxLow = twoSquare(exh)
+    local yy, yyLow = twoSquare(eyh)
     lengthSq, lengthSqLow = twoDiff(xx, -yy)
     lengthSqLow = lengthSqLow + (xxLow + yyLow) + 2 * (exh * exl + eyh * eyl)
   end
@@ -1762,9 +1771,9 @@ local function beyondEdgeFiltered(ax, ay, bx, by, sign, cx, cy, r)
   -- (few locals: this is the deepest frame of the push, and on Lua 5.4 a deeper stack means
   -- one more stack reallocation after each full collection)
   local outside = -crossed * sign
-  local outsideSq, outsideSqLow = twoProduct(outside, outside)
+  local outsideSq, outsideSqLow = twoSquare(outside)
   outsideSqLow = outsideSqLow - 2 * outside * crossedLow * sign
-  local radiusSq, radiusSqLow = twoProduct(r, r)
+  local radiusSq, radiusSqLow = twoSquare(r)
   local reachSq, reachSqLow = twoProduct(radiusSq, lengthSq)
   reachSqLow = reachSqLow + (radiusSq * lengthSqLow + radiusSqLow * lengthSq)
   -- gap - bound: the gap outside^2 - r^2 |b - a|^2 less its error bound
@@ -1784,10 +1793,10 @@ local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
   local wy, wyLow = twoDiff(cy, by)
   local s1, s2 = wx * (ax - bx), wy * (ay - by)
   local t1, t2 = wx * (qx - bx), wy * (qy - by)
-  local xx, xxLow = twoProduct(wx, wx)
-  local yy, yyLow = twoProduct(wy, wy)
+  local xx, xxLow = twoSquare(wx)
+  local yy, yyLow = twoSquare(wy)
   local distSq, distSqLow = twoDiff(xx, -yy)
-  local radiusSq, radiusSqLow = twoProduct(r, r)
+  local radiusSq, radiusSqLow = twoSquare(r)
   local gap = (distSq - radiusSq)
     + ((distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)) - radiusSqLow)
   local bound = 16 * EPS * EPS * (distSq + radiusSq)
@@ -1882,12 +1891,12 @@ function penetration(points, n, sign, cx, cy, r, e, v)
   if v > 0 then
     local wx, wxLow = twoDiff(cx, points[v] + 0.0)
     local wy, wyLow = twoDiff(cy, points[v + 1] + 0.0)
-    local xx, xxLow = twoProduct(wx, wx)
-    local yy, yyLow = twoProduct(wy, wy)
+    local xx, xxLow = twoSquare(wx)
+    local yy, yyLow = twoSquare(wy)
     local distSq, distSqLow = twoDiff(xx, -yy)
     distSqLow = distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)
     distance = sqrt(distSq)
-    local sq, sqLow = twoProduct(distance, distance)
+    local sq, sqLow = twoSquare(distance)
     distanceLow = ((distSq - sq) - sqLow + distSqLow) / (2 * distance)
     ux, uy = wx / distance, wy / distance
   else
@@ -1898,7 +1907,7 @@ function penetration(points, n, sign, cx, cy, r, e, v)
     local bx, by = points[e] + 0.0, points[e + 1] + 0.0
     local crossed, crossedLow, lengthSq, lengthSqLow = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
     local length = sqrt(lengthSq)
-    local sq, sqLow = twoProduct(length, length)
+    local sq, sqLow = twoSquare(length)
     local lengthLow = ((lengthSq - sq) - sqLow + lengthSqLow) / (2 * length)
     local outside, outsideLow = -crossed * sign, -crossedLow * sign
     distance = outside / length
@@ -1910,8 +1919,8 @@ function penetration(points, n, sign, cx, cy, r, e, v)
   depthLow = depthLow - distanceLow
   -- the push's length, depth + lengthLow, corrects for |(ux, uy)| - 1, which is known to order
   -- eps^2 (the squares' high parts sum to within an ulp of 1, so less 1 is exact: Sterbenz)
-  local xx, xxLow = twoProduct(ux, ux)
-  local yy, yyLow = twoProduct(uy, uy)
+  local xx, xxLow = twoSquare(ux)
+  local yy, yyLow = twoSquare(uy)
   local normSq, normSqLow = twoDiff(xx, -yy)
   local normError = (normSq - 1) + (normSqLow + (xxLow + yyLow))
   return depth, depthLow, ux, uy, depthLow - depth * normError * 0.5
