@@ -733,4 +733,14 @@ function oracle.lengthAbove(dx, dy)
   return q
 end
 
+--- Whether the exact depth of two circles, r1 + r2 - |c2 - c1|, is at least a - b, for doubles
+-- a and b, decided exactly: with s = r1 + r2 - (a - b), it asks s >= 0 and |c2 - c1|^2 <= s^2.
+function oracle.circlesDepthAtLeast(x1, y1, r1, x2, y2, r2, a, b)
+  local s = sub(add(new(r1), new(r2)), sub(new(a), new(b)))
+  if sign(s) < 0 then
+    return false
+  end
+  return exact.compare(distanceSquared(new(x2), new(y2), new(x1), new(y1)), mul(s, s)) <= 0
+end
+
 return oracle
