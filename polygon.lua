@@ -2098,10 +2098,14 @@ function circleCollision(points, n, cx, cy, r)
   end
   local depth, depthLow, ux, uy, lengthLow = penetration(points, n, sign, cx, cy, r, edge, vertex)
   -- The exact filter: the float depth is off by far less than tol, a few eps times the farthest
-  -- vertex's distance and the radius.
+  -- vertex's distance and the radius. Apart needs less room from an edge: a circle beyond an
+  -- edge's line by more than r misses the convex polygon whichever feature is nearest, and
+  -- depth + depthLow measures that to order eps^2 (within 32 eps^2 (|c - a| + r)). So a circle
+  -- that a push left touching by a few ulps is decided apart here, not by discMeetsExact.
   local tol = 16 * EPS * (sqrt(farSq) + r)
   if depth <= tol then
     if depth < -tol then return false end
+    if vertex == 0 and depth + depthLow < -32 * EPS * EPS * (sqrt(farSq) + r) then return false end
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
     if depth + depthLow < 0 then depth, depthLow, lengthLow = 0.0, 0.0, 0.0 end
   end
