@@ -1776,11 +1776,11 @@ local function beyondEdgeFiltered(ax, ay, bx, by, sign, cx, cy, r)
   local radiusSq, radiusSqLow = twoSquare(r)
   local reachSq, reachSqLow = twoProduct(radiusSq, lengthSq)
   reachSqLow = reachSqLow + (radiusSq * lengthSqLow + radiusSqLow * lengthSq)
-  -- gap - bound: the gap outside^2 - r^2 |b - a|^2 less its error bound
-  t = (outsideSq - reachSq) + (outsideSqLow - reachSqLow)
+  -- the gap outside^2 - r^2 |b - a|^2 less its error bound
+  local clearance = (outsideSq - reachSq) + (outsideSqLow - reachSqLow)
     - 32 * EPS * EPS * (outsideSq + reachSq + t * t)
   local bound = 32 * EPS * EPS * (outsideSq + reachSq)
-  return min(outside, t, bound - FILTER_LO, FILTER_HI - bound) > 0
+  return min(outside, clearance, bound - FILTER_LO, FILTER_HI - bound) > 0
 end
 
 -- Whether the circle (cx, cy, r) certainly lies in the corner region of the vertex b between
