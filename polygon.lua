@@ -1656,6 +1656,14 @@ end
 -- the largest keeps every bit above the underflow threshold through four multiplications.
 local SCALE_LO, SCALE_HI = 2^186, 2^250
 
+-- The power of two for the exact tests: 2^200 for every m in [2^-14, 2^50], the sizes games
+-- use, without powerScale's loops (on LuaJIT a loop inside a function that a trace starts in
+-- aborts it: "inner loop in root trace").
+local function exactTestScale(m)
+  if m >= 2^-14 and m <= 2^50 then return 2^200 end
+  return powerScale(m, SCALE_LO, SCALE_HI)
+end
+
 -- The float filters below trust a result only inside [2^-900, 2^1000]: there no square or
 -- product of theirs has overflowed or lost bits to underflow.
 local FILTER_LO, FILTER_HI = 2^-900, 2^1000
@@ -1665,7 +1673,7 @@ local FILTER_LO, FILTER_HI = 2^-900, 2^1000
 local function reachesExact(x1, y1, x2, y2, rh, rl)
   local dxh, dxl = twoDiff(x2, x1)
   local dyh, dyl = twoDiff(y2, y1)
-  local s = powerScale(max(abs(dxh), abs(dyh), abs(rh)), SCALE_LO, SCALE_HI)
+  local s = exactTestScale(max(abs(dxh), abs(dyh), abs(rh)))
   expLen = 0
   expAddSquare(rh * s, rl * s, 1)
   expAddSquare(dxh * s, dxl * s, -1)
@@ -1703,7 +1711,7 @@ local function lineWithinExact(ax, ay, bx, by, cx, cy, r)
   local eyh, eyl = twoDiff(by, ay)
   local wxh, wxl = twoDiff(cx, ax)
   local wyh, wyl = twoDiff(cy, ay)
-  local s = powerScale(max(abs(exh), abs(eyh), abs(wxh), abs(wyh), r), SCALE_LO, SCALE_HI)
+  local s = exactTestScale(max(abs(exh), abs(eyh), abs(wxh), abs(wyh), r))
   exh, exl, eyh, eyl = exh * s, exl * s, eyh * s, eyl * s
   wxh, wxl, wyh, wyl = wxh * s, wxl * s, wyh * s, wyl * s
   expLen = 0
@@ -1855,22 +1863,32 @@ end
 -- the n coordinates; i itself when every vertex is the same point.
 local function distinctNeighbour(points, n, i, dir)
   local x, y = points[i] + 0.0, points[i + 1] + 0.0
-  local j = i + dir
-  if j > n then j = 1 elseif j < 1 then j = n - 1 end
+  local j = (i + dir - 1) % n + 1   -- wraps around without a branch: 1 after n - 1, n - 1 before 1
   -- the usual case without a loop, which LuaJIT would fail to compile inside the caller's trace
   if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
   for _ = 2, n / 2 - 1 do
-    j = j + dir
-    if j > n then j = 1 elseif j < 1 then j = n - 1 end
+    j = (j + dir - 1) % n + 1
     if points[j] + 0.0 ~= x or points[j + 1] + 0.0 ~= y then return j end
   end
   return j
 end
 
--- (b - a) x (c - a) within 2 eps of itself plus 8 eps^2 of the magnitudes of its terms, and
--- |b - a|^2 within 2 eps: the differences split exactly into hi + lo, the main products by
--- TwoProduct, and the first-order terms of the low parts added once (what is dropped, products
--- of two low parts and the roundings of small terms, is of order eps^2).
+local penetration, circlePush
+do   -- the push's helpers are local to this block
+-- a * a as hi + lo exactly: twoProduct with one split instead of two (the push squares often)
+local function twoSquare(a)
+  local x = a * a
+  local c = SPLITTER * a
+  local ahi = c - (c - a)
+  local alo = a - ahi
+  return x, alo * alo - ((x - ahi * ahi) - 2 * ahi * alo)
+end
+
+-- (b - a) x (c - a) and |b - a|^2, each as an unevaluated sum hi + low of two doubles, within
+-- 8 eps^2 t and 8 eps^2 |b - a|^2 (t = |ex wy| + |ey wx|, the magnitudes of the cross product's
+-- terms, returned last): the differences split exactly into hi + lo, the main products by
+-- TwoProduct, the first-order terms of the low parts added once; what is dropped (products of
+-- two low parts, the roundings of terms already of order eps) is of order eps^2.
 local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
   local exh, exl = twoDiff(bx, ax)
   local eyh, eyl = twoDiff(by, ay)
@@ -1878,51 +1896,77 @@ local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
   local wyh, wyl = twoDiff(cy, ay)
   local p, pLow = twoProduct(exh, wyh)
   local q, qLow = twoProduct(eyh, wxh)
-  local main, mainLow = twoDiff(p, q)
-  local crossed = main + (mainLow + (pLow - qLow) + (exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh))
-  local xx, xxLow = twoProduct(exh, exh)
-  local yy, yyLow = twoProduct(eyh, eyh)
-  local lengthSq = (xx + yy) + ((xxLow + yyLow) + 2 * (exh * exl + eyh * eyl))
-  return crossed, lengthSq
+  local crossed, crossedLow = twoDiff(p, q)
+  crossedLow = crossedLow + (pLow - qLow) + (exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh)
+  local lengthSq, lengthSqLow
+  do   -- (scoped: a small frame, see circleCollision)
+    local xx, xxLow = twoSquare(exh)
+    local yy, yyLow = twoSquare(eyh)
+    lengthSq, lengthSqLow = twoDiff(xx, -yy)
+    lengthSqLow = lengthSqLow + (xxLow + yyLow) + 2 * (exh * exl + eyh * eyl)
+  end
+  return crossed, crossedLow, lengthSq, lengthSqLow, abs(p) + abs(q)
 end
 
 -- Whether the circle (cx, cy, r) certainly stays beyond the line of the edge a -> b (as
--- clearOfEdge), by a float test alone: false also when rounding cannot tell. It compares
--- outside^2 with r^2 |b - a|^2, outside = (b - a) x (a - c) turned outwards and positive:
--- the first within 5 eps, the second within 4 eps, so 4 eps of their sum bounds the error of
--- the difference (with room for the eps^2 terms).
+-- clearOfEdge), by float arithmetic alone: false also when rounding cannot tell. It compares
+-- outside^2 with r^2 |b - a|^2, outside = (b - a) x (a - c) turned outwards, every product kept
+-- as hi + low: the difference is off by less than 32 eps^2 (outside^2 + r^2 |b - a|^2 + t^2)
+-- (the high parts' difference is exact by Sterbenz's lemma when they are within a factor 2,
+-- and dwarfs the rest otherwise). So the test needs room of order eps^2, not eps: a push that
+-- clears by a rounding of the coordinates passes it. One comparison of a min, not a chain of
+-- them: on LuaJIT each comparison is a guard, and a failing guard grows a side trace.
 local function beyondEdgeFiltered(ax, ay, bx, by, sign, cx, cy, r)
-  local crossed, lengthSq = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+  local crossed, crossedLow, lengthSq, lengthSqLow, t = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+  -- (few locals: this is the deepest frame of the push, and on Lua 5.4 a deeper stack means
+  -- one more stack reallocation after each full collection)
   local outside = -crossed * sign
-  local outsideSq, reachSq = outside * outside, r * r * lengthSq
-  local bound = 4 * EPS * (outsideSq + reachSq)
-  return outside > 0 and outsideSq - reachSq > bound and bound > FILTER_LO and bound < FILTER_HI
+  local outsideSq, outsideSqLow = twoSquare(outside)
+  outsideSqLow = outsideSqLow - 2 * outside * crossedLow * sign
+  local radiusSq, radiusSqLow = twoSquare(r)
+  local reachSq, reachSqLow = twoProduct(radiusSq, lengthSq)
+  reachSqLow = reachSqLow + (radiusSq * lengthSqLow + radiusSqLow * lengthSq)
+  -- the gap outside^2 - r^2 |b - a|^2 less its error bound
+  local clearance = (outsideSq - reachSq) + (outsideSqLow - reachSqLow)
+    - 32 * EPS * EPS * (outsideSq + reachSq + t * t)
+  local bound = 32 * EPS * EPS * (outsideSq + reachSq)
+  return min(outside, clearance, bound - FILTER_LO, FILTER_HI - bound) > 0
 end
 
 -- Whether the circle (cx, cy, r) certainly lies in the corner region of the vertex b between
--- its neighbours a and q, at distance r or more from b, by float tests alone. Each dot product
--- (m - b).(a - b) is within 3 eps of the sum of its terms' magnitudes; |m - b|^2 is summed
--- from exact squares of the split differences (within 2 eps), r^2 within 1.
+-- its neighbours a and q, at distance r or more from b, by float arithmetic alone. Each dot
+-- product (m - b).(a - b) is within 3 eps of the sum of its terms' magnitudes; |m - b|^2 - r^2
+-- is summed from exact squares of the split differences, off by less than 16 eps^2 of
+-- |m - b|^2 + r^2 (as in beyondEdgeFiltered, room of order eps^2).
 local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
   local wx, wxLow = twoDiff(cx, bx)
   local wy, wyLow = twoDiff(cy, by)
   local s1, s2 = wx * (ax - bx), wy * (ay - by)
   local t1, t2 = wx * (qx - bx), wy * (qy - by)
-  local xx, xxLow = twoProduct(wx, wx)
-  local yy, yyLow = twoProduct(wy, wy)
-  local distSq = (xx + yy) + ((xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow))
-  local reachSq = r * r
-  local bound = 4 * EPS * (reachSq + distSq)
-  return s1 + s2 < -4 * EPS * (abs(s1) + abs(s2)) and t1 + t2 < -4 * EPS * (abs(t1) + abs(t2))
-    and distSq - reachSq > bound and bound > FILTER_LO and bound < FILTER_HI
+  local xx, xxLow = twoSquare(wx)
+  local yy, yyLow = twoSquare(wy)
+  local distSq, distSqLow = twoDiff(xx, -yy)
+  local radiusSq, radiusSqLow = twoSquare(r)
+  local gap = (distSq - radiusSq)
+    + ((distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)) - radiusSqLow)
+  local bound = 16 * EPS * EPS * (distSq + radiusSq)
+  return min(-(s1 + s2) - 4 * EPS * (abs(s1) + abs(s2)), -(t1 + t2) - 4 * EPS * (abs(t1) + abs(t2)),
+    gap - bound, bound - FILTER_LO, FILTER_HI - bound) > 0
 end
 
--- One try of circlePush: the push of the given length along (ux, uy), and whether the
+-- One try of circlePush: the push of length depth + lengthLow along (ux, uy), and whether the
 -- certificate holds for it; `late`: consult the exact tests where the float ones cannot tell.
 -- For the edge a -> b (q == 0), or the vertex b between its distinct neighbours a and q (all
 -- indices into points, read here rather than held, which keeps few numbers live for LuaJIT).
-local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
-  local px, py = ux * length + 0.0, uy * length + 0.0   -- + 0.0 turns -0 into 0
+local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLow, late)
+  -- (ux, uy) (depth + lengthLow), each coordinate rounded once: + 0.0 turns -0 into 0
+  local px, py
+  do   -- (scoped: a small frame, see circleCollision)
+    local hi, low = twoProduct(ux, depth)
+    px = hi + (low + ux * lengthLow) + 0.0
+    hi, low = twoProduct(uy, depth)
+    py = hi + (low + uy * lengthLow) + 0.0
+  end
   local mx, my = cx + px, cy + py
   local ax, ay, bx, by = points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0, points[b + 1] + 0.0
   if q == 0 then
@@ -1930,7 +1974,11 @@ local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
       or late and clearOfEdge(ax, ay, bx, by, sign, mx, my, r)
   end
   local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
-  if cornerClearFiltered(ax, ay, bx, by, qx, qy, mx, my, r) then return px, py, true end
+  if cornerClearFiltered(ax, ay, bx, by, qx, qy, mx, my, r)
+      or beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r)
+      or beyondEdgeFiltered(bx, by, qx, qy, sign, mx, my, r) then
+    return px, py, true
+  end
   if not late then return px, py, false end
   -- in the corner region of b, where the distance to the polygon is |m - b|, or beyond an edge
   return px, py, dot(bx, by, mx, my, ax, ay) <= 0 and dot(bx, by, mx, my, qx, qy) <= 0
@@ -1938,10 +1986,26 @@ local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, length, late)
     or clearOfEdge(ax, ay, bx, by, sign, mx, my, r) or clearOfEdge(bx, by, qx, qy, sign, mx, my, r)
 end
 
+-- The push out of the polygon along (ux, uy), a unit vector to rounding, depth + lengthLow (to
+-- order eps^2) the length that moves the centre by the penetration (see penetration): the
+-- first length tried that the certificate accepts. That length is lengthened by what rounding
+-- can take from the push (EPS = 2^-53 bounds the relative error of one rounding): cx + px
+-- rounds by at most EPS |cx + px|, which moves the centre along the push by at most
+-- EPS (|mx ux| + |my uy|), m the moved centre; px and py, each rounded once (tryPush), by at
+-- most EPS depth along it. The certificates need room of order eps^2 only, so that first push
+-- clears unless a second edge is within rounding of touching (then the exact tests accept the
+-- same push), and its length exceeds the depth by at most EPS (|mx ux| + |my uy| + 2 depth)
+-- and terms of order eps^2: with M the largest coordinate magnitude, the moved centre's
+-- included, |m| <= sqrt(2) M and depth <= |m| + |c| <= 2 sqrt(2) M, so at most 7.1 eps M.
 -- far: whether some magnitude passes 2^240, where the float certificate's squares (degree 4)
 -- overflow and only the exact one tells.
-local function circlePush(points, n, sign, cx, cy, r, depth, ux, uy, e, v, far)
-  local extra = EPS * (abs(cx) + abs(cy) + 4 * r)
+function circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, e, v, far)
+  -- EPS (|mx ux| + |my uy| + depth), m = c + depth u; the EPS^2 term keeps the extra positive
+  -- (it grows below) when the rest is zero; 1 + 2^-20 covers the roundings of the bound itself
+  local extra = (1 + 2^-20) * EPS
+    * (abs((cx + ux * depth) * ux) + abs((cy + uy * depth) * uy) + depth)
+    + EPS * EPS * (abs(cx) + abs(cy) + r)
+  lengthLow = lengthLow + extra
   -- the edge a -> b, or the vertex b and its neighbours a, q
   local a, b, q = e == 1 and n - 1 or e - 2, e, 0
   if e == 0 then
@@ -1949,17 +2013,68 @@ local function circlePush(points, n, sign, cx, cy, r, depth, ux, uy, e, v, far)
   end
   -- the first try outside the loop: LuaJIT cannot compile a loop entered from the caller's
   -- trace with this many live values ("register coalescing too complex"), and one try is usual
-  local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + extra, far)
+  local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLow, far)
   if cleared then return px, py end
-  local exactFrom = far and 0 or 16 * extra
-  for _ = 1, 64 do
-    extra = extra * 2
-    px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth + extra,
-      extra >= exactFrom)
+  -- within rounding of touching a second edge or vertex: the exact tests decide from here on,
+  -- first for the same push, then with the extra growing by a quarter of itself each try, then
+  -- by 4 (a concave polygon, which the certificate may never accept)
+  for i = 1, 40 do
+    px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLow, true)
     if cleared then return px, py end
+    local more = extra * (i <= 8 and 0.25 or 3)
+    extra, lengthLow = extra + more, lengthLow + more
   end
   -- only a concave polygon or sizes outside the exact range get here: the longest push tried
   return px, py
+end
+
+-- The penetration of the circle (cx, cy, r) along the push out of the polygon: depth + depthLow,
+-- r less the distance from the centre to the polygon to order eps^2, the push's unit
+-- direction (ux, uy), to rounding, and lengthLow (see below). From the vertex v (index) when
+-- the centre lies in its corner region, else from the edge ending at index e. The distance is
+-- computed again from the given coordinates, each square root and quotient refined by one
+-- Newton step on the exact residual.
+-- (Apart from circleCollision, so that its frame stays small: on Lua 5.4 a larger frame makes
+-- the stack grow again, allocating, after every full collection.)
+function penetration(points, n, sign, cx, cy, r, e, v)
+  local ux, uy, distance, distanceLow
+  if v > 0 then
+    local wx, wxLow = twoDiff(cx, points[v] + 0.0)
+    local wy, wyLow = twoDiff(cy, points[v + 1] + 0.0)
+    local xx, xxLow = twoSquare(wx)
+    local yy, yyLow = twoSquare(wy)
+    local distSq, distSqLow = twoDiff(xx, -yy)
+    distSqLow = distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)
+    distance = sqrt(distSq)
+    local sq, sqLow = twoSquare(distance)
+    distanceLow = ((distSq - sq) - sqLow + distSqLow) / (2 * distance)
+    ux, uy = wx / distance, wy / distance
+  else
+    -- the edge a -> b: its outward unit normal, and the centre's signed distance from its
+    -- line, -((b - a) x (c - a)) / |b - a| turned outwards
+    local a = e == 1 and n - 1 or e - 2
+    local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
+    local bx, by = points[e] + 0.0, points[e + 1] + 0.0
+    local crossed, crossedLow, lengthSq, lengthSqLow = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
+    local length = sqrt(lengthSq)
+    local sq, sqLow = twoSquare(length)
+    local lengthLow = ((lengthSq - sq) - sqLow + lengthSqLow) / (2 * length)
+    local outside, outsideLow = -crossed * sign, -crossedLow * sign
+    distance = outside / length
+    local product, productLow = twoProduct(distance, length)
+    distanceLow = ((outside - product) - productLow + outsideLow - distance * lengthLow) / length
+    ux, uy = (by - ay) * sign / length, (ax - bx) * sign / length
+  end
+  local depth, depthLow = twoDiff(r, distance)
+  depthLow = depthLow - distanceLow
+  -- the push's length, depth + lengthLow, corrects for |(ux, uy)| - 1, which is known to order
+  -- eps^2 (the squares' high parts sum to within an ulp of 1, so less 1 is exact: Sterbenz)
+  local xx, xxLow = twoSquare(ux)
+  local yy, yyLow = twoSquare(uy)
+  local normSq, normSqLow = twoDiff(xx, -yy)
+  local normError = (normSq - 1) + (normSqLow + (xxLow + yyLow))
+  return depth, depthLow, ux, uy, depthLow - depth * normError * 0.5
+end
 end
 
 -- The edge walk, in coordinates relative to the centre (c): the nearest vertex, its squared
@@ -1967,14 +2082,30 @@ end
 -- whose line lies farthest behind the centre, with sign making distances positive outside.
 -- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
 -- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
--- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
+-- As in projectRange, LuaJIT gets loops without data-dependent branches: each such branch
 -- becomes a side trace, and the rest of the function is compiled again behind every one of
 -- them (measured: about 10 times slower). Its first pass keeps only the extremes with min and
--- max; a second finds their indices, recomputing the same numbers bit for bit, and stops at
--- the first match (a branch that almost never changes). The PUC interpreters call min and
--- max as functions, so for them one branchy pass is faster.
+-- max; a second finds their indices, recomputing the same numbers bit for bit, again with min
+-- alone: an index whose number matches the extreme keeps its value, any other is lifted past
+-- n, so the least key is the first match. (A loop that stopped at the first match left its
+-- trace early, which LuaJIT aborts and retries: "leaving loop in root trace".) The PUC
+-- interpreters call min and max as functions, so for them one branchy pass is faster.
 local edgeWalk
 if rawget(_G, "jit") then
+  -- min(x * LIFT * LIFT, 1) is 1 when x > 0 and 0 when x == 0, for x >= 0, without a branch:
+  -- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
+  -- function called per vertex it started traces of its own, which LuaJIT aborted.)
+  local LIFT = 2^537
+  -- an edge's key, outside |outside| / |b - a|^2; a repeated vertex (|b - a|^2 == 0, so
+  -- outside == 0 too) gets -2^1000 instead, below every real edge's key in the range where
+  -- the walk's answer is used (farSq < 2^1000)
+  local function edgeKey(ax, ay, bx, by, sign)
+    local ex, ey = bx - ax, by - ay
+    local lengthSq = ex * ex + ey * ey
+    local outside = (ex * ay - ey * ax) * sign
+    return outside * (abs(outside) / max(lengthSq, 2^-1074))
+      - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
+  end
   edgeWalk = function(points, n, cx, cy, sign)
     local nearSq, farSq, bestKey = huge, 0.0, -huge
     local ax, ay = points[n - 1] - cx, points[n] - cy
@@ -1982,28 +2113,24 @@ if rawget(_G, "jit") then
       local bx, by = points[i] - cx, points[i + 1] - cy
       local distSq = bx * bx + by * by
       nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
-      local ex, ey = bx - ax, by - ay
-      local lengthSq = ex * ex + ey * ey
-      if lengthSq > 0 then   -- a repeated vertex gives no edge (a branch almost never taken)
-        local outside = (ex * ay - ey * ax) * sign
-        bestKey = max(bestKey, outside * (abs(outside) / lengthSq))
-      end
+      bestKey = max(bestKey, edgeKey(ax, ay, bx, by, sign))
       ax, ay = bx, by
     end
-    local near, best = 1, 0
-    for i = 1, n - 1, 2 do
-      local bx, by = points[i] - cx, points[i + 1] - cy
-      if bx * bx + by * by == nearSq then near = i; break end
-    end
+    local lift = 2 * n   -- lifts a key past every index
+    local near, best = lift, lift
     ax, ay = points[n - 1] - cx, points[n] - cy
     for i = 1, n - 1, 2 do
       local bx, by = points[i] - cx, points[i + 1] - cy
-      local ex, ey = bx - ax, by - ay
-      local lengthSq = ex * ex + ey * ey
-      local outside = (ex * ay - ey * ax) * sign
-      if lengthSq > 0 and outside * (abs(outside) / lengthSq) == bestKey then best = i; break end
+      near = min(near, i + lift * min((bx * bx + by * by - nearSq) * LIFT * LIFT, 1))
+      best = min(best, i + lift * min((bestKey - edgeKey(ax, ay, bx, by, sign)) * LIFT * LIFT, 1))
       ax, ay = bx, by
     end
+    -- no match only after an overflow (NaN or infinite numbers): 0 sends the caller to its
+    -- scaled path (not (x <= n) is true for NaN too)
+    -- luacheck: push ignore 581
+    if not (near <= n) then near = 1 end
+    if not (best <= n) then best = 0 end
+    -- luacheck: pop
     return near, nearSq, farSq, best
   end
 else
@@ -2086,14 +2213,19 @@ end
 --   the nearest-vertex axis: whether the centre is in that vertex's corner region,
 --   the exact filter: within rounding of touching, discMeetsExact decides.
 function circleCollision(points, n, cx, cy, r)
-  local area, sumX2, sumD2 = shoelace(points, n)
-  if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
-    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
-    return overlap, px, py
+  -- (the do-blocks here keep the frame small: on Lua 5.4 a larger one can make the stack grow
+  -- again, allocating, after every full collection)
+  local sign   -- 1 or -1: makes the signed distances positive outside
+  do
+    local area, sumX2, sumD2 = shoelace(points, n)
+    if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
+      local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+      return overlap, px, py
+    end
+    local turn = areaSignOf(points, n, area, sumX2, sumD2)
+    if turn == 0 then return false end
+    sign = turn > 0 and 1.0 or -1.0
   end
-  local turn = areaSignOf(points, n, area, sumX2, sumD2)
-  if turn == 0 then return false end
-  local sign = turn > 0 and 1.0 or -1.0   -- makes the signed distances positive outside
   local near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, sign, r)
   if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
   -- luacheck: ignore 581 (NaN too)
@@ -2101,13 +2233,12 @@ function circleCollision(points, n, cx, cy, r)
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
     return overlap, px, py
   end
-  local tol = 16 * EPS * (sqrt(farSq) + r)   -- see the exact filter below
   -- The nearest-vertex axis: the centre is in the corner region of the nearest vertex v when
   -- it lies behind neither edge meeting there, (c - v).(p - v) <= 0 for both distinct
   -- neighbours p; then the distance to the polygon is |c - v|, and the push goes along c - v.
   local edge, vertex = best, 0
-  local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
   if nearSq > 0 then
+    local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
     local p = distinctNeighbour(points, n, near, -2)
     local q = distinctNeighbour(points, n, near, 2)
     if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
@@ -2115,32 +2246,22 @@ function circleCollision(points, n, cx, cy, r)
       edge, vertex = 0, near
     end
   end
-  local ux, uy, distance
-  if vertex > 0 then
-    distance = sqrt(nearSq)
-    ux, uy = -vx / distance, -vy / distance
-  else
-    -- The winning edge a -> b: its outward unit normal, and the centre's signed distance from
-    -- its line, computed again from the given coordinates, accurately.
-    local a = best == 1 and n - 1 or best - 2
-    local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
-    local bx, by = points[best] + 0.0, points[best + 1] + 0.0
-    local crossed, lengthSq = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
-    local length = sqrt(lengthSq)
-    ux, uy = (by - ay) * sign / length, (ax - bx) * sign / length
-    distance = -crossed * sign / length
-  end
-  -- The exact filter: distance is off by at most a few eps times the farthest vertex's distance
-  -- (the coordinates relative to the centre are rounded, then multiplied by edges no longer).
-  local depth = r - distance
+  local depth, depthLow, ux, uy, lengthLow = penetration(points, n, sign, cx, cy, r, edge, vertex)
+  -- The exact filter: the float depth is off by far less than tol, a few eps times the farthest
+  -- vertex's distance and the radius. Apart needs less room from an edge: a circle beyond an
+  -- edge's line by more than r misses the convex polygon whichever feature is nearest, and
+  -- depth + depthLow measures that to order eps^2 (within 32 eps^2 (|c - a| + r)). So a circle
+  -- that a push left touching by a few ulps is decided apart here, not by discMeetsExact.
+  local tol = 16 * EPS * (sqrt(farSq) + r)
   if depth <= tol then
     if depth < -tol then return false end
+    if vertex == 0 and depth + depthLow < -32 * EPS * EPS * (sqrt(farSq) + r) then return false end
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
-    if depth < 0 then depth = 0 end
+    if depth + depthLow < 0 then depth, depthLow, lengthLow = 0.0, 0.0, 0.0 end
   end
-  local px, py = circlePush(points, n, sign, cx, cy, r, depth, ux, uy, edge, vertex,
+  local px, py = circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, edge, vertex,
     max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
-  return depth, px, py
+  return depth + depthLow, px, py
 end
 
 --- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
@@ -2149,8 +2270,9 @@ end
 -- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
 -- is the full penetration (r minus the signed distance from the centre to the polygon), so a
 -- circle deep inside is pushed out in one step, and the push separates for certain: after
--- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than overlap by
--- a few ulps of the coordinates at most.
+-- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than the exact
+-- depth by at most 8 eps M, eps = 2^-53 and M the largest coordinate magnitude involved (the
+-- polygon's, the centre's and the moved centre's; see circlePush for the bound, 7.1 eps M).
 -- @return overlap, dx, dy (move the circle by dx, dy) or false
 function polygon.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"

@@ -1,9 +1,11 @@
 -- polygonCircleCollideV on the hard cases: circles within an ulp of touching an edge or a
 -- vertex, centres on vertices and edges, far offsets, zero and huge radii, non-finite input;
--- then generated circles near contact against the exact oracle. The contract: it collides
--- exactly when the open disc meets the polygon's interior, and the returned push separates for
--- certain (the oracle sees no overlap at the moved centre) while exceeding the exact depth by
--- at most 8 eps M + 4 eps r, M the largest magnitude involved.
+-- then generated circles against the exact oracle, from a few ulps of overlap to deep inside,
+-- at offsets 1 to 1e12. The contract: it collides exactly when the open disc meets the
+-- polygon's interior, and the returned push separates for certain (the oracle sees no overlap
+-- at the moved centre) while its length exceeds the exact least penetration depth by at most
+-- 8 eps M, eps = 2^-53 and M the largest coordinate magnitude involved: the polygon's, the
+-- centre's and the moved centre's coordinates (the radius is a length, not a coordinate).
 local polygon = require "polygon"
 local oracle = require "oracle"
 local exact = require "exact"
@@ -19,13 +21,16 @@ local SQUARE = { 0, 0, 10, 0, 10, 10, 0, 10 }
 -- (15 + 24 - 24) / 5 = 3 from it, with the foot (5,6) - 3 (0.6,0.8) = (3.2,3.6) inside the edge
 local TRIANGLE = { 0, 0, 8, 0, 0, 6 }
 
-local function magnitude(points, cx, cy, r, dx, dy)
-  local m = math.max(math.abs(cx), math.abs(cy), r, math.abs(cx + dx), math.abs(cy + dy))
+-- M: the largest coordinate magnitude involved, the moved centre's included
+local function magnitude(points, cx, cy, dx, dy)
+  local m = math.max(math.abs(cx), math.abs(cy), math.abs(cx + dx), math.abs(cy + dy))
   for i = 1, #points do m = math.max(m, math.abs(points[i])) end
   return m
 end
 
--- the answer agrees with the oracle; a push clears for certain and is tight
+-- the answer agrees with the oracle; a push clears for certain, and its length q (a double
+-- at least |(dx, dy)|, checked exactly) is at most the exact depth plus 8 eps M, decided
+-- exactly: depth >= q - 8 eps M
 local function check(points, cx, cy, r)
   local expected = oracle.discMeetsPolygon(points, cx, cy, r)
   local overlap, dx, dy = circleV(points, cx, cy, r)
@@ -33,14 +38,14 @@ local function check(points, cx, cy, r)
     ("centre (%.17g, %.17g) r %.17g"):format(cx, cy, r))
   if overlap then
     assert.is_false(oracle.discMeetsPolygon(points, cx + dx, cy + dy, r))
+    local m = magnitude(points, cx, cy, dx, dy)
+    local q = oracle.lengthAbove(dx, dy)
+    assert.is_true(oracle.circleDepthAtLeast(points, cx, cy, r, q, 8 * EPS * m),
+      ("centre (%.17g, %.17g) r %.17g: push %.17g longer than the depth by more than 8 eps M")
+        :format(cx, cy, r, q))
+    -- the overlap is the depth to a few ulps (the oracle's depth is itself rounded a few times)
     local depth = oracle.circleDepth(points, cx, cy, r)
-    local big = math.max(math.abs(dx), math.abs(dy))
-    local excess = big * math.sqrt((dx / big) ^ 2 + (dy / big) ^ 2) - depth
-    local m = magnitude(points, cx, cy, r, dx, dy)
-    -- the float certificate needs 4 eps r of room beyond the depth's own rounding, so a radius
-    -- near M can take the excess past 8 eps M (measured: 2 of 431 generated pushes, 9.3 eps M)
-    assert.is_true(excess <= 8 * EPS * m + 4 * EPS * r, ("excess %.3g eps M"):format(excess / (EPS * m)))
-    assert.is_true(math.abs(overlap - depth) <= 8 * EPS * m)
+    assert.is_true(math.abs(overlap - depth) <= 8 * EPS * math.max(m, r))
   end
   return overlap
 end
@@ -191,5 +196,65 @@ describe("polygonCircleCollideV on generated circles near contact, at offsets 1 
       if radius > 0 and check(points, cx, cy, radius) then collided = collided + 1 end
     end
     assert.is_true(collided > 150, collided .. " collided")
+  end)
+
+  it("pushes deep circles out in one step, tight: centres inside, radii up to 200", function()
+    local r = prng.new(4004)
+    local collided = 0
+    for trial = 1, 150 do
+      local points = convex(r, 10 ^ r:int(0, 12))
+      if trial % 2 == 0 then points = shapes.reverse(points) end
+      -- a centre between the first vertex and the vertex mean: inside
+      local mx, my = 0, 0
+      for i = 1, #points, 2 do mx, my = mx + points[i], my + points[i + 1] end
+      mx, my = mx / (#points / 2), my / (#points / 2)
+      local t = r:float()
+      local cx, cy = mx + t * (points[1] - mx), my + t * (points[2] - my)
+      if check(points, cx, cy, r:range(0.01, 200)) then collided = collided + 1 end
+    end
+    assert.are.equal(150, collided)
+  end)
+
+  it("keeps the bound where the radius is as large as the coordinates: far centres, near polygons", function()
+    -- a polygon within 50 of the origin and a centre 10 to 1e7 away, the radius within 0.1% of
+    -- the distance to its first vertex: the radius is about M, the depth small
+    local r = prng.new(5005)
+    local collided = 0
+    for trial = 1, 150 do
+      local points = convex(r, 50)
+      if trial % 2 == 0 then points = shapes.reverse(points) end
+      local angle, dist = r:range(0, 2 * math.pi), 10 ^ r:range(1, 7)
+      local cx, cy = points[1] + dist * math.cos(angle), points[2] + dist * math.sin(angle)
+      local radius = math.sqrt((cx - points[1]) ^ 2 + (cy - points[2]) ^ 2) * (1 + r:range(-1e-3, 1e-3))
+      if check(points, cx, cy, radius) then collided = collided + 1 end
+    end
+    assert.is_true(collided > 50, collided .. " collided")
+  end)
+
+  it("keeps the bound for pushes across a polygon around the origin (depth up to 2 sqrt(2) M)", function()
+    -- the centre near a vertex, the radius 0.5 to 3 times the polygon's size: the push carries
+    -- the centre past the far side, its length up to the distance between opposite corners
+    local r = prng.new(6006)
+    for trial = 1, 150 do
+      local size = 10 ^ r:range(0, 9)
+      local points = convex(r, 0)
+      for i = 1, #points do points[i] = points[i] * size / 30 end
+      if trial % 2 == 0 then points = shapes.reverse(points) end
+      local k = 2 * r:int(0, #points / 2 - 1) + 1
+      local cx, cy = points[k] * r:range(0.9, 1.1), points[k + 1] * r:range(0.9, 1.1)
+      assert.is_truthy(check(points, cx, cy, size * r:range(0.5, 3)))
+    end
+  end)
+end)
+
+describe("the push's excess check", function()
+  it("rejects a push 9 eps M longer than the depth and accepts one 6 eps M longer", function()
+    -- centre (13,5) r 4 against the square: 3 from the edge x = 10, depth 1 along +x; with the
+    -- push of length about 1 the moved centre is (14,5), so M = 14 and 8 eps M = 112 eps
+    assert.is_false(oracle.circleDepthAtLeast(SQUARE, 13, 5, 4, 1 + 126 * EPS, 8 * EPS * 14))
+    assert.is_true(oracle.circleDepthAtLeast(SQUARE, 13, 5, 4, 1 + 84 * EPS, 8 * EPS * 14))
+    -- inside: centre (5,5) r 1 is 5 from every edge, depth 6 (s = r - (q - 8 eps M) < 0)
+    assert.is_true(oracle.circleDepthAtLeast(SQUARE, 5, 5, 1, 6, 0))
+    assert.is_false(oracle.circleDepthAtLeast(SQUARE, 5, 5, 1, 6 + 2 ^ -40, 0))
   end)
 end)

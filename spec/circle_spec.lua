@@ -12,13 +12,14 @@ local A = { 0, 0, 10, 0, 10, 10, 0, 10 } -- clockwise on screen
 local WINDINGS = { A, shapes.reverse(A) }
 
 -- The overlap is exact here; the push has the expected direction and is longer by a few ulps
--- at most (8 eps M, M the largest magnitude involved), so that the moved circle clears for
--- certain: the exact oracle sees no overlap at the moved centre.
+-- at most (8 eps M, M the largest coordinate magnitude involved, the moved centre's included),
+-- so that the moved circle clears for certain: the exact oracle sees no overlap at the moved
+-- centre.
 local EPS = 2 ^ -53
 local function assertPush(points, cx, cy, r, overlap, ex, ey)
   local o, dx, dy = circleV(points, cx, cy, r)
   assert.are.equal(overlap, o)
-  local m = math.max(math.abs(cx), math.abs(cy), r, math.abs(cx + dx), math.abs(cy + dy))
+  local m = math.max(math.abs(cx), math.abs(cy), math.abs(cx + dx), math.abs(cy + dy))
   for i = 1, #points do m = math.max(m, math.abs(points[i])) end
   assert.is_true(math.abs(dx - ex) <= 8 * EPS * m and math.abs(dy - ey) <= 8 * EPS * m,
     ("push (%.17g, %.17g), expected (%.17g, %.17g)"):format(dx, dy, ex, ey))

@@ -16,14 +16,15 @@ local function assertSeparates(x1, y1, r1, x2, y2, r2, dx, dy)
   assert.are.equal(false, circlesV(x1, y1, r1, x2 + dx, y2 + dy, r2))
 end
 
--- the push is no longer than the exact depth plus 8 eps M, M the largest magnitude involved:
--- the coordinates before and after the move and the sum of the radii
+-- the push is no longer than the exact depth plus 8 eps M, M the largest coordinate magnitude
+-- involved (the centres before and after the move; the radii are lengths), decided exactly:
+-- depth >= q - 8 eps M, with q >= |(dx, dy)| checked exactly too
 local function assertTight(x1, y1, r1, x2, y2, r2, dx, dy)
-  local m = math.max(math.abs(x1), math.abs(y1), math.abs(x2), math.abs(y2), r1 + r2,
+  local m = math.max(math.abs(x1), math.abs(y1), math.abs(x2), math.abs(y2),
     math.abs(x2 + dx), math.abs(y2 + dy))
-  local depth = oracle.circlesDepth(x1, y1, r1, x2, y2, r2)
-  local excess = math.sqrt(dx * dx + dy * dy) - depth
-  assert.is_true(excess <= 8 * EPS * m, ("excess %g, 8 eps M %g"):format(excess, 8 * EPS * m))
+  local q = oracle.lengthAbove(dx, dy)
+  assert.is_true(oracle.circlesDepthAtLeast(x1, y1, r1, x2, y2, r2, q, 8 * EPS * m),
+    ("push %.17g longer than the depth by more than 8 eps M = %g"):format(q, 8 * EPS * m))
 end
 
 describe("circlesCollideV", function()

@@ -661,4 +661,86 @@ function oracle.reflexCount(points)
   return count
 end
 
+---------------------------------------------------------------------------------------------------
+-- A circle's depth bound without rounding.
+
+--- Whether the exact least penetration depth of the circle (cx, cy, r) into a convex polygon of
+-- nonzero area, D = r - (signed distance from the centre to the polygon, negative inside), is at
+-- least a - b, for doubles a and b, decided exactly. With s = r - (a - b) it asks whether the
+-- signed distance is at most s. For s >= 0: the centre is in the closed polygon, or its squared
+-- distance to a vertex or to an edge (foot strictly inside, as in discMeetsPolygon) is at most
+-- s^2. For s < 0: the centre is inside at distance at least -s from every edge's line (for a
+-- convex polygon the distance to the boundary from inside is the least of those), that is,
+-- cross >= 0 and cross^2 >= s^2 |e|^2 with cross = (b - a) x (c - a) signed positive inside.
+function oracle.circleDepthAtLeast(points, cx, cy, r, a, b)
+  local xs, ys = vertices(points)
+  local ecx, ecy = new(cx), new(cy)
+  local s = sub(new(r), sub(new(a), new(b)))
+  local s2 = mul(s, s)
+  local n = #xs
+  local turn = sign(oracle.shoelace(points))
+  local inside = true
+  for i = 1, n do
+    local j = i % n + 1
+    local c = mul(cross(xs[i], ys[i], xs[j], ys[j], ecx, ecy), new(turn))
+    if sign(c) < 0 then
+      inside = false
+    elseif sign(s) < 0 then
+      local ex, ey = sub(xs[j], xs[i]), sub(ys[j], ys[i])
+      if exact.compare(mul(c, c), mul(s2, add(mul(ex, ex), mul(ey, ey)))) < 0 then
+        return false
+      end
+    end
+  end
+  if sign(s) < 0 then
+    return inside
+  end
+  if inside then
+    return true
+  end
+  for i = 1, n do
+    if exact.compare(distanceSquared(ecx, ecy, xs[i], ys[i]), s2) <= 0 then
+      return true
+    end
+    local j = i % n + 1
+    local ex, ey = sub(xs[j], xs[i]), sub(ys[j], ys[i])
+    local len2 = add(mul(ex, ex), mul(ey, ey))
+    local k = add(mul(sub(ecx, xs[i]), ex), mul(sub(ecy, ys[i]), ey))
+    if sign(k) > 0 and exact.compare(k, len2) < 0 then
+      local fx = sub(mul(len2, sub(ecx, xs[i])), mul(k, ex))
+      local fy = sub(mul(len2, sub(ecy, ys[i])), mul(k, ey))
+      if exact.compare(add(mul(fx, fx), mul(fy, fy)), mul(s2, mul(len2, len2))) <= 0 then
+        return true
+      end
+    end
+  end
+  return false
+end
+
+--- A double q >= |(dx, dy)| exactly, within an ulp or two of it: the rounded length, raised
+-- until q^2 >= dx^2 + dy^2 holds in exact arithmetic.
+function oracle.lengthAbove(dx, dy)
+  local big = math.max(math.abs(dx), math.abs(dy))
+  if big == 0 then
+    return 0
+  end
+  local q = big * math.sqrt((dx / big) ^ 2 + (dy / big) ^ 2)
+  local ex, ey = new(dx), new(dy)
+  local lengthSq = add(mul(ex, ex), mul(ey, ey))
+  while exact.compare(mul(new(q), new(q)), lengthSq) < 0 do
+    q = exact.nextUp(q)
+  end
+  return q
+end
+
+--- Whether the exact depth of two circles, r1 + r2 - |c2 - c1|, is at least a - b, for doubles
+-- a and b, decided exactly: with s = r1 + r2 - (a - b), it asks s >= 0 and |c2 - c1|^2 <= s^2.
+function oracle.circlesDepthAtLeast(x1, y1, r1, x2, y2, r2, a, b)
+  local s = sub(add(new(r1), new(r2)), sub(new(a), new(b)))
+  if sign(s) < 0 then
+    return false
+  end
+  return exact.compare(distanceSquared(new(x2), new(y2), new(x1), new(y1)), mul(s, s)) <= 0
+end
+
 return oracle
