@@ -2091,7 +2091,7 @@ end
 -- trace early, which LuaJIT aborts and retries: "leaving loop in root trace".) The PUC
 -- interpreters call min and max as functions, so for them one branchy pass is faster.
 local edgeWalk
-if rawget(_G, "jit") then
+if JIT then
   -- min(x * LIFT * LIFT, 1) is 1 when x > 0 and 0 when x == 0, for x >= 0, without a branch:
   -- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
   -- function called per vertex it started traces of its own, which LuaJIT aborted.)

@@ -1,13 +1,19 @@
--- The circle push's excess over the exact depth, in units of eps M (eps = 2^-53, M the largest
--- coordinate magnitude: polygon, centre, moved centre), found by bisection on the exact check
--- oracle.circleDepthAtLeast. From the repository root: lua5.4 notes/hC_excess.lua [trials] [seed]
-package.path = "./?.lua;./spec/support/?.lua;" .. package.path   -- run from the repository root
+-- bench/excess.lua: how much longer than the exact depth the circle pushes are, in units of
+-- eps M (eps = 2^-53, M the largest coordinate magnitude involved: polygon, centre, moved centre;
+-- the radius is a length, not in M), found by bisection on the oracle's exact checks. The
+-- contract is at most 8 eps M; spec/circle_hard_spec.lua and spec/circles_spec.lua check it.
+-- From the repository root: lua5.4 bench/excess.lua [trials] [seed]
+-- Prints, for polygonCircleCollideV, the pushes that did not separate, those above 8 eps M, the
+-- largest excess and a histogram; then the same for circlesCollideV.
+package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local polygon = require "polygon"
 local oracle = require "oracle"
 local exact = require "exact"
 local prng = require "prng"
 local shapes = require "shapes"
 local EPS = 2^-53
+
+do   -- polygonCircleCollideV
 local trials, seed = tonumber(arg[1] or 400), tonumber(arg[2] or 8086)
 local r = prng.new(seed)
 local function convex(offset, size)
@@ -99,3 +105,35 @@ for _, k in ipairs(keys) do line[#line + 1] = ("[%d,%d): %d"):format(k, k + 1, h
 print("histogram (eps M): " .. table.concat(line, "  "))
 print(("worst: kind %d centre (%.17g, %.17g) r %.17g M %.6g n %d")
   :format(worstCase[1], worstCase[2], worstCase[3], worstCase[4], worstCase[5], worstCase[6]))
+end
+
+do   -- circlesCollideV
+local r = prng.new(7)
+local worst, over, cnt = 0, 0, 0
+for _ = 1, 3000 do
+  local off = 10 ^ r:int(0, 12)
+  local x1, y1 = off * (r:float() * 2 - 1), off * (r:float() * 2 - 1)
+  local r1, r2 = r:range(1, 100), r:range(1, 100)
+  local a, d = r:range(0, 2 * math.pi), (r1 + r2) * r:range(0, 1.0001)
+  local x2, y2 = x1 + d * math.cos(a), y1 + d * math.sin(a)
+  local o, dx, dy = polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
+  if o then
+    cnt = cnt + 1
+    local m = math.max(math.abs(x1), math.abs(y1), math.abs(x2), math.abs(y2),
+      math.abs(x2 + dx), math.abs(y2 + dy))
+    local q = oracle.lengthAbove(dx, dy)
+    local lo, hi = -64, 64
+    local function within(k) return oracle.circlesDepthAtLeast(x1, y1, r1, x2, y2, r2, q, k * EPS * m) end
+    if not within(hi) then hi = math.huge else
+      for _ = 1, 12 do
+        local mid = (lo + hi) / 2
+        if within(mid) then hi = mid else lo = mid end
+      end
+    end
+    if hi > 8 then over = over + 1 end
+    worst = math.max(worst, hi)
+  end
+end
+print(("circlesCollideV: %d pushes, %d above 8 eps M (M without radii), largest %.3f eps M")
+  :format(cnt, over, worst))
+end
