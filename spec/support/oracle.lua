@@ -457,6 +457,32 @@ end
 -- distance to a segment a -> b is found by the parameter t = (c - a).(b - a) / |b - a|^2 of the
 -- foot: with L = |b - a|^2 and k = (c - a).(b - a), the foot is a + (k / L)(b - a), and
 -- |c - foot|^2 < r^2 <=> |L (c - a) - k (b - a)|^2 < r^2 L^2, all integers times powers of two.
+-- Whether some point of the polygon's boundary (xs, ys: exact vertices) lies within distance
+-- sqrt(d2) of the exact point (ecx, ecy): strictly closer when strict, else at most that far.
+-- A vertex, or the foot of the perpendicular on an edge when it falls strictly between the ends.
+local function boundaryWithin(xs, ys, ecx, ecy, d2, strict)
+  local limit = strict and 0 or 1   -- compare(...) < limit: < 0 strict, <= 0 otherwise
+  local n = #xs
+  for i = 1, n do
+    if exact.compare(distanceSquared(ecx, ecy, xs[i], ys[i]), d2) < limit then
+      return true
+    end
+    local j = i % n + 1
+    local ex, ey = sub(xs[j], xs[i]), sub(ys[j], ys[i])
+    local len2 = add(mul(ex, ex), mul(ey, ey))
+    local k = add(mul(sub(ecx, xs[i]), ex), mul(sub(ecy, ys[i]), ey))
+    -- the foot lies strictly between a and b: 0 < k < L
+    if sign(k) > 0 and exact.compare(k, len2) < 0 then
+      local fx = sub(mul(len2, sub(ecx, xs[i])), mul(k, ex))
+      local fy = sub(mul(len2, sub(ecy, ys[i])), mul(k, ey))
+      if exact.compare(add(mul(fx, fx), mul(fy, fy)), mul(d2, mul(len2, len2))) < limit then
+        return true
+      end
+    end
+  end
+  return false
+end
+
 function oracle.discMeetsPolygon(points, cx, cy, r)
   if not solid(points) or r <= 0 then
     return false
@@ -477,24 +503,7 @@ function oracle.discMeetsPolygon(points, cx, cy, r)
   if inside then
     return true
   end
-  for i = 1, n do
-    if exact.compare(distanceSquared(ecx, ecy, xs[i], ys[i]), r2) < 0 then
-      return true
-    end
-    local j = i % n + 1
-    local ex, ey = sub(xs[j], xs[i]), sub(ys[j], ys[i])
-    local len2 = add(mul(ex, ex), mul(ey, ey))
-    local k = add(mul(sub(ecx, xs[i]), ex), mul(sub(ecy, ys[i]), ey))
-    -- the foot lies strictly between a and b: 0 < k < L
-    if sign(k) > 0 and exact.compare(k, len2) < 0 then
-      local fx = sub(mul(len2, sub(ecx, xs[i])), mul(k, ex))
-      local fy = sub(mul(len2, sub(ecy, ys[i])), mul(k, ey))
-      if exact.compare(add(mul(fx, fx), mul(fy, fy)), mul(r2, mul(len2, len2))) < 0 then
-        return true
-      end
-    end
-  end
-  return false
+  return boundaryWithin(xs, ys, ecx, ecy, r2, true)
 end
 
 
@@ -698,23 +707,7 @@ function oracle.circleDepthAtLeast(points, cx, cy, r, a, b)
   if inside then
     return true
   end
-  for i = 1, n do
-    if exact.compare(distanceSquared(ecx, ecy, xs[i], ys[i]), s2) <= 0 then
-      return true
-    end
-    local j = i % n + 1
-    local ex, ey = sub(xs[j], xs[i]), sub(ys[j], ys[i])
-    local len2 = add(mul(ex, ex), mul(ey, ey))
-    local k = add(mul(sub(ecx, xs[i]), ex), mul(sub(ecy, ys[i]), ey))
-    if sign(k) > 0 and exact.compare(k, len2) < 0 then
-      local fx = sub(mul(len2, sub(ecx, xs[i])), mul(k, ex))
-      local fy = sub(mul(len2, sub(ecy, ys[i])), mul(k, ey))
-      if exact.compare(add(mul(fx, fx), mul(fy, fy)), mul(s2, mul(len2, len2))) <= 0 then
-        return true
-      end
-    end
-  end
-  return false
+  return boundaryWithin(xs, ys, ecx, ecy, s2, false)
 end
 
 --- A double q >= |(dx, dy)| exactly, within an ulp or two of it: the rounded length, raised
