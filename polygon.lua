@@ -2038,7 +2038,13 @@ local inX, inY          -- the caller's values, copied into the output bit for b
 local origin            -- the input vertex a node stands for (a bridge copies two of them)
 local nextNode, prevNode, nodeCount
 local gone              -- gone[k]: node k has been unlinked
-local zOf, nextZ, prevZ -- the z-order list, built once the holes are joined
+local cellOf, cellHead  -- the ear test's grid (see buildGrid): node k's cell, a cell's first
+local nextInCell, prevInCell   -- node, and the links of a cell's list
+local listed            -- listed[k]: node k is still in the ear test's grid
+local shared            -- shared[k]: another node lies at node k's place
+local reflexSeen        -- reflexSeen[k]: node k was found not strictly convex and has kept
+                        -- its neighbours since
+local listStale         -- a node dropped from the grid may have turned reflex
 local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
 
 -- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
@@ -2079,16 +2085,20 @@ local function newNode(x, y, id)
   return k
 end
 
--- Unlinks node k from the ring and, once built, from the z-order list.
+-- Drops node k from its cell of the ear test's grid.
+local function unlist(k)
+  listed[k] = false
+  local before, after = prevInCell[k], nextInCell[k]
+  if before then nextInCell[before] = after else cellHead[cellOf[k]] = after end
+  if after then prevInCell[after] = before end
+end
+
+-- Unlinks node k from the ring and, once built, from the ear test's grid.
 local function unlink(k)
   gone[k] = true
   local p, q = prevNode[k], nextNode[k]
   nextNode[p], prevNode[q] = q, p
-  if zOf then
-    local pz, nz = prevZ[k], nextZ[k]
-    if pz then nextZ[pz] = nz end
-    if nz then prevZ[nz] = pz end
-  end
+  if listed and listed[k] then unlist(k) end
 end
 
 -- Links the vertices of a flat array into a ring, in reverse when `reversed`, skipping
@@ -2358,50 +2368,83 @@ local function bridge(m, h)
   if same(m, h) then unlink(h); unlink(m2) end
 end
 
--- Bit-interleaving of a byte (bit i goes to bit 2 i), for z-order keys without bit operators.
-local SPREAD = {}
-for b = 0, 255 do
-  local v, bit, out = b, 1, 0
-  while v > 0 do
-    if v % 2 == 1 then out = out + bit end
-    v, bit = (v - v % 2) / 2, bit * 4
-  end
-  SPREAD[b] = out
+-- The ear test's index: a grid of square cells over the ring's box, each holding a list of the
+-- nodes in it that may still block an ear (see keepListed). An ear's triangle is visited row of
+-- cells by row, only the cells its span in that row touches: a long thin triangle (a spike of
+-- a noisy outline) meets a few cells per row where its box would hold a large share of all
+-- the nodes.
+local CELL_LOAD = 2     -- nodes per cell on average, when the grid is built
+local SHARED_RUN = 8    -- nodes of one cell compared pair by pair, at most (then all shared)
+local FINE = 2 ^ -30    -- cells wider than this times the largest coordinate are visited by
+                        -- the triangle's span (rounding stays far below a cell); narrower
+                        -- ones, by its box (an outline tiny against its offset)
+local gridLeft, gridTop, gridScale, gridCols, gridRows, cellSize, gridFine
+
+-- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so a
+-- box's corners bound the cells of every point inside it.
+local function colOf(x)
+  local col = floor((x - gridLeft) * gridScale)
+  return col < gridCols and col or gridCols - 1
+end
+local function rowOf(y)
+  local row = floor((y - gridTop) * gridScale)
+  return row < gridRows and row or gridRows - 1
 end
 
-local Z_CELLS = 32767   -- 15 bits per axis: keys below 2^30, exact in doubles and integers
-local zLeft, zTop, zScale
-
--- The Morton key of a point. Monotone in x and in y (the scaling rounds monotonically), so a
--- box's corners bound the keys of every point inside it.
-local function zKey(x, y)
-  local ix = floor((x - zLeft) * zScale)
-  local iy = floor((y - zTop) * zScale)
-  local xl, yl = ix % 256, iy % 256
-  return SPREAD[xl] + SPREAD[(ix - xl) / 256] * 65536
-    + 2 * (SPREAD[yl] + SPREAD[(iy - yl) / 256] * 65536)
-end
-
--- Sorts the ring at s by z-order into nextZ / prevZ.
-local function buildZOrder(s)
-  local list = {}
-  local x0, y0, x1, y1 = huge, huge, -huge, -huge
+-- Files every node of the ring at s in its cell, and marks the nodes sharing a place.
+local function buildGrid(s)
+  local x0, y0, x1, y1, count = huge, huge, -huge, -huge, 0
   local k = s
   repeat
-    list[#list + 1] = k
     x0, y0 = min(x0, nodeX[k]), min(y0, nodeY[k])
     x1, y1 = max(x1, nodeX[k]), max(y1, nodeY[k])
+    count = count + 1
     k = nextNode[k]
   until k == s
-  local size = max(x1 - x0, y1 - y0)
-  zLeft, zTop, zScale = x0, y0, size > 0 and Z_CELLS / size or 0
-  zOf, nextZ, prevZ = {}, {}, {}
-  for i = 1, #list do zOf[list[i]] = zKey(nodeX[list[i]], nodeY[list[i]]) end
-  sortKey = zOf
-  sort(list, bySortKey)
-  for i = 1, #list do
-    nextZ[list[i]], prevZ[list[i]] = list[i + 1], list[i - 1]
+  -- the ring has area, so its box has width and height
+  cellSize = sqrt((x1 - x0) * (y1 - y0) * CELL_LOAD / count)
+  gridLeft, gridTop, gridScale = x0, y0, 1 / cellSize
+  gridCols = min(floor((x1 - x0) * gridScale) + 1, count)
+  gridRows = min(floor((y1 - y0) * gridScale) + 1, count)
+  gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
+  cellOf, cellHead, nextInCell, prevInCell = {}, {}, {}, {}
+  listed, shared, reflexSeen, listStale = {}, {}, {}, false
+  k = s
+  repeat
+    local cell = rowOf(nodeY[k]) * gridCols + colOf(nodeX[k]) + 1
+    local head = cellHead[cell]
+    cellOf[k], nextInCell[k], listed[k] = cell, head, true
+    if head then prevInCell[head] = k end
+    cellHead[cell] = k
+    k = nextNode[k]
+  until k == s
+  -- nodes at one place share a cell; a crowded cell is all marked shared
+  for _, head in pairs(cellHead) do
+    local size, j = 0, head
+    while j do size = size + 1; j = nextInCell[j] end
+    j = head
+    while j do
+      if size > SHARED_RUN then shared[j] = true end
+      local m = size <= SHARED_RUN and nextInCell[j]
+      while m do
+        if same(j, m) then shared[j], shared[m] = true, true end
+        m = nextInCell[m]
+      end
+      j = nextInCell[j]
+    end
   end
+end
+
+-- Whether node k may still block an ear: an ear's triangle that holds some node holds a node
+-- not strictly convex (the highest point inside over the new edge c -> a turns away from the
+-- inside, which sees past it), or one at a pinch point; a strictly convex node elsewhere is
+-- dropped from the z-order list at its first test, as clipping never makes it reflex again
+-- (its neighbours only move inwards) unless a spike collapses over it (settle rebuilds then).
+local function keepListed(k)
+  if reflexSeen[k] or shared[k] then return true end
+  if orient(prevNode[k], k, nextNode[k]) > 0 then unlist(k); return false end
+  reflexSeen[k] = true
+  return true
 end
 
 -- Whether node k keeps the triangle (a, b, c) (turning the ring's way) from being an ear: it
@@ -2434,29 +2477,55 @@ local function blocks(k, a, b, c)
   return false
 end
 
--- Whether node b, strictly convex, is an ear: no node whose z-key lies within the triangle's
--- box blocks it.
+-- Whether node b, strictly convex, is an ear: no listed node in the cells its triangle meets
+-- blocks it. Row by row, the triangle's span in x over the row (widened by a quarter row up
+-- and down, and by a cell left and right, against rounding) gives the cells to visit.
 local function isEar(b)
   local a, c = prevNode[b], nextNode[b]
-  -- few live values in the loops below: more made LuaJIT 2.1 abort their side traces
   local x0, y0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
   local x1, y1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
-  local zLow, zHigh = zKey(x0, y0), zKey(x1, y1)
-  local k = prevZ[b]
-  while k and zOf[k] >= zLow do
-    local x, y = nodeX[k], nodeY[k]
-    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
-      return false
+  local col0, col1 = colOf(x0), colOf(x1)
+  -- the corners from top to bottom (t, m, u), for the spans
+  local t, m, u = a, b, c
+  if nodeY[m] < nodeY[t] then t, m = m, t end
+  if nodeY[u] < nodeY[m] then m, u = u, m end
+  if nodeY[m] < nodeY[t] then t, m = m, t end
+  local tx, ty, mx, my, ux, uy = nodeX[t], nodeY[t], nodeX[m], nodeY[m], nodeX[u], nodeY[u]
+  for row = rowOf(y0), rowOf(y1) do
+    local left, right = col0, col1
+    if gridFine then
+      local lo = max(y0, gridTop + (row - 0.25) * cellSize)
+      local hi = min(y1, gridTop + (row + 1.25) * cellSize)
+      -- the long side t -> u and the short sides t -> m, m -> u are straight: their x over
+      -- [lo, hi] is extreme at its ends or at m
+      local slope = (ux - tx) / (uy - ty)
+      local xa, xb = tx + (lo - ty) * slope, tx + (hi - ty) * slope
+      local spanLo, spanHi = min(xa, xb), max(xa, xb)
+      if my >= lo and my <= hi then spanLo, spanHi = min(spanLo, mx), max(spanHi, mx) end
+      if my > ty and lo < my then
+        slope = (mx - tx) / (my - ty)
+        xa, xb = tx + (lo - ty) * slope, tx + (min(hi, my) - ty) * slope
+        spanLo, spanHi = min(spanLo, xa, xb), max(spanHi, xa, xb)
+      end
+      if uy > my and hi > my then
+        slope = (ux - mx) / (uy - my)
+        xa, xb = mx + (max(lo, my) - my) * slope, mx + (hi - my) * slope
+        spanLo, spanHi = min(spanLo, xa, xb), max(spanHi, xa, xb)
+      end
+      left, right = max(col0, colOf(spanLo) - 1), min(col1, colOf(spanHi) + 1)
     end
-    k = prevZ[k]
-  end
-  k = nextZ[b]
-  while k and zOf[k] <= zHigh do
-    local x, y = nodeX[k], nodeY[k]
-    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
-      return false
+    local base = row * gridCols + 1
+    for cell = base + left, base + right do
+      local k = cellHead[cell]
+      while k do
+        local x, y, after = nodeX[k], nodeY[k], nextInCell[k]
+        if k ~= a and k ~= c and keepListed(k) and x >= x0 and x <= x1 and y >= y0 and y <= y1
+          and blocks(k, a, b, c) then
+          return false
+        end
+        k = after
+      end
     end
-    k = nextZ[k]
   end
   return true
 end
@@ -2476,8 +2545,17 @@ local function settle()
     pending[pendingTop] = nil; pendingTop = pendingTop - 1
     if not gone[j] and orient(prevNode[j], j, nextNode[j]) == 0 then
       unlink(j); ringCount = ringCount - 1
-      pending[pendingTop + 1], pending[pendingTop + 2] = prevNode[j], nextNode[j]
+      local p, q = prevNode[j], nextNode[j]
+      pending[pendingTop + 1], pending[pendingTop + 2] = p, q
       pendingTop = pendingTop + 2
+      if listed then
+        reflexSeen[p], reflexSeen[q] = false, false
+        -- a spike dropped may leave p or q facing back: reflex again, and maybe off the list
+        if (not listed[p] and orient(prevNode[p], p, q) <= 0)
+          or (not listed[q] and orient(p, q, nextNode[q]) <= 0) then
+          listStale = true
+        end
+      end
     end
   end
   for j = pendingTop, 1, -1 do pending[j] = nil end
@@ -2496,10 +2574,12 @@ local function clipEars(s, tris)
   local stop = ear
   while ringCount > 2 do
     local a, c = prevNode[ear], nextNode[ear]
+    if listStale then buildGrid(ear) end
     if orient(a, ear, c) > 0 and isEar(ear) then
       local t = #tris
       tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
       unlink(ear); ringCount = ringCount - 1
+      reflexSeen[a], reflexSeen[c] = false, false
       pending[1], pending[2], pendingTop = a, c, 2
       settle()
       ear = c
@@ -2538,7 +2618,7 @@ local function triangulate(fname, points, holes)
   turn = turn > 0 and 1 or -1
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, nodeCount = {}, {}, {}, {}, {}, {}, {}, 0
   gone = {}
-  zOf, nextZ, prevZ = nil, nil, nil
+  listed = nil
   local outer = linkRing(points, n, 1, false)
   local starts, firstId = { outer }, n / 2 + 1
   for h = 1, holes and #holes or 0 do
@@ -2588,7 +2668,7 @@ local function triangulate(fname, points, holes)
     if not m then return nil, "a hole is outside the polygon" end
     bridge(m, lefts[i])
   end
-  buildZOrder(outer)
+  buildGrid(outer)
   local tris = {}
   if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
   return tris
@@ -2597,7 +2677,8 @@ end
 -- Drops the node arrays of the last call.
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
-  zOf, nextZ, prevZ, sortKey = nil, nil, nil, nil
+  sortKey, listed, shared, reflexSeen = nil, nil, nil, nil
+  cellOf, cellHead, nextInCell, prevInCell = nil, nil, nil, nil
 end
 
 --- Splits a polygon, optionally with holes, into triangles. Builds new tables: for load time,
