@@ -2477,55 +2477,66 @@ local function blocks(k, a, b, c)
   return false
 end
 
+-- The triangle under test, for the helpers below (upvalues rather than arguments: loops with
+-- many live values, or branches inside them, made LuaJIT 2.1 abort their side traces,
+-- "register coalescing too complex", until it flushed all its traces). Corners a, b, c as the
+-- ring runs; the box x0..x1, y0..y1; for the spans, the top corner t, the middle one m, and
+-- the slopes dx/dy of the long side t -> bottom and of the short sides t -> m and m -> bottom.
+local earA, earB, earC, boxX0, boxY0, boxX1, boxY1, boxCol0, boxCol1
+local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
+
+-- The columns of the cells the triangle may meet in a row: its span in x over the row widened
+-- by a quarter row up and down, then by a cell left and right, against rounding. Each side is
+-- straight, so its x over [lo, hi] is extreme at the ends; a short side's ends are clamped to
+-- its own rows (m may come in when outside [lo, hi]: a wider span, never a narrower one).
+local function rowSpan(row)
+  if not gridFine then return boxCol0, boxCol1 end
+  local lo = max(boxY0, gridTop + (row - 0.25) * cellSize)
+  local hi = min(boxY1, gridTop + (row + 1.25) * cellSize)
+  local x1, x2 = topX + (lo - topY) * longSlope, topX + (hi - topY) * longSlope
+  local x3, x4 = topX + (min(lo, midY) - topY) * upperSlope, topX + (min(hi, midY) - topY) * upperSlope
+  local x5, x6 = midX + (max(lo, midY) - midY) * lowerSlope, midX + (max(hi, midY) - midY) * lowerSlope
+  return max(boxCol0, colOf(min(x1, x2, x3, x4, x5, x6)) - 1),
+    min(boxCol1, colOf(max(x1, x2, x3, x4, x5, x6)) + 1)
+end
+
+-- Whether a listed node in cells first..last blocks the triangle.
+local function cellsBlock(first, last)
+  for cell = first, last do
+    local k = cellHead[cell]
+    while k do
+      local x, y, after = nodeX[k], nodeY[k], nextInCell[k]
+      if k ~= earA and k ~= earC and keepListed(k) and x >= boxX0 and x <= boxX1
+        and y >= boxY0 and y <= boxY1 and blocks(k, earA, earB, earC) then
+        return true
+      end
+      k = after
+    end
+  end
+  return false
+end
+
 -- Whether node b, strictly convex, is an ear: no listed node in the cells its triangle meets
--- blocks it. Row by row, the triangle's span in x over the row (widened by a quarter row up
--- and down, and by a cell left and right, against rounding) gives the cells to visit.
+-- blocks it.
 local function isEar(b)
   local a, c = prevNode[b], nextNode[b]
-  local x0, y0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
-  local x1, y1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
-  local col0, col1 = colOf(x0), colOf(x1)
-  -- the corners from top to bottom (t, m, u), for the spans
+  earA, earB, earC = a, b, c
+  boxX0, boxY0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
+  boxX1, boxY1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
+  boxCol0, boxCol1 = colOf(boxX0), colOf(boxX1)
   local t, m, u = a, b, c
   if nodeY[m] < nodeY[t] then t, m = m, t end
   if nodeY[u] < nodeY[m] then m, u = u, m end
   if nodeY[m] < nodeY[t] then t, m = m, t end
-  local tx, ty, mx, my, ux, uy = nodeX[t], nodeY[t], nodeX[m], nodeY[m], nodeX[u], nodeY[u]
-  for row = rowOf(y0), rowOf(y1) do
-    local left, right = col0, col1
-    if gridFine then
-      local lo = max(y0, gridTop + (row - 0.25) * cellSize)
-      local hi = min(y1, gridTop + (row + 1.25) * cellSize)
-      -- the long side t -> u and the short sides t -> m, m -> u are straight: their x over
-      -- [lo, hi] is extreme at its ends or at m
-      local slope = (ux - tx) / (uy - ty)
-      local xa, xb = tx + (lo - ty) * slope, tx + (hi - ty) * slope
-      local spanLo, spanHi = min(xa, xb), max(xa, xb)
-      if my >= lo and my <= hi then spanLo, spanHi = min(spanLo, mx), max(spanHi, mx) end
-      if my > ty and lo < my then
-        slope = (mx - tx) / (my - ty)
-        xa, xb = tx + (lo - ty) * slope, tx + (min(hi, my) - ty) * slope
-        spanLo, spanHi = min(spanLo, xa, xb), max(spanHi, xa, xb)
-      end
-      if uy > my and hi > my then
-        slope = (ux - mx) / (uy - my)
-        xa, xb = mx + (max(lo, my) - my) * slope, mx + (hi - my) * slope
-        spanLo, spanHi = min(spanLo, xa, xb), max(spanHi, xa, xb)
-      end
-      left, right = max(col0, colOf(spanLo) - 1), min(col1, colOf(spanHi) + 1)
-    end
+  topX, topY, midX, midY = nodeX[t], nodeY[t], nodeX[m], nodeY[m]
+  -- a level side has slope 0: its ends come in as the other sides' ends
+  longSlope = (nodeX[u] - topX) / (nodeY[u] - topY)   -- not level: the triangle has area
+  upperSlope = midY > topY and (midX - topX) / (midY - topY) or 0
+  lowerSlope = nodeY[u] > midY and (nodeX[u] - midX) / (nodeY[u] - midY) or 0
+  for row = rowOf(boxY0), rowOf(boxY1) do
+    local left, right = rowSpan(row)
     local base = row * gridCols + 1
-    for cell = base + left, base + right do
-      local k = cellHead[cell]
-      while k do
-        local x, y, after = nodeX[k], nodeY[k], nextInCell[k]
-        if k ~= a and k ~= c and keepListed(k) and x >= x0 and x <= x1 and y >= y0 and y <= y1
-          and blocks(k, a, b, c) then
-          return false
-        end
-        k = after
-      end
-    end
+    if cellsBlock(base + left, base + right) then return false end
   end
   return true
 end
