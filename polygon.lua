@@ -2173,14 +2173,22 @@ local function sweepCrossing(starts)
   end
   sort(events, eventOrder)
   local status, m = {}, 0
+  local leftPlace, leftEnd = nil, nil   -- where the last edge to leave was, and its right end
   for i = 1, #events do
     local e = events[i]
     local s = e > 0 and e or -e
-    -- the first place whose edge does not lie below s
+    -- the first place whose edge does not lie below s; an edge coming in where one has just
+    -- left (a vertex along the outline) most often takes its place: two tests vouch for it
     local lo, hi = 1, m + 1
-    while lo < hi do
-      local mid = (lo + hi - (lo + hi) % 2) / 2
-      if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+    if e > 0 and leftEnd and same(leftEnd, sweepLeft[s]) and leftPlace <= hi
+      and (leftPlace == 1 or edgeOrder(s, status[leftPlace - 1]) > 0)
+      and (leftPlace == hi or edgeOrder(s, status[leftPlace]) <= 0) then
+      lo = leftPlace
+    else
+      while lo < hi do
+        local mid = (lo + hi - (lo + hi) % 2) / 2
+        if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+      end
     end
     if e > 0 then
       table.insert(status, lo, s); m = m + 1
@@ -2191,6 +2199,7 @@ local function sweepCrossing(starts)
       while lo <= m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
       if status[lo] ~= s then return nil end
       table.remove(status, lo); m = m - 1
+      leftPlace, leftEnd = lo, sweepRight[s]
       local below, above = status[lo - 1], status[lo]
       if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
         return true
