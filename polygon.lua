@@ -2070,7 +2070,7 @@ local function orient(a, b, c)
   local e = CROSS_BOUND * abs(l + r)
   -- one test of |s|, not one per sign: a branch taken for half the nodes (convex or reflex)
   -- made side traces that aborted until LuaJIT flushed all its traces
-  if not (abs(s) >= e) then   -- also when l and r differ in sign and s is 0: exact, rare
+  if abs(s) < e or s ~= s then   -- also when l and r differ in sign and s is 0: exact, rare
     s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
   end
   return s * turn
