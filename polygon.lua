@@ -2025,8 +2025,9 @@ end
 do   -- this section's helpers are local to it
 -- Ear clipping over one ring of vertex nodes: holes are first joined to the outer ring by a
 -- bridge to a vertex they see (Eberly's method), an ear is a strictly convex vertex whose
--- triangle no other vertex blocks, and the vertices a triangle's box could hold are found in a
--- z-order (Morton) list, as earcut does, so an ear test looks at the vertices near its triangle,
+-- triangle no other vertex blocks, and the vertices that could block it are found in a grid of
+-- cells, visited along the triangle row by row, holding only vertices that are not strictly
+-- convex (or sit at a pinch point), so an ear test looks at the few vertices near its triangle,
 -- not at all of them. Every decision is an exact sign (orient: cross's filter, then crossExact);
 -- coordinates are only ever copied.
 -- The nodes live in arrays indexed by node number, set up by one call and dropped at its end.
@@ -2449,8 +2450,9 @@ end
 -- Whether node k may still block an ear: an ear's triangle that holds some node holds a node
 -- not strictly convex (the highest point inside over the new edge c -> a turns away from the
 -- inside, which sees past it), or one at a pinch point; a strictly convex node elsewhere is
--- dropped from the z-order list at its first test, as clipping never makes it reflex again
--- (its neighbours only move inwards) unless a spike collapses over it (settle rebuilds then).
+-- dropped from its cell at its first test, as clipping never makes it reflex again (its
+-- neighbours only move inwards) unless a spike collapses over it (then settle sets listStale
+-- and the grid is built again).
 local function keepListed(k)
   if reflexSeen[k] or shared[k] then return true end
   if orient(prevNode[k], k, nextNode[k]) > 0 then unlist(k); return false end
@@ -2710,7 +2712,7 @@ end
 -- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
 -- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
 -- found by a sweep in O(n log n); the ears cost a few microseconds per vertex on LuaJIT, growing
--- slowly with n (bench/concave.lua).
+-- about as the square root of n on outlines of long thin spikes (bench/concave.lua).
 -- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
 -- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
 -- outside the polygon)
