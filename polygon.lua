@@ -2297,8 +2297,9 @@ end
 do   -- this section's helpers are local to it
 -- Ear clipping over one ring of vertex nodes: holes are first joined to the outer ring by a
 -- bridge to a vertex they see (Eberly's method), an ear is a strictly convex vertex whose
--- triangle no other vertex blocks, and the vertices a triangle's box could hold are found in a
--- z-order (Morton) list, as earcut does, so an ear test looks at the vertices near its triangle,
+-- triangle no other vertex blocks, and the vertices that could block it are found in a grid of
+-- cells, visited along the triangle row by row, holding only vertices that are not strictly
+-- convex (or sit at a pinch point), so an ear test looks at the few vertices near its triangle,
 -- not at all of them. Every decision is an exact sign (orient: cross's filter, then crossExact);
 -- coordinates are only ever copied.
 -- The nodes live in arrays indexed by node number, set up by one call and dropped at its end.
@@ -2310,7 +2311,13 @@ local inX, inY          -- the caller's values, copied into the output bit for b
 local origin            -- the input vertex a node stands for (a bridge copies two of them)
 local nextNode, prevNode, nodeCount
 local gone              -- gone[k]: node k has been unlinked
-local zOf, nextZ, prevZ -- the z-order list, built once the holes are joined
+local cellOf, cellHead  -- the ear test's grid (see buildGrid): node k's cell, a cell's first
+local nextInCell, prevInCell   -- node, and the links of a cell's list
+local listed            -- listed[k]: node k is still in the ear test's grid
+local shared            -- shared[k]: another node lies at node k's place
+local reflexSeen        -- reflexSeen[k]: node k was found not strictly convex and has kept
+                        -- its neighbours since
+local listStale         -- a node dropped from the grid may have turned reflex
 local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
 
 -- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
@@ -2334,7 +2341,9 @@ local function orient(a, b, c)
   local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
   local s = l - r
   local e = CROSS_BOUND * abs(l + r)
-  if not (s >= e or -s >= e) then   -- also when l and r differ in sign and s is 0: exact, rare
+  -- one test of |s|, not one per sign: a branch taken for half the nodes (convex or reflex)
+  -- made side traces that aborted until LuaJIT flushed all its traces
+  if abs(s) < e or s ~= s then   -- also when l and r differ in sign and s is 0: exact, rare
     s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
   end
   return s * turn
@@ -2351,16 +2360,20 @@ local function newNode(x, y, id)
   return k
 end
 
--- Unlinks node k from the ring and, once built, from the z-order list.
+-- Drops node k from its cell of the ear test's grid.
+local function unlist(k)
+  listed[k] = false
+  local before, after = prevInCell[k], nextInCell[k]
+  if before then nextInCell[before] = after else cellHead[cellOf[k]] = after end
+  if after then prevInCell[after] = before end
+end
+
+-- Unlinks node k from the ring and, once built, from the ear test's grid.
 local function unlink(k)
   gone[k] = true
   local p, q = prevNode[k], nextNode[k]
   nextNode[p], prevNode[q] = q, p
-  if zOf then
-    local pz, nz = prevZ[k], nextZ[k]
-    if pz then nextZ[pz] = nz end
-    if nz then prevZ[nz] = pz end
-  end
+  if listed and listed[k] then unlist(k) end
 end
 
 -- Links the vertices of a flat array into a ring, in reverse when `reversed`, skipping
@@ -2435,14 +2448,22 @@ local function sweepCrossing(starts)
   end
   sort(events, eventOrder)
   local status, m = {}, 0
+  local leftPlace, leftEnd = nil, nil   -- where the last edge to leave was, and its right end
   for i = 1, #events do
     local e = events[i]
     local s = e > 0 and e or -e
-    -- the first place whose edge does not lie below s
+    -- the first place whose edge does not lie below s; an edge coming in where one has just
+    -- left (a vertex along the outline) most often takes its place: two tests vouch for it
     local lo, hi = 1, m + 1
-    while lo < hi do
-      local mid = (lo + hi - (lo + hi) % 2) / 2
-      if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+    if e > 0 and leftEnd and same(leftEnd, sweepLeft[s]) and leftPlace <= hi
+      and (leftPlace == 1 or edgeOrder(s, status[leftPlace - 1]) > 0)
+      and (leftPlace == hi or edgeOrder(s, status[leftPlace]) <= 0) then
+      lo = leftPlace
+    else
+      while lo < hi do
+        local mid = (lo + hi - (lo + hi) % 2) / 2
+        if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+      end
     end
     if e > 0 then
       table.insert(status, lo, s); m = m + 1
@@ -2453,6 +2474,7 @@ local function sweepCrossing(starts)
       while lo <= m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
       if status[lo] ~= s then return nil end
       table.remove(status, lo); m = m - 1
+      leftPlace, leftEnd = lo, sweepRight[s]
       local below, above = status[lo - 1], status[lo]
       if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
         return true
@@ -2630,50 +2652,84 @@ local function bridge(m, h)
   if same(m, h) then unlink(h); unlink(m2) end
 end
 
--- Bit-interleaving of a byte (bit i goes to bit 2 i), for z-order keys without bit operators.
-local SPREAD = {}
-for b = 0, 255 do
-  local v, bit, out = b, 1, 0
-  while v > 0 do
-    if v % 2 == 1 then out = out + bit end
-    v, bit = (v - v % 2) / 2, bit * 4
-  end
-  SPREAD[b] = out
+-- The ear test's index: a grid of square cells over the ring's box, each holding a list of the
+-- nodes in it that may still block an ear (see keepListed). An ear's triangle is visited row of
+-- cells by row, only the cells its span in that row touches: a long thin triangle (a spike of
+-- a noisy outline) meets a few cells per row where its box would hold a large share of all
+-- the nodes.
+local CELL_LOAD = 2     -- nodes per cell on average, when the grid is built
+local SHARED_RUN = 8    -- nodes of one cell compared pair by pair, at most (then all shared)
+local FINE = 2 ^ -30    -- cells wider than this times the largest coordinate are visited by
+                        -- the triangle's span (rounding stays far below a cell); narrower
+                        -- ones, by its box (an outline tiny against its offset)
+local gridLeft, gridTop, gridScale, gridCols, gridRows, cellSize, gridFine
+
+-- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so a
+-- box's corners bound the cells of every point inside it.
+local function colOf(x)
+  local col = floor((x - gridLeft) * gridScale)
+  return col < gridCols and col or gridCols - 1
+end
+local function rowOf(y)
+  local row = floor((y - gridTop) * gridScale)
+  return row < gridRows and row or gridRows - 1
 end
 
-local Z_CELLS = 32767   -- 15 bits per axis: keys below 2^30, exact in doubles and integers
-local zLeft, zTop, zScale
-
--- The Morton key of a point. Monotone in x and in y (the scaling rounds monotonically), so a
--- box's corners bound the keys of every point inside it.
-local function zKey(x, y)
-  local ix = floor((x - zLeft) * zScale)
-  local iy = floor((y - zTop) * zScale)
-  local xl, yl = ix % 256, iy % 256
-  return SPREAD[xl] + SPREAD[(ix - xl) / 256] * 65536
-    + 2 * (SPREAD[yl] + SPREAD[(iy - yl) / 256] * 65536)
-end
-
--- Sorts the ring at s by z-order into nextZ / prevZ.
-local function buildZOrder(s)
-  local list = {}
-  local x0, y0, x1, y1 = huge, huge, -huge, -huge
+-- Files every node of the ring at s in its cell, and marks the nodes sharing a place.
+local function buildGrid(s)
+  local x0, y0, x1, y1, count = huge, huge, -huge, -huge, 0
   local k = s
   repeat
-    list[#list + 1] = k
     x0, y0 = min(x0, nodeX[k]), min(y0, nodeY[k])
     x1, y1 = max(x1, nodeX[k]), max(y1, nodeY[k])
+    count = count + 1
     k = nextNode[k]
   until k == s
-  local size = max(x1 - x0, y1 - y0)
-  zLeft, zTop, zScale = x0, y0, size > 0 and Z_CELLS / size or 0
-  zOf, nextZ, prevZ = {}, {}, {}
-  for i = 1, #list do zOf[list[i]] = zKey(nodeX[list[i]], nodeY[list[i]]) end
-  sortKey = zOf
-  sort(list, bySortKey)
-  for i = 1, #list do
-    nextZ[list[i]], prevZ[list[i]] = list[i + 1], list[i - 1]
+  -- the ring has area, so its box has width and height
+  cellSize = sqrt((x1 - x0) * (y1 - y0) * CELL_LOAD / count)
+  gridLeft, gridTop, gridScale = x0, y0, 1 / cellSize
+  gridCols = min(floor((x1 - x0) * gridScale) + 1, count)
+  gridRows = min(floor((y1 - y0) * gridScale) + 1, count)
+  gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
+  cellOf, cellHead, nextInCell, prevInCell = {}, {}, {}, {}
+  listed, shared, reflexSeen, listStale = {}, {}, {}, false
+  k = s
+  repeat
+    local cell = rowOf(nodeY[k]) * gridCols + colOf(nodeX[k]) + 1
+    local head = cellHead[cell]
+    cellOf[k], nextInCell[k], listed[k] = cell, head, true
+    if head then prevInCell[head] = k end
+    cellHead[cell] = k
+    k = nextNode[k]
+  until k == s
+  -- nodes at one place share a cell; a crowded cell is all marked shared
+  for _, head in pairs(cellHead) do
+    local size, j = 0, head
+    while j do size = size + 1; j = nextInCell[j] end
+    j = head
+    while j do
+      if size > SHARED_RUN then shared[j] = true end
+      local m = size <= SHARED_RUN and nextInCell[j]
+      while m do
+        if same(j, m) then shared[j], shared[m] = true, true end
+        m = nextInCell[m]
+      end
+      j = nextInCell[j]
+    end
   end
+end
+
+-- Whether node k may still block an ear: an ear's triangle that holds some node holds a node
+-- not strictly convex (the highest point inside over the new edge c -> a turns away from the
+-- inside, which sees past it), or one at a pinch point; a strictly convex node elsewhere is
+-- dropped from its cell at its first test, as clipping never makes it reflex again (its
+-- neighbours only move inwards) unless a spike collapses over it (then settle sets listStale
+-- and the grid is built again).
+local function keepListed(k)
+  if reflexSeen[k] or shared[k] then return true end
+  if orient(prevNode[k], k, nextNode[k]) > 0 then unlist(k); return false end
+  reflexSeen[k] = true
+  return true
 end
 
 -- Whether node k keeps the triangle (a, b, c) (turning the ring's way) from being an ear: it
@@ -2706,29 +2762,66 @@ local function blocks(k, a, b, c)
   return false
 end
 
--- Whether node b, strictly convex, is an ear: no node whose z-key lies within the triangle's
--- box blocks it.
+-- The triangle under test, for the helpers below (upvalues rather than arguments: loops with
+-- many live values, or branches inside them, made LuaJIT 2.1 abort their side traces,
+-- "register coalescing too complex", until it flushed all its traces). Corners a, b, c as the
+-- ring runs; the box x0..x1, y0..y1; for the spans, the top corner t, the middle one m, and
+-- the slopes dx/dy of the long side t -> bottom and of the short sides t -> m and m -> bottom.
+local earA, earB, earC, boxX0, boxY0, boxX1, boxY1, boxCol0, boxCol1
+local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
+
+-- The columns of the cells the triangle may meet in a row: its span in x over the row widened
+-- by a quarter row up and down, then by a cell left and right, against rounding. Each side is
+-- straight, so its x over [lo, hi] is extreme at the ends; a short side's ends are clamped to
+-- its own rows (m may come in when outside [lo, hi]: a wider span, never a narrower one).
+local function rowSpan(row)
+  if not gridFine then return boxCol0, boxCol1 end
+  local lo = max(boxY0, gridTop + (row - 0.25) * cellSize)
+  local hi = min(boxY1, gridTop + (row + 1.25) * cellSize)
+  local x1, x2 = topX + (lo - topY) * longSlope, topX + (hi - topY) * longSlope
+  local x3, x4 = topX + (min(lo, midY) - topY) * upperSlope, topX + (min(hi, midY) - topY) * upperSlope
+  local x5, x6 = midX + (max(lo, midY) - midY) * lowerSlope, midX + (max(hi, midY) - midY) * lowerSlope
+  return max(boxCol0, colOf(min(x1, x2, x3, x4, x5, x6)) - 1),
+    min(boxCol1, colOf(max(x1, x2, x3, x4, x5, x6)) + 1)
+end
+
+-- Whether a listed node in cells first..last blocks the triangle.
+local function cellsBlock(first, last)
+  for cell = first, last do
+    local k = cellHead[cell]
+    while k do
+      local x, y, after = nodeX[k], nodeY[k], nextInCell[k]
+      if k ~= earA and k ~= earC and keepListed(k) and x >= boxX0 and x <= boxX1
+        and y >= boxY0 and y <= boxY1 and blocks(k, earA, earB, earC) then
+        return true
+      end
+      k = after
+    end
+  end
+  return false
+end
+
+-- Whether node b, strictly convex, is an ear: no listed node in the cells its triangle meets
+-- blocks it.
 local function isEar(b)
   local a, c = prevNode[b], nextNode[b]
-  -- few live values in the loops below: more made LuaJIT 2.1 abort their side traces
-  local x0, y0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
-  local x1, y1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
-  local zLow, zHigh = zKey(x0, y0), zKey(x1, y1)
-  local k = prevZ[b]
-  while k and zOf[k] >= zLow do
-    local x, y = nodeX[k], nodeY[k]
-    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
-      return false
-    end
-    k = prevZ[k]
-  end
-  k = nextZ[b]
-  while k and zOf[k] <= zHigh do
-    local x, y = nodeX[k], nodeY[k]
-    if k ~= a and k ~= c and x >= x0 and x <= x1 and y >= y0 and y <= y1 and blocks(k, a, b, c) then
-      return false
-    end
-    k = nextZ[k]
+  earA, earB, earC = a, b, c
+  boxX0, boxY0 = min(nodeX[a], nodeX[b], nodeX[c]), min(nodeY[a], nodeY[b], nodeY[c])
+  boxX1, boxY1 = max(nodeX[a], nodeX[b], nodeX[c]), max(nodeY[a], nodeY[b], nodeY[c])
+  boxCol0, boxCol1 = colOf(boxX0), colOf(boxX1)
+  local t, m, u = a, b, c
+  if nodeY[m] < nodeY[t] then t, m = m, t end
+  if nodeY[u] < nodeY[m] then m, u = u, m end
+  if nodeY[m] < nodeY[t] then t, m = m, t end
+  topX, topY, midX, midY = nodeX[t], nodeY[t], nodeX[m], nodeY[m]
+  -- a level side has slope 0: its ends come in as the other sides' ends
+  longSlope = (nodeX[u] - topX) / (nodeY[u] - topY)   -- not level: the triangle has area
+  upperSlope = midY > topY and (midX - topX) / (midY - topY) or 0
+  lowerSlope = nodeY[u] > midY and (nodeX[u] - midX) / (nodeY[u] - midY) or 0
+  for row = rowOf(boxY0), rowOf(boxY1) do
+    local left, right = rowSpan(row)
+    local base = row * gridCols + 1
+    if cellsBlock(base + left, base + right) then return false end
   end
   return true
 end
@@ -2748,8 +2841,17 @@ local function settle()
     pending[pendingTop] = nil; pendingTop = pendingTop - 1
     if not gone[j] and orient(prevNode[j], j, nextNode[j]) == 0 then
       unlink(j); ringCount = ringCount - 1
-      pending[pendingTop + 1], pending[pendingTop + 2] = prevNode[j], nextNode[j]
+      local p, q = prevNode[j], nextNode[j]
+      pending[pendingTop + 1], pending[pendingTop + 2] = p, q
       pendingTop = pendingTop + 2
+      if listed then
+        reflexSeen[p], reflexSeen[q] = false, false
+        -- a spike dropped may leave p or q facing back: reflex again, and maybe off the list
+        if (not listed[p] and orient(prevNode[p], p, q) <= 0)
+          or (not listed[q] and orient(p, q, nextNode[q]) <= 0) then
+          listStale = true
+        end
+      end
     end
   end
   for j = pendingTop, 1, -1 do pending[j] = nil end
@@ -2768,10 +2870,12 @@ local function clipEars(s, tris)
   local stop = ear
   while ringCount > 2 do
     local a, c = prevNode[ear], nextNode[ear]
+    if listStale then buildGrid(ear) end
     if orient(a, ear, c) > 0 and isEar(ear) then
       local t = #tris
       tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
       unlink(ear); ringCount = ringCount - 1
+      reflexSeen[a], reflexSeen[c] = false, false
       pending[1], pending[2], pendingTop = a, c, 2
       settle()
       ear = c
@@ -2810,7 +2914,7 @@ local function triangulate(fname, points, holes)
   turn = turn > 0 and 1 or -1
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, nodeCount = {}, {}, {}, {}, {}, {}, {}, 0
   gone = {}
-  zOf, nextZ, prevZ = nil, nil, nil
+  listed = nil
   local outer = linkRing(points, n, 1, false)
   local starts, firstId = { outer }, n / 2 + 1
   for h = 1, holes and #holes or 0 do
@@ -2860,7 +2964,7 @@ local function triangulate(fname, points, holes)
     if not m then return nil, "a hole is outside the polygon" end
     bridge(m, lefts[i])
   end
-  buildZOrder(outer)
+  buildGrid(outer)
   local tris = {}
   if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
   return tris
@@ -2869,7 +2973,8 @@ end
 -- Drops the node arrays of the last call.
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
-  zOf, nextZ, prevZ, sortKey = nil, nil, nil, nil
+  sortKey, listed, shared, reflexSeen = nil, nil, nil, nil
+  cellOf, cellHead, nextInCell, prevInCell = nil, nil, nil, nil
 end
 
 --- Splits a polygon, optionally with holes, into triangles. Builds new tables: for load time,
@@ -2879,7 +2984,7 @@ end
 -- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
 -- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
 -- found by a sweep in O(n log n); the ears cost a few microseconds per vertex on LuaJIT, growing
--- slowly with n (bench/concave.lua).
+-- about as the square root of n on outlines of long thin spikes (bench/concave.lua).
 -- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
 -- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
 -- outside the polygon)
