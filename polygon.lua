@@ -191,8 +191,8 @@ end
 -- When every lo is 0 (nearby coordinates, the usual case) B is the determinant. Otherwise B's
 -- estimate, then the estimate with the los' products added, decide it when they clear his
 -- bounds for those stages; only what remains is summed as an expansion of the sixteen partial
--- products. The first stages have no loop: the expansion's
--- loops, recorded into LuaJIT's traces, left exits it could not compile.
+-- products. The first stages have no loop: the expansion's loops, recorded into LuaJIT's traces,
+-- left exits it could not compile.
 local crossExact
 do
   local BOUND_B = (2 + 12 * EPS) * EPS             -- Shewchuk's ccwerrboundB
@@ -2704,12 +2704,12 @@ local function buildGrid(s)
   until k == s
   -- nodes at one place share a cell; a crowded cell is all marked shared
   for _, head in pairs(cellHead) do
-    local size, j = 0, head
-    while j do size = size + 1; j = nextInCell[j] end
+    local crowd, j = 0, head
+    while j do crowd = crowd + 1; j = nextInCell[j] end
     j = head
     while j do
-      if size > SHARED_RUN then shared[j] = true end
-      local m = size <= SHARED_RUN and nextInCell[j]
+      if crowd > SHARED_RUN then shared[j] = true end
+      local m = crowd <= SHARED_RUN and nextInCell[j]
       while m do
         if same(j, m) then shared[j], shared[m] = true, true end
         m = nextInCell[m]
@@ -3219,16 +3219,16 @@ end
 
 -- The box around all parts of view and their largest coordinate magnitude, into view.
 local function shapeBox(view)
-  local size, left, top, right, bottom = 0.0, huge, huge, -huge, -huge
+  local magnitude, left, top, right, bottom = 0.0, huge, huge, -huge, -huge
   local boxes = view.boxes
   for b = 4, 4 * view.count, 4 do
     local xmin, ymin, xmax, ymax = boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b]
     if xmin <= xmax then   -- parts of fewer than 3 points have none
-      size = max(size, -xmin, xmax, -ymin, ymax)
+      magnitude = max(magnitude, -xmin, xmax, -ymin, ymax)
       left, top, right, bottom = min(left, xmin), min(top, ymin), max(right, xmax), max(bottom, ymax)
     end
   end
-  view.size, view.left, view.top, view.right, view.bottom = size, left, top, right, bottom
+  view.magnitude, view.left, view.top, view.right, view.bottom = magnitude, left, top, right, bottom
 end
 
 -- Builds the preparation of a list of parts, whose parts were checked to be tables of even
@@ -3429,7 +3429,7 @@ end
 -- `other` the part it is paired with. Coordinates are scaled by k. Returns the last index used
 -- and whether some edge separates the two parts, decided exactly (w, h bound the scaled
 -- coordinate differences, for projectionTolerance).
-local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, w, h, top)
+local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
   local e = ne / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
@@ -3444,7 +3444,7 @@ local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k,
         if s < lo then lo = s end
       end
       if not separated then
-        local tol = projectionTolerance(w, h, ux, uy)
+        local tol = projectionTolerance(spanX, spanY, ux, uy)
         if -lo <= tol and (-lo < -tol
             or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no)) then
           separated = true
@@ -3531,13 +3531,13 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   local a, b = 4 * i, 4 * j
-  local w = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
-  local h = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
+  local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
+  local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
   faceFirst[np + 1] = top + 1
   local apart1, apart2
-  top, apart1 = addFaces(p1, n1, turn1, view1.normals[i], p2, n2, view1.internal[i], 1.0, k, w, h,
+  top, apart1 = addFaces(p1, n1, turn1, view1.normals[i], p2, n2, view1.internal[i], 1.0, k, spanX, spanY,
     top)
-  top, apart2 = addFaces(p2, n2, turn2, view2.normals[j], p1, n1, view2.internal[j], -1.0, k, w, h,
+  top, apart2 = addFaces(p2, n2, turn2, view2.normals[j], p1, n1, view2.internal[j], -1.0, k, spanX, spanY,
     top)
   faceFirst[np + 2] = top + 1
   return np + 1, top, not (apart1 or apart2)
@@ -3567,12 +3567,12 @@ function collideParts(fname, shape1, shape2, wantPush)
     end
     return false
   end
-  local size = max(view1.size, view2.size)
+  local magnitude = max(view1.magnitude, view2.magnitude)
   local k = 1.0
-  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  if magnitude > EXACT_TOP or magnitude < 2^-400 then k = powerScale(magnitude, 2^100, 2^164) end
   local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
     + (max(view1.bottom, view2.bottom) - min(view1.top, view2.top))) * k
-  local margin = 2^-47 * extent + 2^-52 * size * k   -- delta above: 64 eps E + 2 eps S
+  local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- delta above: 64 eps E + 2 eps S
   callStamp = callStamp + 1
   -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
   -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box,
@@ -3785,12 +3785,12 @@ function collideCircleParts(fname, shape, cx, cy, r)
   boxes1 = view.boxes
   cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
   if r == 0 then return false end
-  local size = max(view.size, abs(cx) + r, abs(cy) + r)
+  local magnitude = max(view.magnitude, abs(cx) + r, abs(cy) + r)
   callStamp = callStamp + 1
   local k = 1.0
-  if size > EXACT_TOP or size < 2^-400 then k = powerScale(size, 2^100, 2^164) end
+  if magnitude > EXACT_TOP or magnitude < 2^-400 then k = powerScale(magnitude, 2^100, 2^164) end
   local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
-  local margin = 2^-47 * extent + 2^-52 * size * k   -- as for polygons: 64 eps E + 2 eps S
+  local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- as for polygons: 64 eps E + 2 eps S
   local np, last, hit = 0, 0, false
   for i = 1, count do
     if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]

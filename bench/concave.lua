@@ -18,7 +18,8 @@ local function spiral(n) return shapes.spiral(n, math.max(2, math.floor(math.sqr
 
 local KINDS = { { "noisy circle", noisyCircle }, { "spiral", spiral } }
 
--- Hard cases from the issue: each is a flat array and whether it is a valid polygon.
+-- Hard cases (where love.math.triangulate or naive ear clipping fail): each is a flat array and
+-- whether it is a valid polygon.
 local function translated(points, d) return shapes.translate(points, d, d) end
 local U = { 0, 0, 50, 0, 50, 200, 250, 200, 250, 0, 300, 0, 300, 250, 0, 250 }
 local L = { 0, 0, 20, 0, 20, 10, 10, 10, 10, 20, 0, 20 }

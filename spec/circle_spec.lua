@@ -28,7 +28,7 @@ end
 
 -- after moving the centre by (dx, dy) the circle touches without colliding; pushed back
 -- by a millionth of the way it collides again
-local function assert_just_touch(points, cx, cy, r, dx, dy)
+local function assertJustTouch(points, cx, cy, r, dx, dy)
   assert.are.equal(false, circleV(points, cx + dx, cy + dy, r))
   assert.is_truthy(circleV(points, cx + dx - dx * 1e-6, cy + dy - dy * 1e-6, r))
 end
@@ -40,7 +40,7 @@ describe("polygonCircleCollideV", function()
     it("returns overlap 1 and pushes the circle by (1, 0) in both windings", function()
       for _, p in ipairs(WINDINGS) do
         assertPush(p, 12, 5, 3, 1, 1, 0)
-        assert_just_touch(p, 12, 5, 3, 1, 0)
+        assertJustTouch(p, 12, 5, 3, 1, 0)
       end
     end)
   end)
@@ -50,7 +50,7 @@ describe("polygonCircleCollideV", function()
     it("returns overlap 1 and pushes the circle by (0, -1) in both windings", function()
       for _, p in ipairs(WINDINGS) do
         assertPush(p, 4, -2, 3, 1, 0, -1)
-        assert_just_touch(p, 4, -2, 3, 0, -1)
+        assertJustTouch(p, 4, -2, 3, 0, -1)
       end
     end)
   end)
@@ -121,7 +121,7 @@ describe("polygonCircleCollideV", function()
     it("returns overlap 4 and resolves in one step with (4, 0)", function()
       for _, p in ipairs(WINDINGS) do
         assertPush(p, 7, 4, 1, 4, 4, 0)
-        assert_just_touch(p, 7, 4, 1, 4, 0)
+        assertJustTouch(p, 7, 4, 1, 4, 0)
       end
     end)
 
@@ -130,7 +130,7 @@ describe("polygonCircleCollideV", function()
       -- vertex axes from (0,0) or (10,0) at distance sqrt(41): far larger
       for _, p in ipairs(WINDINGS) do
         assertPush(p, 5, 4, 0.5, 4.5, 0, -4.5)
-        assert_just_touch(p, 5, 4, 0.5, 0, -4.5)
+        assertJustTouch(p, 5, 4, 0.5, 0, -4.5)
       end
     end)
   end)
@@ -141,7 +141,7 @@ describe("polygonCircleCollideV", function()
     it("returns overlap 104 and pushes the circle by (104, 0)", function()
       for _, p in ipairs(WINDINGS) do
         assertPush(p, 6, 5, 100, 104, 104, 0)
-        assert_just_touch(p, 6, 5, 100, 104, 0)
+        assertJustTouch(p, 6, 5, 100, 104, 0)
       end
     end)
   end)
@@ -155,7 +155,7 @@ describe("polygonCircleCollideV", function()
         assert.are.equal(2, overlap)
         assert.is_true(math.abs(math.abs(dx) + math.abs(dy) - 2) <= 8 * EPS * 10)
         assert.are.equal(0, dx * dy)
-        assert_just_touch(p, 10, 10, 2, dx, dy)
+        assertJustTouch(p, 10, 10, 2, dx, dy)
       end
     end)
 

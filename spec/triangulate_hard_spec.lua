@@ -135,7 +135,7 @@ describe("polygonTriangulate and polygonConvexParts on hard input", function()
       end
     end)
 
-    it("split the issue's two tiles meeting at a corner into the two tiles", function()
+    it("split two tiles meeting at a corner into the two tiles", function()
       local parts = checkBoth({ 0, 0, 10, 0, 10, 10, 20, 10, 20, 20, 10, 20, 10, 10, 0, 10 })
       assert.are.equal(2, #parts)
     end)
