@@ -3568,6 +3568,9 @@ function collideParts(fname, shape1, shape2, wantPush)
     return false
   end
   local magnitude = max(view1.magnitude, view2.magnitude)
+  -- beyond the exact range, or so small that products would underflow, the faces are built on
+  -- coordinates scaled by a power of two k into [2^100, 2^164]: there every product of two
+  -- stays far from overflow (2^328) and underflow, and scaling back is exact
   local k = 1.0
   if magnitude > EXACT_TOP or magnitude < 2^-400 then k = powerScale(magnitude, 2^100, 2^164) end
   local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
@@ -3787,7 +3790,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
   if r == 0 then return false end
   local magnitude = max(view.magnitude, abs(cx) + r, abs(cy) + r)
   callStamp = callStamp + 1
-  local k = 1.0
+  local k = 1.0   -- scaled as for polygons (collideParts), for the same reason
   if magnitude > EXACT_TOP or magnitude < 2^-400 then k = powerScale(magnitude, 2^100, 2^164) end
   local extent = ((max(right, cx + r) - min(left, cx - r)) + (max(bottom, cy + r) - min(top, cy - r))) * k
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- as for polygons: 64 eps E + 2 eps S
