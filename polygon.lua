@@ -273,24 +273,25 @@ end
 -- The x coordinates are taken relative to the first vertex so the offset of a polygon does not
 -- matter: sum over edges of (X_i + X_j)(y_j - y_i) with X = x - x_1, the tutorial's trapezoid
 -- form, equal to the cross-product form because the y differences around a polygon sum to zero.
--- Also returns sx = sum of X_i^2 and sd = sum of (y_j - y_i)^2, branch-free, for areaBound.
+-- Also returns xSq = sum of X_i^2 and dSq = sum of (y_j - y_i)^2, branch-free, for
+-- areaUncertain.
 local function shoelace(points, n)
   local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py = 0.0, y1
-  local sum, sx, sd = 0.0, 0.0, 0.0
+  local sum, xSq, dSq = 0.0, 0.0, 0.0
   for i = 3, n - 1, 2 do
     local x, y = points[i] - x0, points[i + 1] + 0.0
     local d = y - py
     sum = sum + (px + x) * d
-    sx, sd = sx + x * x, sd + d * d
+    xSq, dSq = xSq + x * x, dSq + d * d
     px, py = x, y
   end
   local d = y1 - py
-  return sum + px * d, sx, sd + d * d
+  return sum + px * d, xSq, dSq + d * d
 end
 
 -- shoelace and the bounding box in one pass, for the collision functions: returns shoelace's
--- three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes sx + sd non-finite.
+-- three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes xSq + dSq non-finite.
 -- On LuaJIT the box is kept with min and max, single instructions there: the comparisons' side
 -- exits were side traces of this loop, and with those of the code after it they passed LuaJIT's
 -- 100 side traces per loop, after which whole calls ran in the interpreter (`luajit -jv
@@ -302,7 +303,7 @@ if JIT then
   -- first and forwards the previous): only the seven sums cross from one step to the next, so a
   -- side trace that leaves the loop midway inherits few values (see lineShortfall).
   shoelaceBounds = function(points, n)
-    local sum, sx, sd = 0.0, 0.0, 0.0
+    local sum, xSq, dSq = 0.0, 0.0, 0.0
     local xmin, xmax, ymin, ymax = points[1] + 0.0, points[1] + 0.0, points[2] + 0.0, points[2] + 0.0
     for i = 3, n - 1, 2 do
       local x0 = points[1] + 0.0
@@ -310,43 +311,43 @@ if JIT then
       local px, py = points[i - 2] - x0, points[i - 1] + 0.0
       local x, d = vx - x0, y - py
       sum = sum + (px + x) * d
-      sx, sd = sx + x * x, sd + d * d
+      xSq, dSq = xSq + x * x, dSq + d * d
       xmin, xmax, ymin, ymax = min(xmin, vx), max(xmax, vx), min(ymin, y), max(ymax, y)
     end
     local d = (points[2] + 0.0) - points[n]
-    return sum + (points[n - 1] - points[1]) * d, sx, sd + d * d, xmin, xmax, ymin, ymax
+    return sum + (points[n - 1] - points[1]) * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
   end
 else
   shoelaceBounds = function(points, n)
     local x0, y1 = points[1] + 0.0, points[2] + 0.0
     local px, py = 0.0, y1
-    local sum, sx, sd = 0.0, 0.0, 0.0
+    local sum, xSq, dSq = 0.0, 0.0, 0.0
     local xmin, xmax, ymin, ymax = x0, x0, y1, y1
     for i = 3, n - 1, 2 do
       local vx, y = points[i] + 0.0, points[i + 1] + 0.0
       local x, d = vx - x0, y - py
       sum = sum + (px + x) * d
-      sx, sd = sx + x * x, sd + d * d
+      xSq, dSq = xSq + x * x, dSq + d * d
       if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
       if y < ymin then ymin = y elseif y > ymax then ymax = y end
       px, py = x, y
     end
     local d = y1 - py
-    return sum + px * d, sx, sd + d * d, xmin, xmax, ymin, ymax
+    return sum + px * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
   end
 end
 
 -- Whether shoelace's sum is too close to zero for its sign to be trusted. Each term
 -- (X_i + X_j) d is off by at most 4 eps (|X_i| + |X_j|) |d| and summing m terms adds (m - 1) eps
 -- times their magnitudes, so the error is below (m + 3) eps T, where by Cauchy-Schwarz
--- T = sum (|X_i| + |X_j|) |d| <= 2 sqrt(sx sd). The test compares squares against a bound four
+-- T = sum (|X_i| + |X_j|) |d| <= 2 sqrt(xSq dSq). The test compares squares against a bound four
 -- times that (no square root); an overflow (an infinite or NaN sum) only sends the decision to
 -- the exact path.
-local function areaUncertain(m, sum, sx, sd)
+local function areaUncertain(m, sum, xSq, dSq)
   -- 2^-50 = 8 eps: (m + 8) 8 eps is four times the derived 2 (m + 3) eps, and the + 5 more
   -- than covers the rounding of this bound's own products
   local k = (m + 8) * 2^-50
-  return not (sum * sum > k * k * sx * sd)   -- luacheck: ignore 581 (NaN must be uncertain)
+  return not (sum * sum > k * k * xSq * dSq)   -- luacheck: ignore 581 (NaN must be uncertain)
 end
 
 -- The largest coordinate magnitude of points[1..n], or m if that is larger.
@@ -382,8 +383,8 @@ local function shoelaceExact(points, n)
 end
 
 -- The exact sign of twice the signed area (> 0: clockwise on screen), given shoelace's results.
-local function areaSignOf(points, n, sum, sx, sd)
-  if not areaUncertain(n / 2, sum, sx, sd) then return sum end
+local function areaSignOf(points, n, sum, xSq, dSq)
+  if not areaUncertain(n / 2, sum, xSq, dSq) then return sum end
   shoelaceExact(points, n)
   return expSign()
 end
@@ -1373,13 +1374,13 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   -- only the sign and the box are kept while the other's sums are taken (on LuaJIT fewer values
   -- for a side trace to inherit). A NaN or infinity makes the sums non-finite; so does overflow,
   -- which is not an error.
-  local area1, sx1, sd1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
+  local area1, xSq1, dSq1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
   -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (sx1 + sd1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
-  local turn1 = areaSignOf(p1, n1, area1, sx1, sd1)
-  local area2, sx2, sd2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
+  if not (xSq1 + dSq1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+  local turn1 = areaSignOf(p1, n1, area1, xSq1, dSq1)
+  local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
   -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (sx2 + sd2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+  if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
   -- Between the loops, the same numbers in two forms, as in shoelaceBounds: on LuaJIT min,
   -- max and a division, which have no side exits (the branches' exits were side traces of
   -- shoelaceBounds' loop, past LuaJIT's 100 per loop); on PUC Lua comparisons, which cost no call.
@@ -1396,7 +1397,7 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   end
   -- zero area never collides
   if turn1 == 0 then return false end
-  local turn2 = areaSignOf(p2, n2, area2, sx2, sd2)
+  local turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
   if turn2 == 0 then return false end
   -- Signs, not magnitudes; and the sizes bounding every |vx - ax| and |vy - ay| in the
   -- projections: the box around both. (A sure sign is finite: areaSignOf sends an infinite sum
@@ -3975,20 +3976,20 @@ function polygon.polygonTranslate(points, dx, dy, out)
   return out
 end
 
--- Adds the vertices of points[1..n] to the running sums (sx, sy) and count m.
-local function addVertices(points, n, sx, sy, m)
-  for i = 1, n - 1, 2 do sx, sy = sx + points[i], sy + points[i + 1] end
-  return sx, sy, m + n / 2
+-- Adds the vertices of points[1..n] to the running sums (sumX, sumY) and count m.
+local function addVertices(points, n, sumX, sumY, m)
+  for i = 1, n - 1, 2 do sumX, sumY = sumX + points[i], sumY + points[i + 1] end
+  return sumX, sumY, m + n / 2
 end
 
 -- The default pivot of polygonRotate: the area centroid; for a list of parts the centroids
 -- weighted by the parts' areas; the vertex mean when there is no area at all; (0, 0) for no points.
 local function pivotOf(points, parts, count)
-  local sx, sy, m = 0.0, 0.0, 0
+  local sumX, sumY, m = 0.0, 0.0, 0
   if not parts then
     local cx, cy = polygon.polygonCentroid(points)
     if cx then return cx, cy end
-    sx, sy, m = addVertices(points, count, sx, sy, m)
+    sumX, sumY, m = addVertices(points, count, sumX, sumY, m)
   else
     local wx, wy, total = 0.0, 0.0, 0.0
     for k = 1, count do
@@ -4002,11 +4003,11 @@ local function pivotOf(points, parts, count)
     if total > 0 then return wx / total, wy / total end
     for k = 1, count do
       local part = points[k]
-      sx, sy, m = addVertices(part, #part, sx, sy, m)
+      sumX, sumY, m = addVertices(part, #part, sumX, sumY, m)
     end
   end
   if m == 0 then return 0.0, 0.0 end
-  return sx / m, sy / m
+  return sumX / m, sumY / m
 end
 
 -- points[1..n] turned about (ox, oy) by the rotation (c -s; s c), written into out (which may be
