@@ -185,50 +185,64 @@ local function exactScale(m)
 end
 
 -- The exact sign of (u1 - u0) x (v1 - v0), for cross when its filter cannot decide: Shewchuk's
--- adaptive stages after the filter's. Each difference is split into hi + lo exactly; the
--- determinant of the his, B = ph + pl - qh - ql (two exact products), is written by his
--- Two-Two-Diff as four nonoverlapping parts x3 > x2 > x1 > x0 in magnitude (zeros allowed).
--- When every lo is 0 (nearby coordinates, the usual case) B is the determinant. Otherwise B's
--- estimate, then the estimate with the los' products added, decide it when they clear his
--- bounds for those stages; only what remains is summed as an expansion of the sixteen partial
--- products. The first stages have no loop: the expansion's loops, recorded into LuaJIT's traces,
--- left exits it could not compile.
+-- adaptive stages after the filter's. Each difference, scaled by s (see exactScale), is split
+-- into hi + lo exactly; the determinant of the his, B = ph + pl - qh - ql (two exact products),
+-- is written by his Two-Two-Diff as four nonoverlapping parts x3 > x2 > x1 > x0 in magnitude
+-- (zeros allowed). When every lo is 0 (nearby coordinates, the usual case) B is the determinant.
+-- Otherwise B's estimate, then the estimate with the los' products added, decide it when they
+-- clear his bounds for those stages; only what remains is summed as an expansion of the sixteen
+-- partial products, from the differences split again. The first stages have no loop and keep
+-- three numbers across their branches: on LuaJIT a side trace taken at one of them inherits
+-- every value alive there, and with the eight parts too (and the caller's values) it needed more
+-- registers than there are ("NYI: register coalescing too complex", retried on every call).
 local crossExact
 do
   local BOUND_B = (2 + 12 * EPS) * EPS             -- Shewchuk's ccwerrboundB
   local BOUND_C = (9 + 64 * EPS) * EPS * EPS       -- ccwerrboundC
   local BOUND_RESULT = (3 + 8 * EPS) * EPS         -- resulterrbound
 
-  crossExact = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-    local m = abs(ux0 + 0.0)
-    m = max(m, abs(uy0 + 0.0), abs(ux1 + 0.0), abs(uy1 + 0.0))
-    m = max(m, abs(vx0 + 0.0), abs(vy0 + 0.0), abs(vx1 + 0.0), abs(vy1 + 0.0))
-    local s = exactScale(m)
+  -- The last stage: the sign of the sum of the sixteen partial products, as an expansion.
+  local function expansionSign(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1, s)
     local axh, axl = twoDiff(ux1 * s, ux0 * s)
     local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
     local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
     local byh, byl = twoDiff(vy1 * s, vy0 * s)
-    local ph, pl = twoProduct(axh, byh)
-    local qh, ql = twoProduct(ayh, bxh)
-    local i, x0 = twoDiff(pl, ql)
-    local j, k = twoDiff(ph, -i)
-    local g, x1 = twoDiff(k, qh)
-    local x3, x2 = twoDiff(j, -g)
-    -- B's estimate (its parts summed from the smallest) has B's sign (Shewchuk), so it decides
-    -- when the los are all 0; else when it clears stage B's bound. Everything the next stage
-    -- needs is computed first, so that what is carried past a branch is three numbers.
-    local det, detsum = x0 + x1 + x2 + x3, abs(ph) + abs(qh)
-    local los = abs(axl) + abs(ayl) + abs(bxl) + abs(byl)
-    local tails = (axh * byl + byh * axl) - (ayh * bxl + bxh * ayl)
-    if los == 0 or abs(det) >= BOUND_B * detsum then return det end
-    local bound = BOUND_C * detsum + BOUND_RESULT * abs(det)
-    det = det + tails
-    if abs(det) >= bound then return det end
     expLen = 0
     expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh)
     expAddProduct(axl, byl); expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl)
     expAddProduct(-ayl, bxh); expAddProduct(-ayl, bxl)
     return expSign()
+  end
+
+  crossExact = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+    local m = abs(ux0 + 0.0)
+    m = max(m, abs(uy0 + 0.0), abs(ux1 + 0.0), abs(uy1 + 0.0))
+    m = max(m, abs(vx0 + 0.0), abs(vy0 + 0.0), abs(vx1 + 0.0), abs(vy1 + 0.0))
+    local s = exactScale(m)
+    local det, detsum, tails
+    do
+      local axh, axl = twoDiff(ux1 * s, ux0 * s)
+      local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
+      local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
+      local byh, byl = twoDiff(vy1 * s, vy0 * s)
+      local ph, pl = twoProduct(axh, byh)
+      local qh, ql = twoProduct(ayh, bxh)
+      local i, x0 = twoDiff(pl, ql)
+      local j, k = twoDiff(ph, -i)
+      local g, x1 = twoDiff(k, qh)
+      local x3, x2 = twoDiff(j, -g)
+      -- B's estimate (its parts summed from the smallest) has B's sign (Shewchuk), so it
+      -- decides when the los are all 0 (then tails is 0 and detsum, below, is 0 too)
+      det, detsum = x0 + x1 + x2 + x3, abs(ph) + abs(qh)
+      tails = (axh * byl + byh * axl) - (ayh * bxl + bxh * ayl)
+      if abs(axl) + abs(ayl) + abs(bxl) + abs(byl) == 0 then detsum = 0.0 end
+    end
+    if abs(det) >= BOUND_B * detsum then return det end
+    local bound = BOUND_C * detsum + BOUND_RESULT * abs(det)
+    det = det + tails
+    if abs(det) >= bound then return det end
+    local sign = expansionSign(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1, s)
+    return sign
   end
 end
 
@@ -1105,11 +1119,7 @@ if JIT then
     end
     return lo, hi
   end
-  minProjection = function(points, n, ax, ay, nx, ny)
-    local lo = huge
-    for i = 1, n - 1, 2 do lo = min(lo, nx * (points[i] - ax) + ny * (points[i + 1] - ay)) end
-    return lo
-  end
+  minProjection = projectRange   -- (its second result unused)
 else
   projectRange = function(points, n, ax, ay, nx, ny)
     local lo, hi = huge, -huge
@@ -1263,20 +1273,25 @@ end
 local function reachPast(edges, ne, turn, other, no, turnOther, spanX, spanY)
   local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
   -- the calipers' state for deepestPast: the last deepest vertex of other (0: none yet) and the
-  -- way it moves as the normals turn: forward if other winds like edges
-  local deepest, step = 0, turnOther == turn and 2 or -2
-  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  -- way it moves as the normals turn: forward if other winds like edges. (LuaJIT's deepestPast
+  -- does not walk: there no branch on the windings, whose side exit inherited the whole call.)
+  local deepest, step = 0, 0
+  if not JIT then step = turnOther == turn and 2 or -2 end
+  local ia = ne - 1
   for ib = 1, ne - 1, 2 do
-    local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
+    -- (the edge's end is read again where needed, not kept across the loop inside: see
+    -- reachPastBothEnds)
+    local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+    local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
+    if nx ~= 0 or ny ~= 0 then   -- a repeated vertex gives no axis
       local lo
       deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
       local depth = -lo
       -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
       local tol = 16 * EPS * (spanX * (nx < 0 and -nx or nx) + spanY * (ny < 0 and -ny or ny))
       if depth <= tol then
-        if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no) then
+        if depth < -tol or not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn,
+                                            other, no) then
           return false
         end
         if depth < 0 then depth = 0.0 end
@@ -1286,37 +1301,43 @@ local function reachPast(edges, ne, turn, other, no, turnOther, spanX, spanY)
         leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
       end
     end
-    ax, ay = bx, by
+    ia = ib
   end
   return leastSquared, leastOverlap, leastEnd
 end
 
 -- reachPast for the one-sided functions, which test the axes of `edges` only: both ends of each
 -- range, so also how far `other` reaches beyond the vertex of `edges` deepest inside, along -n.
--- Returns false, or the squared depth, o, the edge's end and, for the far end, the index of
--- that deepest vertex
--- (else false).
-local function reachPastBothEnds(edges, ne, turn, other, no, spanX, spanY)
-  local leastSquared, leastOverlap, leastEnd, leastFar = huge, 0.0, 1, false
-  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+-- Returns false, or the squared depth, o, the edge's end and, when the least is at the far end,
+-- the index of that deepest vertex (else 0).
+-- The loop keeps only numbers, and across its two inner loops only the edge's start and normal
+-- (its end is read again where needed, the tolerance computed after them); the deepest vertex
+-- of the least is found once, after the loop. On LuaJIT a trace of the caller that runs on into
+-- a loop not yet compiled unrolls it, and the side traces leaving that copy inherit every value
+-- alive there: with a false-or-index, the edge's end and the tolerance alive too they needed more
+-- registers than there are ("NYI: register coalescing too complex", retried on every call).
+local function reachPastBothEnds(edges, ne, turn, other, no, span)
+  local leastSquared, leastOverlap, leastEnd, leastAtFar = huge, 0.0, 1, 0
+  local ia = ne - 1
   for ib = 1, ne - 1, 2 do
-    local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
-      local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
-      local tol = projectionTolerance(spanX, spanY, nx, ny)
+    local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+    local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
+    if nx ~= 0 or ny ~= 0 then   -- a repeated vertex gives no axis
       local lo, hi = projectRange(other, no, ax, ay, nx, ny)
       -- face: how far other must move along n to clear the edge; far: against n, past the
       -- deepest vertex of edges
       local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+      local tol = projectionTolerance(span, span, nx, ny)
       if face <= tol then
-        if face < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no) then
+        if face < -tol or not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn,
+                                           other, no) then
           return false
         end
         if face < 0 then face = 0.0 end
       end
-      local ic = false
       if far <= tol then
-        ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
+        local bx, by = edges[ib], edges[ib + 1]
+        local ic = deepestVertex(ax, ay, bx, by, turn, edges, ne)
         if far < -tol or not vertexInside(ax, ay, bx, by, edges[ic], edges[ic + 1], -turn,
                                           other, no) then
           return false
@@ -1326,17 +1347,17 @@ local function reachPastBothEnds(edges, ne, turn, other, no, spanX, spanY)
       local depth = face < far and face or far
       local squaredDepth = depth * (depth / (nx * nx + ny * ny))
       if squaredDepth < leastSquared then   -- keep the least
-        if far < face then
-          leastFar = ic or deepestVertex(ax, ay, bx, by, turn, edges, ne)
-        else
-          leastFar = false
-        end
         leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+        leastAtFar = far < face and 1 or 0
       end
     end
-    ax, ay = bx, by
+    ia = ib
   end
-  return leastSquared, leastOverlap, leastEnd, leastFar
+  if leastAtFar == 0 then return leastSquared, leastOverlap, leastEnd, 0 end
+  ia = leastEnd == 1 and ne - 1 or leastEnd - 2
+  local deepest = deepestVertex(edges[ia], edges[ia + 1], edges[leastEnd], edges[leastEnd + 1], turn,
+    edges, ne)
+  return leastSquared, leastOverlap, leastEnd, deepest
 end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
@@ -1438,7 +1459,7 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
         squaredDepth2, o2, edgeEnd2, 2, turn2, p2, n2
     end
   else
-    squaredDepth, o, edgeEnd, far = reachPastBothEnds(p1, n1, turn1, p2, n2, spanX, spanY)
+    squaredDepth, o, edgeEnd, far = reachPastBothEnds(p1, n1, turn1, p2, n2, max(spanX, spanY))
     if not squaredDepth then return false end
     owner, turn, lines, nl = 1, turn1, p1, n1
   end
@@ -1451,7 +1472,7 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   local base, inside = ia, turn
   if owner == 2 then
     nx, ny = -nx, -ny
-  elseif far then
+  elseif far and far > 0 then
     nx, ny, base, inside = -nx, -ny, far, -turn
   end
   local ux, uy, len = unit(nx, ny)
