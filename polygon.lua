@@ -1108,7 +1108,11 @@ end
 -- The range of the projections nx (vx - ax) + ny (vy - ay) over the vertices of points.
 -- LuaJIT compiles math.min and math.max to single branch-free instructions, where the unpredictable
 -- comparisons would cost it most of the loop; the PUC interpreters call them as functions, so for
--- them plain comparisons are faster. The two bodies compute the same numbers.
+-- them plain comparisons are faster. The two bodies compute the same numbers. On LuaJIT
+-- minProjection is projectRange itself (the max costs one instruction): a loop of 6 to 8 steps
+-- often fails to become a trace of its own ("leaving loop in root trace"), and other traces then
+-- copy it unrolled, with side exits for every polygon size; one loop for every projection is
+-- compiled sooner, from any of its callers.
 local projectRange, minProjection
 if JIT then
   projectRange = function(points, n, ax, ay, nx, ny)
