@@ -1145,41 +1145,33 @@ else
 end
 
 -- The least projection nx (vx - ax) + ny (vy - ay) over the vertices of a convex polygon, with
--- the index of a vertex where it is found, for the edges of another convex polygon in turn.
--- Rotating calipers: as the edges' outward normals turn, the deepest vertex moves on around
--- `points`, `step` (2 or -2) at a time; so the first edge (deepest == 0) scans every vertex and
--- each next one walks on from the last deepest vertex while the projection does not rise. A walk
--- stopped early by rounding misses the least by less than the projections' tolerance, and
--- the SAT engine decides every depth within that of zero again over all vertices, exactly.
--- On LuaJIT the walk's data-dependent exits become side traces that cost more than they save
--- (measured: compiling them took most of the time of a mixed collision workload), so there the
--- scan is whole, branch-free, every time.
-local deepestPast
-if JIT then
-  deepestPast = function(points, n, ax, ay, nx, ny, deepest)
-    return deepest, minProjection(points, n, ax, ay, nx, ny)
-  end
-else
-  deepestPast = function(points, n, ax, ay, nx, ny, deepest, step)
-    local lo
-    if deepest == 0 then
-      deepest, lo = 1, nx * (points[1] - ax) + ny * (points[2] - ay)
-      for i = 3, n - 1, 2 do
-        local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
-        if s < lo then deepest, lo = i, s end
-      end
-      return deepest, lo
-    end
-    lo = nx * (points[deepest] - ax) + ny * (points[deepest + 1] - ay)
-    for _ = 3, n, 2 do   -- at most m - 1 steps around a polygon of m vertices
-      local k = deepest + step
-      if k > n then k = 1 elseif k < 1 then k = n - 1 end
-      local s = nx * (points[k] - ax) + ny * (points[k + 1] - ay)
-      if s > lo then break end
-      deepest, lo = k, s
+-- the index of a vertex where it is found, for the edges of another convex polygon in turn
+-- (PUC Lua's reachPast). Rotating calipers: as the edges' outward normals turn, the deepest
+-- vertex moves on around `points`, `step` (2 or -2) at a time; so the first edge (deepest == 0)
+-- scans every vertex and each next one walks on from the last deepest vertex while the
+-- projection does not rise. A walk stopped early by rounding misses the least by less than the
+-- projections' tolerance, and the SAT engine decides every depth within that of zero again over
+-- all vertices, exactly. (On LuaJIT the walk's data-dependent exits became side traces that
+-- cost more than they saved: compiling them took most of the time of a mixed collision workload.)
+local function deepestPast(points, n, ax, ay, nx, ny, deepest, step)
+  local lo
+  if deepest == 0 then
+    deepest, lo = 1, nx * (points[1] - ax) + ny * (points[2] - ay)
+    for i = 3, n - 1, 2 do
+      local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
+      if s < lo then deepest, lo = i, s end
     end
     return deepest, lo
   end
+  lo = nx * (points[deepest] - ax) + ny * (points[deepest + 1] - ay)
+  for _ = 3, n, 2 do   -- at most m - 1 steps around a polygon of m vertices
+    local k = deepest + step
+    if k > n then k = 1 elseif k < 1 then k = n - 1 end
+    local s = nx * (points[k] - ax) + ny * (points[k + 1] - ay)
+    if s > lo then break end
+    deepest, lo = k, s
+  end
+  return deepest, lo
 end
 
 -- The projections above are taken relative to a vertex a of one polygon so that far from the
@@ -1274,40 +1266,83 @@ end
 -- depth o (o / |n|^2) (neither overflows nor underflows in the exact range), its overlap
 -- o >= 0 along n (the depth is o / |n|), and the index of its edge's end b.
 -- spanX, spanY: see projectionTolerance.
-local function reachPast(edges, ne, turn, other, no, turnOther, spanX, spanY)
-  local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
-  -- the calipers' state for deepestPast: the last deepest vertex of other (0: none yet) and the
-  -- way it moves as the normals turn: forward if other winds like edges. (LuaJIT's deepestPast
-  -- does not walk: there no branch on the windings, whose side exit inherited the whole call.)
-  local deepest, step = 0, 0
-  if not JIT then step = turnOther == turn and 2 or -2 end
-  local ia = ne - 1
-  for ib = 1, ne - 1, 2 do
-    -- (the edge's end is read again where needed, not kept across the loop inside: see
-    -- reachPastBothEnds)
+-- Two bodies. On LuaJIT one flat loop runs over every (edge, vertex) pair, projecting with max
+-- and min, and an edge's verdict is taken when its last vertex is projected: the nested loops
+-- (a loop of 6 to 8 steps per edge) often failed to become traces of their own ("leaving loop in
+-- root trace"), other traces then copied them unrolled, and side traces leaving those copies
+-- could not be compiled ("NYI: register coalescing too complex"); a loop of some 50 steps
+-- compiles, and the flat loop took 0.34 of the tutorial's time where the nested ones took 0.41
+-- (`luajit bench/isolated.lua polygonsCollideV`). On PUC Lua, nested loops and the calipers
+-- (deepestPast). The two agree but where the calipers' walk stops early by rounding (see there).
+local reachPast
+if JIT then
+  reachPast = function(edges, ne, turn, other, no, _, spanX, spanY)
+    local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
+    local ia, ib = ne - 1, 1
     local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
-    local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
-    if nx ~= 0 or ny ~= 0 then   -- a repeated vertex gives no axis
-      local lo
-      deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
-      local depth = -lo
-      -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
-      local tol = 16 * EPS * (spanX * (nx < 0 and -nx or nx) + spanY * (ny < 0 and -ny or ny))
-      if depth <= tol then
-        if depth < -tol or not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn,
-                                            other, no) then
-          return false
+    local nx, ny = ((edges[2] + 0.0) - ay) * turn, (ax - edges[1]) * turn   -- outward
+    local lo, i = huge, 1
+    for _ = 1, ne * no / 4 do
+      lo = min(lo, nx * (other[i] - ax) + ny * (other[i + 1] - ay))
+      if i < no - 1 then
+        i = i + 2
+      else   -- the edge a -> b is done
+        if nx ~= 0 or ny ~= 0 then   -- a repeated vertex gives no axis
+          local depth = -lo
+          local tol = 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))   -- projectionTolerance
+          if depth <= tol then
+            if depth < -tol or not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn,
+                                                other, no) then
+              return false
+            end
+            depth = max(depth, 0.0)
+          end
+          local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+          if squaredDepth < leastSquared then   -- keep the least
+            leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+          end
         end
-        if depth < 0 then depth = 0.0 end
-      end
-      local squaredDepth = depth * (depth / (nx * nx + ny * ny))
-      if squaredDepth < leastSquared then   -- keep the least
-        leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+        -- the next edge (after the last, the first again: its normal is never used)
+        ia, ib = ib, ib + 2
+        local jb = (ib - 1) % ne + 1
+        ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+        nx, ny = ((edges[jb + 1] + 0.0) - ay) * turn, (ax - edges[jb]) * turn
+        lo, i = huge, 1
       end
     end
-    ia = ib
+    return leastSquared, leastOverlap, leastEnd
   end
-  return leastSquared, leastOverlap, leastEnd
+else
+  reachPast = function(edges, ne, turn, other, no, turnOther, spanX, spanY)
+    local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
+    -- the calipers' state for deepestPast: the last deepest vertex of other (0: none yet) and
+    -- the way it moves as the normals turn: forward if other winds like edges
+    local deepest, step = 0, turnOther == turn and 2 or -2
+    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+    for ib = 1, ne - 1, 2 do
+      local bx, by = edges[ib] + 0.0, edges[ib + 1] + 0.0
+      if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
+        local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
+        local lo
+        deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
+        local depth = -lo
+        -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
+        local tol = 16 * EPS * (spanX * (nx < 0 and -nx or nx) + spanY * (ny < 0 and -ny or ny))
+        if depth <= tol then
+          if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no) then
+            return false
+          end
+          if depth < 0 then depth = 0.0 end
+        end
+        local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+        if squaredDepth < leastSquared then   -- keep the least
+          leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+        end
+      end
+      ax, ay = bx, by
+    end
+    return leastSquared, leastOverlap, leastEnd
+  end
 end
 
 -- reachPast for the one-sided functions, which test the axes of `edges` only: both ends of each
