@@ -1345,6 +1345,29 @@ else
   end
 end
 
+-- For reachPastBothEnds: -lo and hi - own, where [lo, hi] is the range of the projections
+-- n . (v - a) of other's vertices and own the least of edges' own. On LuaJIT one loop over both
+-- polygons at once, the shorter one's last vertex read again (harmless to a min or max): half
+-- the loops of the two calls, each a loop other traces could copy unrolled.
+local faceAndFar
+if JIT then
+  faceAndFar = function(edges, ne, other, no, ax, ay, nx, ny)
+    local lo, hi, own = huge, -huge, huge
+    for i = 1, max(ne, no) - 1, 2 do
+      local j, k = min(i, no - 1), min(i, ne - 1)
+      local s = nx * (other[j] - ax) + ny * (other[j + 1] - ay)
+      lo, hi = min(lo, s), max(hi, s)
+      own = min(own, nx * (edges[k] - ax) + ny * (edges[k + 1] - ay))
+    end
+    return -lo, hi - own
+  end
+else
+  faceAndFar = function(edges, ne, other, no, ax, ay, nx, ny)
+    local lo, hi = projectRange(other, no, ax, ay, nx, ny)
+    return -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+  end
+end
+
 -- reachPast for the one-sided functions, which test the axes of `edges` only: both ends of each
 -- range, so also how far `other` reaches beyond the vertex of `edges` deepest inside, along -n.
 -- Returns false, or the squared depth, o, the edge's end and, when the least is at the far end,
@@ -1362,10 +1385,9 @@ local function reachPastBothEnds(edges, ne, turn, other, no, span)
     local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
     local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
     if nx ~= 0 or ny ~= 0 then   -- a repeated vertex gives no axis
-      local lo, hi = projectRange(other, no, ax, ay, nx, ny)
       -- face: how far other must move along n to clear the edge; far: against n, past the
       -- deepest vertex of edges
-      local face, far = -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+      local face, far = faceAndFar(edges, ne, other, no, ax, ay, nx, ny)
       local tol = projectionTolerance(span, span, nx, ny)
       if face <= tol then
         if face < -tol or not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn,
