@@ -964,7 +964,11 @@ function polygon.polygonCentroid(points)
     v = sum - momentY
     errY = errY + ((momentY - (sum - v)) + (term - v))
     momentY = sum
-    magnitude = magnitude + (l < 0 and -l or l) + (r < 0 and -r or r)
+    if JIT then   -- abs is one instruction there; the comparisons' exits were side traces
+      magnitude = magnitude + abs(l) + abs(r)
+    else          -- abs is a call on PUC Lua
+      magnitude = magnitude + (l < 0 and -l or l) + (r < 0 and -r or r)
+    end
     xi, yi = xj, yj
   end
   area2, momentX, momentY = area2 + errA, momentX + errX, momentY + errY
@@ -4107,7 +4111,11 @@ Polygon.__index = Polygon
 local function newPolygon(points, level)
   local ok, message = validate(points)
   if not ok then error("Polygon.new: " .. message, level + 1) end
-  return setmetatable({ points = points }, Polygon)
+  -- not a tail call: after a tail call to setmetatable (a built-in with side effects) LuaJIT
+  -- had no snapshot for the return past the frame where validate's loop trace began, and every
+  -- trace leaving that loop aborted ("NYI: return to lower frame")
+  local p = setmetatable({ points = points }, Polygon)
+  return p
 end
 
 --- Polygon.new(points), also Polygon(points): validates, then wraps points.
