@@ -1000,40 +1000,86 @@ end
 -- The tutorial divides to find the edge's x; here the comparison is the exact side test
 -- x <= x'  <=>  (p2 - p1) x (q - p1) >= 0 when the edge goes down (y2 > y1), <= 0 when it goes up.
 -- The walk carries whether the last vertex was at or below the ray's height (y >= the ray's y,
--- screen down) and reads an edge's x coordinates only where it crosses: per vertex one read and
--- one comparison (on Lua 5.4 the two-sided test per edge cost about a third more; on LuaJIT
--- its branches grew a tree of side traces). x and y are converted, and so is every coordinate
--- before it is compared, so that Lua 5.3+ integers count as the doubles they convert to.
-local function contains(points, n, x, y)
-  -- numbers, not booleans: LuaJIT types true and false apart, and a loop-carried boolean that
-  -- flips aborted its traces ("persistent type instability")
-  local crossings, below = 0, 0
-  if points[n] + 0.0 >= y then below = 1 end
-  for i = 2, n, 2 do
-    local y2 = points[i] + 0.0
-    if below == 1 then
-      if y2 < y then   -- the edge from vertex i - 2 goes up across the ray's height
-        below = 0
+-- screen down) and reads an edge's x coordinates only where it crosses. x and y come converted
+-- (+ 0.0); every coordinate read at a crossing is converted too, so that Lua 5.3+ integers count
+-- as the doubles they convert to. Two bodies, computing the same answer:
+-- - LuaJIT (and PUC Lua for |y| >= 2^53): at-or-below is the number 1 or 0 without a branch,
+--   min(1, max(0, d * 2^600 * 2^600 + 1)) for d = y' - y (every nonzero difference of doubles
+--   is at least 2^-1074, so the product reaches 2^126; d has the sign of the comparison, and of
+--   the converted one for an integer y'), and so is whether a crossing edge counts, from the
+--   sign of its direction times its side test (cross's filter written out, crossExact where it
+--   cannot vouch). One branch per vertex (does the edge cross?) and one rare one (the exact side
+--   test): the loop with a branch per comparison grew a tree of side traces that passed
+--   LuaJIT's limit of 100 per loop in some runs, after which calls ran in the interpreter, 2 to 5
+--   times as long (bench/run.lua --only 'polygonContains cOrd').
+-- - PUC Lua: per vertex one read and two comparisons. The y coordinates are compared as they
+--   are, not converted (one instruction less per vertex: 0.95 to 0.91 times the tutorial's time
+--   on Lua 5.4): comparing a Lua 5.3+ integer with the double y gives the converted integer's
+--   answer whenever |y| < 2^53 (the integer is then compared as its exact double, or it is
+--   beyond 2^53 and so is its conversion, on the same side of y). Larger |y| take the first body.
+local contains
+do
+  local function containsBranchFree(points, n, x, y)
+    local below = min(1, max(0, (points[n] - y) * 2^600 * 2^600 + 1))
+    local crossings = 0
+    for i = 2, n, 2 do
+      local y2 = points[i]
+      local atOrBelow = min(1, max(0, (y2 - y) * 2^600 * 2^600 + 1))
+      if atOrBelow ~= below then   -- the edge from vertex i - 2 crosses the ray's height
         local j = i == 2 and n or i - 2
         local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
-        if x <= x1 and x <= x2 then
-          crossings = crossings + 1
-        elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) <= 0 then
-          crossings = crossings + 1
+        local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
+        local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
+        if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
+          side = crossExact(x1, y1, x2, y2, x1, y1, x, y)               -- (NaN, overflow too)
         end
-      end
-    elseif y2 >= y then   -- it goes down across
-      below = 1
-      local j = i == 2 and n or i - 2
-      local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
-      if x <= x1 and x <= x2 then
-        crossings = crossings + 1
-      elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) >= 0 then
-        crossings = crossings + 1
+        -- it counts when side >= 0 going down (atOrBelow - below = 1), side <= 0 going up
+        crossings = crossings + min(1, max(0, (atOrBelow - below) * side * 2^600 * 2^600 + 1))
+        below = atOrBelow
       end
     end
+    return crossings % 2 == 1
   end
-  return crossings % 2 == 1
+
+  if JIT then
+    contains = containsBranchFree
+  else
+    contains = function(points, n, x, y)
+      if y >= 2^53 or y <= -2^53 then
+        local inside = containsBranchFree(points, n, x, y)
+        return inside
+      end
+      -- numbers, not booleans, as LuaJIT once needed (a loop-carried boolean that flips
+      -- aborted its traces, "persistent type instability"); no cost here
+      local crossings, below = 0, 0
+      if points[n] >= y then below = 1 end
+      for i = 2, n, 2 do
+        local y2 = points[i]
+        if below == 1 then
+          if y2 < y then   -- the edge from vertex i - 2 goes up across the ray's height
+            below = 0
+            local j = i == 2 and n or i - 2
+            local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
+            if x <= x1 and x <= x2 then
+              crossings = crossings + 1
+            elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) <= 0 then
+              crossings = crossings + 1
+            end
+          end
+        elseif y2 >= y then   -- it goes down across
+          below = 1
+          local j = i == 2 and n or i - 2
+          local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
+          if x <= x1 and x <= x2 then
+            crossings = crossings + 1
+          elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) >= 0 then
+            crossings = crossings + 1
+          end
+        end
+      end
+      return crossings % 2 == 1
+    end
+  end
 end
 
 -- The O(1) checks of polygonContains and Polygon:contains, raised at their callers' lines
