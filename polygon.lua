@@ -1112,12 +1112,14 @@ end
 --   is at least 2^-1074, so the product reaches 2^126; d has the sign of the comparison, and of
 --   the converted one for an integer y'), and so is whether a crossing edge counts, from the
 --   sign of its direction times its side test (cross's filter written out, crossExact where it
---   cannot vouch). One branch per vertex (does the edge cross?) and one rare one (the exact side
---   test): the loop with a branch per comparison grew a tree of side traces that passed
---   LuaJIT's limit of 100 per loop in some runs, after which calls ran in the interpreter, 2 to 5
---   times as long (bench/run.lua --only 'polygonContains cOrd').
+--   cannot vouch). An inner loop walks to the next crossing, so that LuaJIT's trace of it is the
+--   walk that crosses nothing, whatever vertex it was recorded on; a crossing is a side trace.
+--   The loop with a branch per comparison grew a tree of side traces that passed LuaJIT's limit
+--   of 100 per loop in some runs, after which calls ran in the interpreter, 2 to 5 times as long;
+--   one loop with a branch per crossing ran 1.2 to 1.3 times the tutorial's time in the runs
+--   whose trace was recorded on a crossing (bench/run.lua --only 'polygonContains cOrd').
 -- - PUC Lua: per vertex one read and two comparisons. The y coordinates are compared as they
---   are, not converted (one instruction less per vertex: 0.95 to 0.91 times the tutorial's time
+--   are, not converted (one instruction less per vertex: 0.96 to 0.87 times the tutorial's time
 --   on Lua 5.4): comparing a Lua 5.3+ integer with the double y gives the converted integer's
 --   answer whenever |y| < 2^53 (the integer is then compared as its exact double, or it is
 --   beyond 2^53 and so is its conversion, on the same side of y). Larger |y| take the first body.
@@ -1125,22 +1127,29 @@ local contains
 do
   local function containsBranchFree(points, n, x, y)
     local below = min(1, max(0, (points[n] - y) * 2^600 * 2^600 + 1))
-    local crossings = 0
-    for i = 2, n, 2 do
-      local y2 = points[i]
-      local atOrBelow = min(1, max(0, (y2 - y) * 2^600 * 2^600 + 1))
-      if atOrBelow ~= below then   -- the edge from vertex i - 2 crosses the ray's height
-        local j = i == 2 and n or i - 2
-        local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
-        local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
-        local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
-        if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
-          side = crossExact(x1, y1, x2, y2, x1, y1, x, y)               -- (NaN, overflow too)
-        end
-        -- it counts when side >= 0 going down (atOrBelow - below = 1), side <= 0 going up
-        crossings = crossings + min(1, max(0, (atOrBelow - below) * side * 2^600 * 2^600 + 1))
-        below = atOrBelow
+    local crossings, i = 0, 2
+    while true do
+      -- the next vertex on the other side of the ray's height: a loop of its own, so that
+      -- LuaJIT's trace of it is the walk that crosses nothing
+      local atOrBelow = below
+      while i <= n do
+        atOrBelow = min(1, max(0, (points[i] - y) * 2^600 * 2^600 + 1))
+        if atOrBelow ~= below then break end
+        i = i + 2
       end
+      if i > n then break end
+      -- the edge from vertex i - 2 crosses the ray's height
+      local j = i == 2 and n or i - 2
+      local x1, y1, x2, y2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0, points[i]
+      local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
+      local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
+      if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
+        side = crossExact(x1, y1, x2, y2, x1, y1, x, y)               -- (NaN, overflow too)
+      end
+      -- it counts when side >= 0 going down (atOrBelow - below = 1), side <= 0 going up
+      crossings = crossings + min(1, max(0, (atOrBelow - below) * side * 2^600 * 2^600 + 1))
+      below = atOrBelow
+      i = i + 2
     end
     return crossings % 2 == 1
   end
