@@ -1111,7 +1111,7 @@ end
 --   min(1, max(0, d * 2^600 * 2^600 + 1)) for d = y' - y (every nonzero difference of doubles
 --   is at least 2^-1074, so the product reaches 2^126; d has the sign of the comparison, and of
 --   the converted one for an integer y'), and so is whether a crossing edge counts, from the
---   sign of its direction times its side test (cross's filter written out, crossExact where it
+--   sign of its direction times its side test (cross's filter written out, cross where it
 --   cannot vouch). An inner loop walks to the next crossing, so that LuaJIT's trace of it is the
 --   walk that crosses nothing, whatever vertex it was recorded on; a crossing is a side trace.
 --   The loop with a branch per comparison grew a tree of side traces that passed LuaJIT's limit
@@ -1144,7 +1144,11 @@ do
       local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
       local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
       if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
-        side = crossExact(x1, y1, x2, y2, x1, y1, x, y)               -- (NaN, overflow too)
+        -- (NaN and overflow too) through cross, not crossExact directly: called here, the side
+        -- traces of crossExact's first branch failed to compile ("NYI: register coalescing too
+        -- complex") and points near edges took 7 to 80 times the tutorial's time, 4 to 5 this way
+        -- (luajit bench/run.lua --only 'polygonContains cEdge')
+        side = cross(x1, y1, x2, y2, x1, y1, x, y)
       end
       -- it counts when side >= 0 going down (atOrBelow - below = 1), side <= 0 going up
       crossings = crossings + min(1, max(0, (atOrBelow - below) * side * 2^600 * 2^600 + 1))
