@@ -506,10 +506,12 @@ function polygon.polygonWindingOrder(points)
   -- target is 1.3 in lua5.4 bench/run.lua --only 'polygonWindingOrder ord'). polygonArea's
   -- loop is this one without the squares. A change to shoelace or to areaUncertain's bound
   -- must be made here too.
-  if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
-  local n = #points
+  local n = type(points) == "table" and #points or -1
+  if n % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
   if n < 6 then return nil end
-  -- shoelace's sum with its bound's sums of X^2 (xSq) and d^2 (dSq), as in shoelace
+  -- shoelace's sum with its bound's sums of X^2 (xSq) and d^2 (dSq), as in shoelace. Of the
+  -- two y read per step only the second is converted: each difference has one converted side,
+  -- which converts the other (a Lua 5.3+ integer counts as its double), one instruction less.
   local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py = 0.0, y1
   local sum, xSq, dSq = 0.0, 0.0, 0.0
@@ -521,7 +523,7 @@ function polygon.polygonWindingOrder(points)
   end
   for i = start, n - 3, 4 do
     local x = points[i] - x0
-    local y = points[i + 1] + 0.0
+    local y = points[i + 1]
     local d = y - py
     sum = sum + (px + x) * d
     xSq = xSq + x * x
@@ -535,7 +537,10 @@ function polygon.polygonWindingOrder(points)
   end
   local d = y1 - py
   sum = sum + px * d
-  if areaUncertain(n / 2, sum, xSq, dSq + d * d) then
+  dSq = dSq + d * d
+  -- areaUncertain's test written out (a call costs more than the test)
+  local k = (n / 2 + 8) * 2^-50
+  if not (sum * sum > k * k * xSq * dSq) then   -- luacheck: ignore 581 (NaN is uncertain)
     checkFinitePoints(points, n, "polygonWindingOrder", "points", 3)
     shoelaceExact(points, n)
     sum = expSign()
@@ -573,7 +578,7 @@ function polygon.polygonArea(points)
   end
   for i = start, n - 3, 4 do
     local x = points[i] - x0
-    local y = points[i + 1] + 0.0
+    local y = points[i + 1]   -- converted by its differences, as in polygonWindingOrder
     sum = sum + (px + x) * (y - py)
     px = points[i + 2] - x0
     py = points[i + 3] + 0.0
@@ -589,7 +594,9 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- A compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
+-- On PUC Lua, for up to 64 vertices, first an error-free split (below), whose tests after its
+-- loop say whether it is within the bound; otherwise, and always on LuaJIT:
+-- a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
 -- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
 -- of |products| (bounded through their squares, which need no branch or abs). When that second
@@ -604,6 +611,104 @@ function polygon.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
   local n = #points
   if n < 6 then return nil end
+  local m = n / 2
+  if m <= 64 and not JIT then
+    -- First, on PUC Lua for up to 64 vertices, a cheaper error-free split (Rump, Ogita and Oishi's
+    -- ExtractScalar): with quanta qx, qy, powers of two near 2^-20 times the polygon's size,
+    -- (v + sigma) - sigma for sigma = 2^53 q is v rounded to a multiple of q, exactly, and the
+    -- rest v - that is exact and at most q, while |v| <= sigma / 2. Twice the area is
+    -- sum over edges i -> j of (X_i + X_j)(y_j - y_i), X = x - (x_1 rounded): of the rounded
+    -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of qx and qy, and so is
+    -- every sum of their products, while below 2^53 qx qy: that sum is exact. The rest,
+    -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point. About
+    -- 28 instructions per vertex against Dot2's 43 below (Lua 5.4; 406 per call against 468
+    -- on bench/workloads.lua's ordinary polygons, 2.95 times polygonArea's time against 3.23 in
+    -- lua5.4 bench/run.lua --only '^polygonAreaAccurate [of]'). On LuaJIT, where Dot2 meets
+    -- its target on these polygons, the side traces leaving this loop aborted ("NYI: register
+    -- coalescing too complex") and calls ran a thousand times as long. The tests after the
+    -- loop (sums of squares, Cauchy-Schwarz) prove that every rounded part was exact and that
+    -- the float part is off by less than a quarter ulp of the result; otherwise (quanta guessed badly from
+    -- vertices 1, m and the middle one, a sliver, a polygon far from the origin for its size,
+    -- NaN) Dot2 below decides.
+    local x1, y1 = points[1] + 0.0, points[2] + 0.0
+    local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
+    local gx, gy = points[k] - x1, points[k + 1] - y1
+    local ex, ey = points[n - 1] - x1, points[n] - y1
+    if gx < 0 then gx = -gx end   -- (abs is a call on PUC Lua)
+    if gy < 0 then gy = -gy end
+    if ex < 0 then gx = gx - ex else gx = gx + ex end
+    if ey < 0 then gy = gy - ey else gy = gy + ey end
+    -- the three vertices may line up along one axis: no guess below 2^-6 of the other
+    if gx < gy * 2^-6 then gx = gy * 2^-6 elseif gy < gx * 2^-6 then gy = gx * 2^-6 end
+    if gx >= 2^-120 and gx <= 2^120 and gy >= 2^-120 and gy <= 2^120 then
+      -- the power of two above g: (g 2^53 + g) - g 2^53 rounds to it, or to 0 when g is one
+      local t = gx * 2^53
+      local qx = (t + gx) - t
+      if qx == 0 then qx = gx end
+      t = gy * 2^53
+      local qy = (t + gy) - t
+      if qy == 0 then qy = gy end
+      qx, qy = qx * 2^-20, qy * 2^-20
+      local sigmaX, sigmaY = qx * 2^53, qy * 2^53
+      local x0h = (x1 + sigmaX) - sigmaX
+      -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
+      local x, y = points[n - 1], points[n]
+      local xh, yh = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+      local xHi, xLo, yLo = xh - x0h, x - xh, y - yh
+      local hi, lo, sSq, dSq = 0.0, 0.0, 0.0, 0.0
+      local start = 1
+      if m % 2 == 1 then   -- an odd number of edges: one before the pairs
+        x, y = points[1], points[2]
+        local x2h, y2h = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+        local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
+        local sh, dh = xHi + x2Hi, y2h - yh
+        local dl = y2Lo - yLo
+        hi, lo = sh * dh, sh * dl + (xLo + x2Lo) * (dh + dl)
+        sSq, dSq = sh * sh, dh * dh
+        xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
+      end
+      -- two edges per step (no moves between them; one addition to each sum per step)
+      for i = start, n - 3, 4 do
+        x = points[i]
+        y = points[i + 1]
+        local x2h, y2h = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+        local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
+        local sh, dh = xHi + x2Hi, y2h - yh
+        local dl = y2Lo - yLo
+        x = points[i + 2]
+        y = points[i + 3]
+        xh = (x + sigmaX) - sigmaX
+        local y3h = (y + sigmaY) - sigmaY
+        local x3Hi, x3Lo, y3Lo = xh - x0h, x - xh, y - y3h
+        local sh2, dh2 = x2Hi + x3Hi, y3h - y2h
+        local dl2 = y3Lo - y2Lo
+        hi = hi + (sh * dh + sh2 * dh2)
+        lo = lo + ((sh * dl + (xLo + x2Lo) * (dh + dl)) + (sh2 * dl2 + (x2Lo + x3Lo) * (dh2 + dl2)))
+        sSq = sSq + (sh * sh + sh2 * sh2)
+        dSq = dSq + (dh * dh + dh2 * dh2)
+        xHi = x3Hi
+        xLo = x3Lo
+        yh = y3h
+        yLo = y3Lo
+      end
+      local twice = hi + lo
+      local qxSq, qySq = qx * qx, qy * qy
+      -- Every |X| and |y - y_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1,
+      -- below sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is
+      -- then below sigma / 2, and every sh, dh exact. sum |sh dh| <= sqrt(sSq dSq) <= 2^50
+      -- qx qy keeps every partial sum of hi exact. The float part's error is below
+      -- (m + 6) eps B, B = 2 qy sum |sh| + 2 qx sum |dh| + 4 m qx qy (|yl|, |Xl| <= q; m
+      -- additions and 6 roundings per term); B^2 <= 12 m (qy^2 sSq + qx^2 dSq + 4 m qx^2 qy^2),
+      -- and 4 (m + 6) B <= |twice| is tested squared, 16 * 12 rounded up to 256. The
+      -- factors of 4 between 2^50 and 2^53 cover the rounding of the sums of squares.
+      if x1 * x1 + m * sSq <= 2^100 * qxSq and y1 * y1 + m * dSq <= 2^100 * qySq
+        and sSq * dSq <= 2^100 * (qxSq * qySq)
+        and 256 * (m + 6) * (m + 6) * m * (qySq * sSq + qxSq * dSq + 4 * m * qxSq * qySq)
+          < twice * twice then
+        return (twice < 0 and -twice or twice) * 0.5
+      end
+    end
+  end
   local splitter = SPLITTER   -- a register, not an upvalue, in the loop
   -- x and y of the vertex whose term is summed next, and the y before it: the last vertex first
   -- (so that every next y is points[i + 1], with no test for the end). x is not converted: a
@@ -636,7 +741,6 @@ function polygon.polygonAreaAccurate(points)
     y = yNext
   end
   local twice = sum + err
-  local m = n / 2
   -- Dot2's bound on its rounding beyond the final one is dot2Bound m^2 T, dot2Bound = 16 eps^2
   -- = 2^-102: the m TwoSum errors are each below eps |partial sum| <= eps T, and summing them
   -- with the product errors adds at most 3m eps times that; 16 leaves room for the terms' own
@@ -978,7 +1082,11 @@ function polygon.polygonCentroid(points)
     v = sum - momentY
     errY = errY + ((momentY - (sum - v)) + (term - v))
     momentY = sum
-    magnitude = magnitude + (l < 0 and -l or l) + (r < 0 and -r or r)
+    if JIT then   -- abs is one instruction there; the comparisons' exits were side traces
+      magnitude = magnitude + abs(l) + abs(r)
+    else          -- abs is a call on PUC Lua
+      magnitude = magnitude + (l < 0 and -l or l) + (r < 0 and -r or r)
+    end
     xi, yi = xj, yj
   end
   area2, momentX, momentY = area2 + errA, momentX + errX, momentY + errY
@@ -1010,40 +1118,99 @@ end
 -- The tutorial divides to find the edge's x; here the comparison is the exact side test
 -- x <= x'  <=>  (p2 - p1) x (q - p1) >= 0 when the edge goes down (y2 > y1), <= 0 when it goes up.
 -- The walk carries whether the last vertex was at or below the ray's height (y >= the ray's y,
--- screen down) and reads an edge's x coordinates only where it crosses: per vertex one read and
--- one comparison (on Lua 5.4 the two-sided test per edge cost about a third more; on LuaJIT
--- its branches grew a tree of side traces). x and y are converted, and so is every coordinate
--- before it is compared, so that Lua 5.3+ integers count as the doubles they convert to.
-local function contains(points, n, x, y)
-  -- numbers, not booleans: LuaJIT types true and false apart, and a loop-carried boolean that
-  -- flips aborted its traces ("persistent type instability")
-  local crossings, below = 0, 0
-  if points[n] + 0.0 >= y then below = 1 end
-  for i = 2, n, 2 do
-    local y2 = points[i] + 0.0
-    if below == 1 then
-      if y2 < y then   -- the edge from vertex i - 2 goes up across the ray's height
-        below = 0
-        local j = i == 2 and n or i - 2
-        local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
-        if x <= x1 and x <= x2 then
-          crossings = crossings + 1
-        elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) <= 0 then
-          crossings = crossings + 1
+-- screen down) and reads an edge's x coordinates only where it crosses. x and y come converted
+-- (+ 0.0); every coordinate read at a crossing is converted too, so that Lua 5.3+ integers count
+-- as the doubles they convert to. Two bodies, computing the same answer:
+-- - LuaJIT (and PUC Lua for |y| >= 2^53): at-or-below is the number 1 or 0 without a branch,
+--   min(1, max(0, d * 2^600 * 2^600 + 1)) for d = y' - y (every nonzero difference of doubles
+--   is at least 2^-1074, so the product reaches 2^126; d has the sign of the comparison, and of
+--   the converted one for an integer y'), and so is whether a crossing edge counts, from the
+--   sign of its direction times its side test (cross's filter written out, cross where it
+--   cannot vouch). An inner loop walks to the next crossing, so that LuaJIT's trace of it is the
+--   walk that crosses nothing, whatever vertex it was recorded on; a crossing is a side trace.
+--   The loop with a branch per comparison grew a tree of side traces that passed LuaJIT's limit
+--   of 100 per loop in some runs, after which calls ran in the interpreter, 2 to 5 times as long;
+--   one loop with a branch per crossing ran 1.2 to 1.3 times the tutorial's time in the runs
+--   whose trace was recorded on a crossing (bench/run.lua --only 'polygonContains cOrd').
+-- - PUC Lua: per vertex one read and two comparisons. The y coordinates are compared as they
+--   are, not converted (one instruction less per vertex: 0.96 to 0.87 times the tutorial's time
+--   on Lua 5.4): comparing a Lua 5.3+ integer with the double y gives the converted integer's
+--   answer whenever |y| < 2^53 (the integer is then compared as its exact double, or it is
+--   beyond 2^53 and so is its conversion, on the same side of y). Larger |y| take the first body.
+local contains
+do
+  local function containsBranchFree(points, n, x, y)
+    local below = min(1, max(0, (points[n] - y) * 2^600 * 2^600 + 1))
+    local crossings, i = 0, 2
+    while true do
+      -- the next vertex on the other side of the ray's height: a loop of its own, so that
+      -- LuaJIT's trace of it is the walk that crosses nothing
+      local atOrBelow = below
+      while i <= n do
+        atOrBelow = min(1, max(0, (points[i] - y) * 2^600 * 2^600 + 1))
+        if atOrBelow ~= below then break end
+        i = i + 2
+      end
+      if i > n then break end
+      -- the edge from vertex i - 2 crosses the ray's height
+      local j = i == 2 and n or i - 2
+      local x1, y1, x2, y2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0, points[i]
+      local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
+      local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
+      if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
+        -- (NaN and overflow too) through cross, not crossExact directly: called here, the side
+        -- traces of crossExact's first branch failed to compile ("NYI: register coalescing too
+        -- complex") and points near edges took 7 to 80 times the tutorial's time, 4 to 5 this way
+        -- (luajit bench/run.lua --only 'polygonContains cEdge')
+        side = cross(x1, y1, x2, y2, x1, y1, x, y)
+      end
+      -- it counts when side >= 0 going down (atOrBelow - below = 1), side <= 0 going up
+      crossings = crossings + min(1, max(0, (atOrBelow - below) * side * 2^600 * 2^600 + 1))
+      below = atOrBelow
+      i = i + 2
+    end
+    return crossings % 2 == 1
+  end
+
+  if JIT then
+    contains = containsBranchFree
+  else
+    contains = function(points, n, x, y)
+      if y >= 2^53 or y <= -2^53 then
+        local inside = containsBranchFree(points, n, x, y)
+        return inside
+      end
+      -- numbers, not booleans, as LuaJIT once needed (a loop-carried boolean that flips
+      -- aborted its traces, "persistent type instability"); no cost here
+      local crossings, below = 0, 0
+      if points[n] >= y then below = 1 end
+      for i = 2, n, 2 do
+        local y2 = points[i]
+        if below == 1 then
+          if y2 < y then   -- the edge from vertex i - 2 goes up across the ray's height
+            below = 0
+            local j = i == 2 and n or i - 2
+            local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
+            if x <= x1 and x <= x2 then
+              crossings = crossings + 1
+            elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) <= 0 then
+              crossings = crossings + 1
+            end
+          end
+        elseif y2 >= y then   -- it goes down across
+          below = 1
+          local j = i == 2 and n or i - 2
+          local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
+          if x <= x1 and x <= x2 then
+            crossings = crossings + 1
+          elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) >= 0 then
+            crossings = crossings + 1
+          end
         end
       end
-    elseif y2 >= y then   -- it goes down across
-      below = 1
-      local j = i == 2 and n or i - 2
-      local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
-      if x <= x1 and x <= x2 then
-        crossings = crossings + 1
-      elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) >= 0 then
-        crossings = crossings + 1
-      end
+      return crossings % 2 == 1
     end
   end
-  return crossings % 2 == 1
 end
 
 -- The O(1) checks of polygonContains and Polygon:contains, raised at their callers' lines
@@ -4189,7 +4356,11 @@ Polygon.__index = Polygon
 local function newPolygon(points, level)
   local ok, message = validate(points)
   if not ok then error("Polygon.new: " .. message, level + 1) end
-  return setmetatable({ points = points }, Polygon)
+  -- not a tail call: after a tail call to setmetatable (a built-in with side effects) LuaJIT
+  -- had no snapshot for the return past the frame where validate's loop trace began, and every
+  -- trace leaving that loop aborted ("NYI: return to lower frame")
+  local p = setmetatable({ points = points }, Polygon)
+  return p
 end
 
 --- Polygon.new(points), also Polygon(points): validates, then wraps points.

@@ -152,3 +152,71 @@ describe("polygonAreaAccurate against the exact area", function()
     assert.are.same({}, bad)
   end)
 end)
+
+-- The split path (up to 64 vertices): coordinates rounded to multiples of quanta guessed from
+-- vertices 1, m and the middle one. Its tests after the loop must catch every case where the
+-- guess was wrong (the other vertices far beyond the guessed size, so that the rounded sums are
+-- not exact), where the polygon lies far from the origin for its size (the rounding is then no
+-- longer exact), and where the small parts' float sum is too rough for one ulp (slivers, very
+-- flat boxes); the answer is within one ulp of the exact area either way.
+describe("polygonAreaAccurate's split path against the exact area", function()
+  local function polygonOf(r, kind)
+    local m, p = r:int(3, 64), {}
+    local size = 2 ^ r:int(-40, 40) * (0.5 + r:float())
+    local ox = (r:float() - 0.5) * 2 ^ r:int(-10, 60)
+    local oy = (r:float() - 0.5) * 2 ^ r:int(-10, 60)
+    if kind == 0 then   -- vertices 1, m and the middle close together, the others up to 2^40 farther
+      local far = size * 2 ^ r:int(0, 40)
+      for _ = 1, m do
+        p[#p + 1], p[#p + 2] = ox + far * (r:float() - 0.5), oy + far * (r:float() - 0.5)
+      end
+      local middle = m - m % 2 + 1
+      p[1], p[2] = ox, oy
+      p[middle], p[middle + 1] = ox + size, oy + size * 0.5
+      p[2 * m - 1], p[2 * m] = ox + size * 0.3, oy - size
+    elseif kind == 1 then   -- a sliver: points near a line, y off it by 2^-10 to 2^-60 of the size
+      local ux, uy = r:float() - 0.5, r:float() - 0.5
+      for _ = 1, m do
+        local t = size * r:float()
+        p[#p + 1] = ox + ux * t + size * 1e-12 * r:float()
+        p[#p + 1] = oy + uy * t + size * 2 ^ -r:int(10, 60) * r:float()
+      end
+    elseif kind == 2 then   -- random points in a box up to 2^20 times as wide as high (or high)
+      local aspect = 2 ^ r:int(-20, 20)
+      for _ = 1, m do
+        p[#p + 1], p[#p + 2] = ox + size * (r:float() - 0.5), oy + size * aspect * (r:float() - 0.5)
+      end
+    elseif kind == 3 then   -- a regular polygon: ox, oy near 2^50 times the quanta at some sizes
+      for k = 1, m do
+        local t = 2 * math.pi * k / m
+        p[#p + 1], p[#p + 2] = ox + size * math.cos(t), oy + size * math.sin(t)
+      end
+    else   -- a star
+      for k = 1, m do
+        local t, rk = (k + 0.8 * (r:float() - 0.5)) * 2 * math.pi / m, size * (0.3 + r:float())
+        p[#p + 1], p[#p + 2] = ox + rk * math.cos(t), oy + rk * math.sin(t)
+      end
+    end
+    return p
+  end
+
+  it("is within one ulp on guess-breaking, far, flat, sliver, regular and star polygons", function()
+    local r, bad = prng.new(20261122), {}
+    for i = 1, 1000 do check(polygonOf(r, i % 5), bad) end
+    assert.are.same({}, bad)
+  end)
+
+  it("is within one ulp on small integer grids far out (exact products everywhere)", function()
+    -- multiples of 2^k around an integer offset: every rounded part is the coordinate itself
+    local r, bad = prng.new(4099), {}
+    for _ = 1, 200 do
+      local g, ox, oy = 2 ^ r:int(0, 30), r:int(-2 ^ 40, 2 ^ 40), r:int(-2 ^ 40, 2 ^ 40)
+      local p = {}
+      for _ = 1, r:int(3, 64) do
+        p[#p + 1], p[#p + 2] = ox + r:int(-1000, 1000) * g, oy + r:int(-1000, 1000) * g
+      end
+      check(p, bad)
+    end
+    assert.are.same({}, bad)
+  end)
+end)

@@ -115,6 +115,26 @@ describe("points on and one or two ulps beside edges and vertices", function()
     assert.is_true(naive.count > 0, "the naive division should misplace some of these points")
   end)
 
+  it("are placed the same way when every coordinate is 2^60 times as large", function()
+    -- Scaling by a power of two is exact and keeps every answer. There |y| >= 2^53 for almost
+    -- every point, which on the PUC interpreters takes the walk that LuaJIT always takes (the
+    -- one whose comparisons are computed as numbers).
+    local t = tally.new("polygonContains vs oracle, scaled by 2^60")
+    local checked, far = 0, 0
+    for _, case in ipairs(cases) do
+      local p = {}
+      for i = 1, #case.points do p[i] = case.points[i] * 2 ^ 60 end
+      for _, q in ipairs(probe.pointsNear(p, { 0, 0.25, 0.5 })) do
+        local x, y = q[1], q[2]
+        checked = checked + 1
+        if y >= 2 ^ 53 or y <= -2 ^ 53 then far = far + 1 end
+        t:check(polygon.polygonContains(p, x, y) == oracle.contains(p, x, y), case.name, x, y)
+      end
+    end
+    assert.are.equal(0, t.count, t:message())
+    assert.is_true(far > 1000, "points beyond 2^53: " .. far .. " of " .. checked)
+  end)
+
   it("follow the half-open rule on horizontal edges and at vertices (hand-computed)", function()
     -- trapezoid (1,1) (6,1) (5,3) (2,3): the top edge y = 1 is outside, the bottom edge y = 3
     -- inside between its ends; the left side is x = 1 + (y - 1) / 2, the right one

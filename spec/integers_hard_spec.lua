@@ -237,4 +237,22 @@ describeIntegers("integer coordinates beyond 2^53", function()
     assert.are.same({ polygon.polygonCentroid(q) }, { polygon.polygonCentroid(p) })
     assert.are.same({ polygon.polygonCenter(q) }, { polygon.polygonCenter(p) })
   end)
+
+  it("give the measures the values of the converted polygon for odd and even vertex counts", function()
+    -- 3 to 8 vertices whose y are odd integers beyond 2^53, which round when converted: the
+    -- loops read every other y unconverted and convert it through its differences
+    for m = 3, 8 do
+      local p = {}
+      for k = 1, m do
+        local t = 2 * math.pi * k / m
+        p[2 * k - 1] = math.floor(1000 * math.cos(t))
+        p[2 * k] = B + (k % 2 == 0 and 1 or 3) + math.floor(1000 * math.sin(t)) * 4
+      end
+      local q = converted(p)
+      assert.are.equal(polygon.polygonWindingOrder(q), polygon.polygonWindingOrder(p), m)
+      assert.are.equal(polygon.polygonArea(q), polygon.polygonArea(p), m)
+      assert.are.equal(polygon.polygonAreaAccurate(q), polygon.polygonAreaAccurate(p), m)
+      assert.is_true(exact.withinUlps(polygon.polygonAreaAccurate(p), oracle.area(q), 1), m)
+    end
+  end)
 end)
