@@ -3410,10 +3410,9 @@ local function flatView(fname, argname, shape, view)
 end
 
 -- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
-local boxes1, boxes2 = {}, {}      -- the boxes of the two views of the call
 local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
-local pairGap = {}                 -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
+local pairGaps = {}                -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
 
 -- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
 -- checks of the views did not see (one off the box of a list's part) raises the argument error
@@ -3432,19 +3431,26 @@ end
 -- coordinate differences, for projectionTolerance).
 local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
+  -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
+  local tolBound = 16 * EPS * (spanX + spanY)
   local e = ne / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for i = 1, ne - 1, 2 do
     local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
       local ux, uy = normals[i], normals[i + 1]
-      local kax, kay = ax * k, ay * k
-      local lo = huge
-      for j = 1, no - 1, 2 do
-        local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
-        if s < lo then lo = s end
+      local lo
+      if k == 1 then   -- the same numbers as the scaled loop below
+        lo = minProjection(other, no, ax, ay, ux, uy)
+      else
+        local kax, kay = ax * k, ay * k
+        lo = huge
+        for j = 1, no - 1, 2 do
+          local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+          if s < lo then lo = s end
+        end
       end
-      if not separated then
+      if not separated and -lo <= tolBound then   -- else -lo > tol: the edge cannot separate
         local tol = projectionTolerance(spanX, spanY, ux, uy)
         if -lo <= tol and (-lo < -tol
             or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no)) then
@@ -3475,34 +3481,48 @@ local function pushFree(tx, ty, np, margin)
   return true
 end
 
+local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
+
 -- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
 local function nearestFree(np, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
-  -- The nearest foot first: it is usually free, and then no farther candidate is tried.
+  -- The nearest foot first: it is usually free, and then no other foot is nearer (the feet
+  -- loop below keeps only nearer ones, so it is skipped).
   local nearest, nearestD = 0, huge
   for f = 1, last do
     local d = abs(faceC[f] + lift)
     if faceOuter[f] and d < nearestD then nearest, nearestD = f, d end
   end
+  local nearestFreed = false
   if nearest > 0 then
     local d = faceC[nearest] + lift
     local tx, ty = faceX[nearest] * d, faceY[nearest] * d
-    if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY, nearestFreed = abs(d), tx, ty, true end
   end
-  for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
-    local d = faceC[f] + lift
-    if faceOuter[f] and abs(d) < best then
-      local tx, ty = faceX[f] * d, faceY[f] * d
-      if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+  if not nearestFreed then
+    for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
+      local d = faceC[f] + lift
+      if faceOuter[f] and abs(d) < best then
+        local tx, ty = faceX[f] * d, faceY[f] * d
+        if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+      end
     end
   end
-  for f = 1, last - 1 do   -- crossings of two lines, each nearer than the best so far
+  -- Crossings of two lines, each nearer than the best so far (a crossing is no nearer than
+  -- either line): only the lines nearer than the best now can take part, usually a few of them.
+  local count = 0
+  for f = 1, last do
+    if abs(faceC[f] + lift) < best then count = count + 1; nearLines[count] = f end
+  end
+  for a = 1, count - 1 do
+    local f = nearLines[a]
     local c1 = faceC[f] + lift
     if abs(c1) < best then
       local x1, y1 = faceX[f], faceY[f]
-      for g = f + 1, last do
+      for b = a + 1, count do
+        local g = nearLines[b]
         local c2 = faceC[g] + lift
         if abs(c2) < best then
           local x2, y2 = faceX[g], faceY[g]
@@ -3531,7 +3551,7 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
   local n1, n2 = view1.lengths[i], view2.lengths[j]
-  local a, b = 4 * i, 4 * j
+  local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
   local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
   faceFirst[np + 1] = top + 1
@@ -3554,7 +3574,7 @@ function collideParts(fname, shape1, shape2, wantPush)
   local view2 = parts2 and listView(fname, "points2", shape2)
     or flatView(fname, "points2", shape2, flatView2)
   local count1, count2 = view1.count, view2.count
-  boxes1, boxes2 = view1.boxes, view2.boxes
+  local boxes1, boxes2 = view1.boxes, view2.boxes
   if not wantPush then
     local i, j = 1, 0
     for _ = 1, count1 * count2 do   -- one loop over the pairs: see below
@@ -3579,30 +3599,36 @@ function collideParts(fname, shape1, shape2, wantPush)
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- delta above: 64 eps E + 2 eps S
   callStamp = callStamp + 1
   -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
-  -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box,
-  -- or once the pair is in), and `nearest` is the least of those.
+  -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box:
+  -- the empty box's huge minus any coordinate is huge; or once the pair is in), and `nearest`
+  -- is the least of those.
   -- One loop over the pairs, not two nested (on LuaJIT an inner loop of one part, as for a flat
   -- second shape, costs a trace exit for every part of the first).
   local np, top, hit, nearest = 0, 0, false, huge
+  local pairGap = pairGaps   -- a local: PUC Lua reads an upvalue by an extra instruction
   local i, j = 1, 0
   for pair = 1, count1 * count2 do
     if j == count2 then i, j = i + 1, 1 else j = j + 1 end
     local a, b = 4 * i, 4 * j
     -- a - b < 0 exactly when a < b: no NaN, as an empty box is (huge, huge, -huge, -huge)
-    local gapX = max(boxes1[a - 3] - boxes2[b - 1], boxes2[b - 3] - boxes1[a - 1])
-    local gapY = max(boxes1[a - 2] - boxes2[b], boxes2[b - 2] - boxes1[a])
+    local gapX, gapY = boxes1[a - 3] - boxes2[b - 1], boxes1[a - 2] - boxes2[b]
+    local gapX2, gapY2 = boxes2[b - 3] - boxes1[a - 1], boxes2[b - 2] - boxes1[a]
+    if JIT then   -- no side exits (see minProjection)
+      gapX, gapY = max(gapX, gapX2), max(gapY, gapY2)
+    else          -- no calls
+      if gapX2 > gapX then gapX = gapX2 end
+      if gapY2 > gapY then gapY = gapY2 end
+    end
     if gapX < 0 and gapY < 0 then
       pairGap[pair] = huge
       local overlaps
       np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
         parts2 and shape2[j] or shape2, j, k, np, top)
       if overlaps then hit = true end
-    elseif boxes1[a - 3] <= boxes1[a - 1] and boxes2[b - 3] <= boxes2[b - 1] then
-      local gap = max(gapX * k, gapY * k, 0.0)
+    else   -- >= 0, as not both are < 0; huge (inf) when a box is empty
+      local gap = (JIT and max(gapX, gapY) or gapX > gapY and gapX or gapY) * k
       pairGap[pair] = gap
       if gap < nearest then nearest = gap end
-    else
-      pairGap[pair] = huge
     end
   end
   if not hit then return false end
@@ -3786,7 +3812,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
   local view = listView(fname, "points", shape)
   local count, turns, normals, internal = view.count, view.turns, view.normals, view.internal
   local left, top, right, bottom = view.left, view.top, view.right, view.bottom
-  boxes1 = view.boxes
+  local boxes = view.boxes
   cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
   if r == 0 then return false end
   local magnitude = max(view.magnitude, abs(cx) + r, abs(cy) + r)
@@ -3797,8 +3823,8 @@ function collideCircleParts(fname, shape, cx, cy, r)
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- as for polygons: 64 eps E + 2 eps S
   local np, last, hit = 0, 0, false
   for i = 1, count do
-    if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
-        and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
+    if boxes[4 * i - 3] < cx + r and cx - r < boxes[4 * i - 1]
+        and boxes[4 * i - 2] < cy + r and cy - r < boxes[4 * i] then
       local part = shape[i]
       local n = #part
       if view.checked[i] ~= callStamp then checkCopy(view, i, part, 5) end
@@ -3821,12 +3847,12 @@ function collideCircleParts(fname, shape, cx, cy, r)
     local before = np
     for i = 1, count do
       local a = 4 * i
-      if boxes1[a - 3] <= boxes1[a - 1] and circleAdded[i] ~= callStamp
-          and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
-                   and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+      if boxes[a - 3] <= boxes[a - 1] and circleAdded[i] ~= callStamp
+          and not (boxes[a - 3] < cx + r and cx - r < boxes[a - 1]
+                   and boxes[a - 2] < cy + r and cy - r < boxes[a]) then
         -- how far t lies beyond the box of D, along x and along y (< 0 inside)
-        local outX = max((boxes1[a - 3] - cx - r) * k - tx, tx - (boxes1[a - 1] - cx + r) * k)
-        local outY = max((boxes1[a - 2] - cy - r) * k - ty, ty - (boxes1[a] - cy + r) * k)
+        local outX = max((boxes[a - 3] - cx - r) * k - tx, tx - (boxes[a - 1] - cx + r) * k)
+        local outY = max((boxes[a - 2] - cy - r) * k - ty, ty - (boxes[a] - cy + r) * k)
         if best == huge or max(outX, outY) < near then
           circleAdded[i] = callStamp
           if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 5) end
