@@ -3133,9 +3133,10 @@ end
 
 -- The preparation each list of parts gets on first use, kept while the list lives (weak keys):
 -- per part a copy of its coordinates, its bounding box, its area sign and its outward unit edge
--- normals, and which of its edges are internal: internal[k][e] is true when the edge of part k
+-- normals, and which of its edges are internal: internal[k][e] is 1 when the edge of part k
 -- from vertex e to vertex e + 1 (the last to the first) is covered by edges of other parts
--- running the opposite way along the same line (shared with the neighbours, whole or in pieces).
+-- running the opposite way along the same line (shared with the neighbours, whole or in pieces),
+-- else 0 (numbers, not true and nil: on LuaJIT a load whose type varies is a side exit).
 -- Keeping it right. Reading every coordinate on every call costs as much as the pair tests a
 -- call needs, so each call checks, per part, only its table, its length and the four
 -- coordinates on its box (the vertices that gave xmin, ymin, xmax, ymax). That is exact for a
@@ -3244,7 +3245,9 @@ local function prepareParts(fname, argname, parts)
     local n = #part
     local copy = {}
     for i = 1, n do copy[i] = part[i] end
-    info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, {}, copy, {}
+    local flags = {}
+    for e = 1, n / 2 do flags[e] = 0 end
+    info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
     info.tables[k], info.checked[k] = part, 0
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
@@ -3294,7 +3297,7 @@ local function prepareParts(fname, argname, parts)
     if #E.covers > 0 then
       local onX = E.ax ~= E.bx
       local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
-      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = true end
+      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = 1 end
     end
   end
   preparedParts[parts] = info
@@ -3384,10 +3387,12 @@ local function listView(fname, argname, shape)
 end
 
 -- The two views of flat arrays (one per argument), refilled on every call. `pending`: the area
--- sign and normals are still to compute (only a push on overlapping boxes needs them).
+-- sign and normals are still to compute (only a push on overlapping boxes needs them). No edge
+-- of a flat array is internal: internal[1] holds 0 for edges 1 .. edgeRoom, grown when a
+-- larger array comes (once, never shrunk).
 local function newFlatView()
-  return { count = 1, lengths = {}, internal = {}, boxes = {}, extremes = {}, turns = {},
-           normals = { {} }, pending = false }
+  return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {}, extremes = {},
+           turns = {}, normals = { {} }, pending = false }
 end
 local flatView1, flatView2 = newFlatView(), newFlatView()
 
@@ -3404,13 +3409,19 @@ local function flatView(fname, argname, shape, view)
   if not partBox(view, 1, shape, n) then
     error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
   end
+  if n / 2 > view.edgeRoom then
+    local flags = view.internal[1]
+    for e = view.edgeRoom + 1, n / 2 do flags[e] = 0 end
+    view.edgeRoom = n / 2
+  end
   view.lengths[1], view.pending = n, true
   shapeBox(view)
   return view
 end
 
 -- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
-local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceX, faceY, faceC = {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceSeam = {}                -- 1 for a face from an internal edge (no foot on it), else 0
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 local pairGaps = {}                -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
 
@@ -3423,12 +3434,20 @@ local function overlapsConvex(fname, p1, p2)
   return depth ~= false
 end
 
+-- Whether the edge a -> b of a part (turn its area sign, (ux, uy) its outward unit normal)
+-- separates the part from `other`, whose least projection on (ux, uy) from a is lo: decided
+-- exactly, by cross's sign where projectionTolerance cannot vouch.
+local function edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
+  local tol = projectionTolerance(spanX, spanY, ux, uy)
+  return -lo <= tol and (-lo < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no))
+end
+
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
 -- part give (turn its area sign, normals its outward unit normals; sense 1 for a part of the
 -- first shape, -1 for one of the second, whose outward normal points the other way in t), with
 -- `other` the part it is paired with. Coordinates are scaled by k. Returns the last index used
--- and whether some edge separates the two parts, decided exactly (w, h bound the scaled
--- coordinate differences, for projectionTolerance).
+-- and whether some edge separates the two parts, decided exactly (spanX, spanY bound
+-- the scaled coordinate differences, for projectionTolerance).
 local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
   -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
@@ -3450,16 +3469,13 @@ local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k,
           if s < lo then lo = s end
         end
       end
-      if not separated and -lo <= tolBound then   -- else -lo > tol: the edge cannot separate
-        local tol = projectionTolerance(spanX, spanY, ux, uy)
-        if -lo <= tol and (-lo < -tol
-            or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no)) then
-          separated = true
-        end
+      -- -lo > tolBound >= projectionTolerance: the edge cannot separate
+      if not separated and -lo <= tolBound then
+        separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
       end
       top = top + 1
       faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
-      faceOuter[top] = not (internal and internal[e])
+      faceSeam[top] = internal[e]
     end
     ax, ay, e = bx, by, (i + 1) / 2
   end
@@ -3493,7 +3509,7 @@ local function nearestFree(np, margin)
   local nearest, nearestD = 0, huge
   for f = 1, last do
     local d = abs(faceC[f] + lift)
-    if faceOuter[f] and d < nearestD then nearest, nearestD = f, d end
+    if faceSeam[f] == 0 and d < nearestD then nearest, nearestD = f, d end
   end
   local nearestFreed = false
   if nearest > 0 then
@@ -3504,7 +3520,7 @@ local function nearestFree(np, margin)
   if not nearestFreed then
     for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
       local d = faceC[f] + lift
-      if faceOuter[f] and abs(d) < best then
+      if faceSeam[f] == 0 and abs(d) < best then
         local tx, ty = faceX[f] * d, faceY[f] * d
         if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
       end
@@ -3539,21 +3555,57 @@ local function nearestFree(np, margin)
   return best, bestX, bestY
 end
 
--- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair
--- np + 1. Returns np, top and whether the parts overlap, decided exactly.
-local function addPair(view1, p1, i, view2, p2, j, k, np, top)
+-- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for a pair test:
+-- a flat view's normals computed, a list's part compared with its whole copy (the non-finite
+-- error raised at the public function's caller, level 7 from checkCopy). Returns their area
+-- signs and spanX, spanY (scaled by k) bounding their coordinate differences.
+local function preparePair(view1, p1, i, view2, p2, j, k)
   if view1.pending then partNormals(view1, 1, p1, #p1); view1.pending = false end
   if view2.pending then partNormals(view2, 1, p2, #p2); view2.pending = false end
-  -- a list's part: its whole copy compared (the non-finite error raised at the public
-  -- function's caller, level 6 from checkCopy)
-  if view1.copies and view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 6) end
-  if view2.copies and view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 6) end
-  local turn1, turn2 = view1.turns[i], view2.turns[j]
-  if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
-  local n1, n2 = view1.lengths[i], view2.lengths[j]
+  if view1.copies and view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 7) end
+  if view2.copies and view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 7) end
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
   local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
+  return view1.turns[i], view2.turns[j], spanX, spanY
+end
+
+-- Whether some edge of the part `edges` (turn its area sign, normals its outward unit normals)
+-- separates it from the part `other`, decided exactly as addFaces decides it (unscaled
+-- coordinates: the boolean's pairs, k = 1).
+local function edgesSeparate(edges, ne, turn, normals, other, no, spanX, spanY)
+  local tolBound = 16 * EPS * (spanX + spanY)   -- as in addFaces
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  for i = 1, ne - 1, 2 do
+    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local ux, uy = normals[i], normals[i + 1]
+      local lo = minProjection(other, no, ax, ay, ux, uy)
+      if -lo <= tolBound and edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY) then
+        return true
+      end
+    end
+    ax, ay = bx, by
+  end
+  return false
+end
+
+-- Whether part p1 (number i of view1) and p2 (number j of view2) overlap, exactly: the boolean
+-- addPair returns, without building faces.
+local function pairOverlaps(view1, p1, i, view2, p2, j)
+  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, 1.0)
+  if turn1 == 0 or turn2 == 0 then return false end   -- zero area: never collides
+  local n1, n2 = view1.lengths[i], view2.lengths[j]
+  return not (edgesSeparate(p1, n1, turn1, view1.normals[i], p2, n2, spanX, spanY)
+    or edgesSeparate(p2, n2, turn2, view2.normals[j], p1, n1, spanX, spanY))
+end
+
+-- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair
+-- np + 1. Returns np, top and whether the parts overlap, decided exactly.
+local function addPair(view1, p1, i, view2, p2, j, k, np, top)
+  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, k)
+  if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  local n1, n2 = view1.lengths[i], view2.lengths[j]
   faceFirst[np + 1] = top + 1
   local apart1, apart2
   top, apart1 = addFaces(p1, n1, turn1, view1.normals[i], p2, n2, view1.internal[i], 1.0, k, spanX, spanY,
@@ -3575,20 +3627,28 @@ function collideParts(fname, shape1, shape2, wantPush)
     or flatView(fname, "points2", shape2, flatView2)
   local count1, count2 = view1.count, view2.count
   local boxes1, boxes2 = view1.boxes, view2.boxes
+  local magnitude = max(view1.magnitude, view2.magnitude)
+  callStamp = callStamp + 1
   if not wantPush then
+    -- Each pair as addPair decides it, from the prepared normals (no faces); beyond the exact
+    -- range, where the push scales (below), by the SAT engine, which rescales itself.
+    local scaled = magnitude > EXACT_TOP or magnitude < 2^-400
     local i, j = 1, 0
     for _ = 1, count1 * count2 do   -- one loop over the pairs: see below
       if j == count2 then i, j = i + 1, 1 else j = j + 1 end
       local a, b = 4 * i, 4 * j
       if boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
-          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
-          and overlapsConvex(fname, parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
-        return true
+          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a] then
+        local p1, p2 = parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2
+        if scaled then
+          if overlapsConvex(fname, p1, p2) then return true end
+        elseif pairOverlaps(view1, p1, i, view2, p2, j) then
+          return true
+        end
       end
     end
     return false
   end
-  local magnitude = max(view1.magnitude, view2.magnitude)
   -- beyond the exact range, or so small that products would underflow, the faces are built on
   -- coordinates scaled by a power of two k into [2^100, 2^164]: there every product of two
   -- stays far from overflow (2^328) and underflow, and scaling back is exact
@@ -3597,7 +3657,6 @@ function collideParts(fname, shape1, shape2, wantPush)
   local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
     + (max(view1.bottom, view2.bottom) - min(view1.top, view2.top))) * k
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- delta above: 64 eps E + 2 eps S
-  callStamp = callStamp + 1
   -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
   -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box:
   -- the empty box's huge minus any coordinate is huge; or once the pair is in), and `nearest`
@@ -3695,7 +3754,7 @@ local function addCircleFaces(part, n, normals, internal, cx, cy, k, top)
       faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
       faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
       faceQ[top] = sqrt(qax * qax + qay * qay)
-      faceOuter[top] = not (internal and internal[e])
+      faceSeam[top] = internal[e]
     end
     ax, ay, e = bx, by, (i + 1) / 2
   end
@@ -3745,7 +3804,7 @@ local function nearestFreeCircle(np, r, margin)
   local reach, need = r + 1.25 * margin, r + margin   -- lines and arcs moved out by lift
   for f = 1, last do   -- feet on the outer edges' moved lines
     local d = faceC[f] + reach
-    if faceOuter[f] and abs(d) < best then
+    if faceSeam[f] == 0 and abs(d) < best then
       best, bestX, bestY = tryCircle(faceX[f] * d, faceY[f] * d, np, need, best, bestX, bestY)
     end
   end
