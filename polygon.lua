@@ -3199,14 +3199,20 @@ local function partBox(view, k, part, n)
   return finite == 0
 end
 
--- The area sign and the edge normals of part k (finite coordinates) into view.
-local function partNormals(view, k, part, n)
+-- The area sign of part k (finite coordinates) into view, and returned.
+local function partTurn(view, k, part, n)
   local turn = 0.0
   if n >= 6 then
     local sign = areaSign(part, n)
     turn = sign > 0 and 1.0 or sign < 0 and -1.0 or 0.0
   end
   view.turns[k] = turn
+  return turn
+end
+
+-- The area sign and the edge normals of part k (finite coordinates) into view.
+local function partNormals(view, k, part, n)
+  local turn = partTurn(view, k, part, n)
   if turn == 0 then return end   -- never collides: no normal is read
   local normals = view.normals[k]
   local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
@@ -3387,12 +3393,13 @@ local function listView(fname, argname, shape)
 end
 
 -- The two views of flat arrays (one per argument), refilled on every call. `pending`: the area
--- sign and normals are still to compute (only a push on overlapping boxes needs them). No edge
+-- sign and normals are still to compute (only a push on overlapping boxes needs them);
+-- `turnPending`: the area sign is (a boolean on overlapping boxes needs only that). No edge
 -- of a flat array is internal: internal[1] holds 0 for edges 1 .. edgeRoom, grown when a
 -- larger array comes (once, never shrunk).
 local function newFlatView()
   return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {}, extremes = {},
-           turns = {}, normals = { {} }, pending = false }
+           turns = {}, normals = { {} }, pending = false, turnPending = false }
 end
 local flatView1, flatView2 = newFlatView(), newFlatView()
 
@@ -3414,7 +3421,7 @@ local function flatView(fname, argname, shape, view)
     for e = view.edgeRoom + 1, n / 2 do flags[e] = 0 end
     view.edgeRoom = n / 2
   end
-  view.lengths[1], view.pending = n, true
+  view.lengths[1], view.pending, view.turnPending = n, true, true
   shapeBox(view)
   return view
 end
@@ -3434,9 +3441,9 @@ local function overlapsConvex(fname, p1, p2)
   return depth ~= false
 end
 
--- Whether the edge a -> b of a part (turn its area sign, (ux, uy) its outward unit normal)
--- separates the part from `other`, whose least projection on (ux, uy) from a is lo: decided
--- exactly, by cross's sign where projectionTolerance cannot vouch.
+-- Whether the edge a -> b of a part (turn its area sign, (ux, uy) its outward normal, unit or
+-- not) separates the part from `other`, whose least projection on (ux, uy) from a is lo:
+-- decided exactly, by cross's sign where projectionTolerance cannot vouch.
 local function edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
   local tol = projectionTolerance(spanX, spanY, ux, uy)
   return -lo <= tol and (-lo < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no))
@@ -3556,32 +3563,46 @@ local function nearestFree(np, margin)
 end
 
 -- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for a pair test:
--- a flat view's normals computed, a list's part compared with its whole copy (the non-finite
--- error raised at the public function's caller, level 7 from checkCopy). Returns their area
--- signs and spanX, spanY (scaled by k) bounding their coordinate differences.
+-- a list's part compared with its whole copy (the non-finite error raised at the public
+-- function's caller, level 7 from checkCopy), a flat view's area sign computed and, for a push
+-- (k given), its normals. Returns their area signs and spanX, spanY (scaled by k, or 1 for a
+-- boolean) bounding their coordinate differences.
 local function preparePair(view1, p1, i, view2, p2, j, k)
-  if view1.pending then partNormals(view1, 1, p1, #p1); view1.pending = false end
-  if view2.pending then partNormals(view2, 1, p2, #p2); view2.pending = false end
-  if view1.copies and view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 7) end
-  if view2.copies and view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 7) end
+  if view1.copies then
+    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 7) end
+  elseif k then
+    if view1.pending then partNormals(view1, 1, p1, #p1); view1.pending = false end
+  elseif view1.turnPending then
+    partTurn(view1, 1, p1, #p1); view1.turnPending = false
+  end
+  if view2.copies then
+    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 7) end
+  elseif k then
+    if view2.pending then partNormals(view2, 1, p2, #p2); view2.pending = false end
+  elseif view2.turnPending then
+    partTurn(view2, 1, p2, #p2); view2.turnPending = false
+  end
+  k = k or 1.0
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
   local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
   return view1.turns[i], view2.turns[j], spanX, spanY
 end
 
--- Whether some edge of the part `edges` (turn its area sign, normals its outward unit normals)
--- separates it from the part `other`, decided exactly as addFaces decides it (unscaled
--- coordinates: the boolean's pairs, k = 1).
-local function edgesSeparate(edges, ne, turn, normals, other, no, spanX, spanY)
-  local tolBound = 16 * EPS * (spanX + spanY)   -- as in addFaces
+-- Whether some edge of the part `edges` (turn its area sign) separates it from the part
+-- `other`, decided exactly: the SAT engine's test (reachPast's), on each edge's outward normal
+-- as the coordinates' differences give it (unscaled coordinates: the boolean's pairs).
+local function edgesSeparate(edges, ne, turn, other, no, spanX, spanY)
+  -- at least projectionTolerance of every edge's normal, whose |nx| <= spanY, |ny| <= spanX
+  -- (rounding is monotonic): an edge whose -lo exceeds it cannot separate
+  local tolBound = 16 * EPS * (2 * (spanX * spanY))
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for i = 1, ne - 1, 2 do
     local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = normals[i], normals[i + 1]
-      local lo = minProjection(other, no, ax, ay, ux, uy)
-      if -lo <= tolBound and edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY) then
+      local nx, ny = (by - ay) * turn, (ax - bx) * turn
+      local lo = minProjection(other, no, ax, ay, nx, ny)
+      if -lo <= tolBound and edgeSeparates(lo, ax, ay, bx, by, turn, nx, ny, other, no, spanX, spanY) then
         return true
       end
     end
@@ -3593,11 +3614,11 @@ end
 -- Whether part p1 (number i of view1) and p2 (number j of view2) overlap, exactly: the boolean
 -- addPair returns, without building faces.
 local function pairOverlaps(view1, p1, i, view2, p2, j)
-  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, 1.0)
+  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, false)
   if turn1 == 0 or turn2 == 0 then return false end   -- zero area: never collides
   local n1, n2 = view1.lengths[i], view2.lengths[j]
-  return not (edgesSeparate(p1, n1, turn1, view1.normals[i], p2, n2, spanX, spanY)
-    or edgesSeparate(p2, n2, turn2, view2.normals[j], p1, n1, spanX, spanY))
+  return not (edgesSeparate(p1, n1, turn1, p2, n2, spanX, spanY)
+    or edgesSeparate(p2, n2, turn2, p1, n1, spanX, spanY))
 end
 
 -- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair

@@ -171,6 +171,42 @@ describe("compound shapes far from the origin", function()
   end)
 end)
 
+describe("the boolean at contact", function()
+  -- A flat crate (and its mirror, a flat floor part against a list crate) resting exactly on a
+  -- random terrain's sloped tops, then moved by about an ulp down, up and sideways: the answers
+  -- are the exact oracle's at every offset, in both argument orders. The terrain's tops are
+  -- lines through integer points, so a corner placed on one is exactly on it.
+  it("agrees with the oracle on resting and nudged crates, flat or listed, at every offset", function()
+    local g = prng.new(23)
+    local wrong = tally.new("boolean unlike the oracle")
+    for _ = 1, 150 do
+      local terrain = scenes.terrain(g, 8)
+      local column = terrain[g:int(1, #terrain)]
+      -- a vertex of the column's top edge, and the crate resting on it or hanging off its end
+      local onRight = g:int(0, 1) == 1
+      local x, y = column[onRight and 3 or 1], column[onRight and 4 or 2]
+      local w, h = g:int(1, 12), g:int(1, 12)
+      local left = x - w * g:int(0, 1)   -- its bottom left or bottom right corner there
+      for _, off in ipairs(OFFSETS) do
+        local nudge = math.max(2 ^ -40, off * 2 ^ -50)
+        for _, move in ipairs({ { 0, 0 }, { 0, nudge }, { 0, -nudge }, { nudge, 0 }, { -nudge, nudge } }) do
+          local crate = parts.box(left + off + move[1], y - h + off + move[2], w, h)
+          local t = parts.translate(terrain, off, off)
+          local truth = parts.collide(t, { crate })
+          wrong:check(collide(t, crate) == truth and collide(crate, t) == truth
+            and collide(t, { crate }) == truth, tally.show(t), tally.show(crate))
+          local flatColumn = parts.translate({ column }, off, off)[1]
+          local truthColumn = parts.collide({ flatColumn }, { crate })
+          wrong:check(collide(flatColumn, { crate }) == truthColumn
+            and collide({ crate }, flatColumn) == truthColumn, tally.show(flatColumn), tally.show(crate))
+        end
+      end
+    end
+    assert.are.equal(0, wrong.count, table.concat(wrong.examples, "\n"))
+    assert.is_true(wrong.total >= 6000)
+  end)
+end)
+
 describe("compound shapes per frame", function()
   it("allocate nothing once prepared", function()
     local floor = parts.floor(20, 10, 100, 0)
