@@ -3331,7 +3331,7 @@ local callStamp = 0   -- counts the calls that push: checked[k] == callStamp whe
 -- non-finite error at `level` (counted from here, 1).
 local function refreshPart(view, k, part, n, level)
   if not partBox(view, k, part, n) then
-    view.lengths[k] = -1   -- the next call prepares the list again, and raises again
+    view.tables[k] = false   -- the next call refreshes the part again, and raises again
     error(("%s: %s holds a non-finite coordinate"):format(view.fname, view.argname), level)
   end
   partNormals(view, k, part, n)
@@ -3362,7 +3362,7 @@ local function listView(fname, argname, shape)
     local changed = false
     for k = 1, info.count do
       local part, n = shape[k], lengths[k]
-      if part ~= tables[k] or n < 0 then   -- another table, or a non-finite coordinate before
+      if part ~= tables[k] then   -- another table, or a non-finite coordinate before (false)
         if type(part) ~= "table" or #part ~= n then
           changed = nil   -- prepare again (or raise the error)
           break
