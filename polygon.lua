@@ -3369,7 +3369,7 @@ local function listView(fname, argname, shape)
         end
         tables[k], changed = part, true
         refreshPart(info, k, part, n, 5)
-      elseif part[n + 1] ~= nil or n > 0 and part[n] == nil then   -- another length
+      elseif #part ~= n then   -- another length
         changed = nil
         break
       elseif n >= 6 then
@@ -3526,6 +3526,7 @@ local function pushFree(tx, ty, np, margin)
 end
 
 local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
+local faceReach = {}   -- scratch for nearestFree: |faceC + lift|, how near each face's line passes
 
 -- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
 local function nearestFree(np, margin)
@@ -3536,21 +3537,23 @@ local function nearestFree(np, margin)
   -- loop below keeps only nearer ones, so it is skipped).
   local nearest, nearestD = 0, huge
   for f = 1, last do
-    local d = abs(faceC[f] + lift)
+    local d = faceC[f] + lift
+    if JIT then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
+    faceReach[f] = d
     if faceSeam[f] == 0 and d < nearestD then nearest, nearestD = f, d end
   end
   local nearestFreed = false
   if nearest > 0 then
     local d = faceC[nearest] + lift
     local tx, ty = faceX[nearest] * d, faceY[nearest] * d
-    if pushFree(tx, ty, np, margin) then best, bestX, bestY, nearestFreed = abs(d), tx, ty, true end
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY, nearestFreed = nearestD, tx, ty, true end
   end
   if not nearestFreed then
     for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
-      local d = faceC[f] + lift
-      if faceSeam[f] == 0 and abs(d) < best then
+      if faceSeam[f] == 0 and faceReach[f] < best then
+        local d = faceC[f] + lift
         local tx, ty = faceX[f] * d, faceY[f] * d
-        if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+        if pushFree(tx, ty, np, margin) then best, bestX, bestY = faceReach[f], tx, ty end
       end
     end
   end
@@ -3558,17 +3561,16 @@ local function nearestFree(np, margin)
   -- either line): only the lines nearer than the best now can take part, usually a few of them.
   local count = 0
   for f = 1, last do
-    if abs(faceC[f] + lift) < best then count = count + 1; nearLines[count] = f end
+    if faceReach[f] < best then count = count + 1; nearLines[count] = f end
   end
   for a = 1, count - 1 do
     local f = nearLines[a]
-    local c1 = faceC[f] + lift
-    if abs(c1) < best then
-      local x1, y1 = faceX[f], faceY[f]
+    if faceReach[f] < best then
+      local c1, x1, y1 = faceC[f] + lift, faceX[f], faceY[f]
       for b = a + 1, count do
         local g = nearLines[b]
-        local c2 = faceC[g] + lift
-        if abs(c2) < best then
+        if faceReach[g] < best then
+          local c2 = faceC[g] + lift
           local x2, y2 = faceX[g], faceY[g]
           local det = x1 * y2 - y1 * x2
           if det ~= 0 then
