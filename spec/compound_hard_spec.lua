@@ -19,6 +19,15 @@ local function check(s1, s2, wrong)
   local overlap, dx, dy = collideV(s1, s2)
   local truth = parts.collide(s1, s2)
   wrong.boolean:check(collide(s1, s2) == truth and (overlap ~= false) == truth, s1, s2)
+  -- a list of one part passed as the flat array itself, the other shape still a list: the same
+  -- answers, number for number (two flat arrays go to the convex engine, another push)
+  for _, pair in ipairs({ { #s1 == 1 and s1[1], s2 }, { s1, #s2 == 1 and s2[1] } }) do
+    if pair[1] and pair[2] then
+      local o, x, y = collideV(pair[1], pair[2])
+      wrong.flat:check(collide(pair[1], pair[2]) == truth and o == overlap and x == dx and y == dy,
+        s1, s2)
+    end
+  end
   if not overlap then return nil end
   local moved = parts.translate(s2, dx, dy)
   wrong.separation:check(not parts.collide(s1, moved) and not collide(s1, moved), s1, s2, dx, dy)
@@ -30,6 +39,7 @@ end
 
 local function newWrong()
   return { boolean = tally.new("boolean unlike the oracle"),
+           flat = tally.new("a one-part list passed flat answers otherwise"),
            separation = tally.new("push leaves a collision"),
            shorter = tally.new("push shorter than the least translation") }
 end
