@@ -3382,9 +3382,10 @@ end
 
 -- The preparation each list of parts gets on first use, kept while the list lives (weak keys):
 -- per part a copy of its coordinates, its bounding box, its area sign and its outward unit edge
--- normals, and which of its edges are internal: internal[k][e] is true when the edge of part k
+-- normals, and which of its edges are internal: internal[k][e] is 1 when the edge of part k
 -- from vertex e to vertex e + 1 (the last to the first) is covered by edges of other parts
--- running the opposite way along the same line (shared with the neighbours, whole or in pieces).
+-- running the opposite way along the same line (shared with the neighbours, whole or in pieces),
+-- else 0 (numbers, not true and nil: on LuaJIT a load whose type varies is a side exit).
 -- Keeping it right. Reading every coordinate on every call costs as much as the pair tests a
 -- call needs, so each call checks, per part, only its table, its length and the four
 -- coordinates on its box (the vertices that gave xmin, ymin, xmax, ymax). That is exact for a
@@ -3447,14 +3448,20 @@ local function partBox(view, k, part, n)
   return finite == 0
 end
 
--- The area sign and the edge normals of part k (finite coordinates) into view.
-local function partNormals(view, k, part, n)
+-- The area sign of part k (finite coordinates) into view, and returned.
+local function partTurn(view, k, part, n)
   local turn = 0.0
   if n >= 6 then
     local sign = areaSign(part, n)
     turn = sign > 0 and 1.0 or sign < 0 and -1.0 or 0.0
   end
   view.turns[k] = turn
+  return turn
+end
+
+-- The area sign and the edge normals of part k (finite coordinates) into view.
+local function partNormals(view, k, part, n)
+  local turn = partTurn(view, k, part, n)
   if turn == 0 then return end   -- never collides: no normal is read
   local normals = view.normals[k]
   local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
@@ -3493,7 +3500,9 @@ local function prepareParts(fname, argname, parts)
     local n = #part
     local copy = {}
     for i = 1, n do copy[i] = part[i] end
-    info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, {}, copy, {}
+    local flags = {}
+    for e = 1, n / 2 do flags[e] = 0 end
+    info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
     info.tables[k], info.checked[k] = part, 0
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
@@ -3543,7 +3552,7 @@ local function prepareParts(fname, argname, parts)
     if #E.covers > 0 then
       local onX = E.ax ~= E.bx
       local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
-      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = true end
+      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = 1 end
     end
   end
   preparedParts[parts] = info
@@ -3571,7 +3580,7 @@ local callStamp = 0   -- counts the calls that push: checked[k] == callStamp whe
 -- non-finite error at `level` (counted from here, 1).
 local function refreshPart(view, k, part, n, level)
   if not partBox(view, k, part, n) then
-    view.lengths[k] = -1   -- the next call prepares the list again, and raises again
+    view.tables[k] = false   -- the next call refreshes the part again, and raises again
     error(("%s: %s holds a non-finite coordinate"):format(view.fname, view.argname), level)
   end
   partNormals(view, k, part, n)
@@ -3602,14 +3611,14 @@ local function listView(fname, argname, shape)
     local changed = false
     for k = 1, info.count do
       local part, n = shape[k], lengths[k]
-      if part ~= tables[k] or n < 0 then   -- another table, or a non-finite coordinate before
+      if part ~= tables[k] then   -- another table, or a non-finite coordinate before (false)
         if type(part) ~= "table" or #part ~= n then
           changed = nil   -- prepare again (or raise the error)
           break
         end
         tables[k], changed = part, true
         refreshPart(info, k, part, n, 5)
-      elseif part[n + 1] ~= nil or n > 0 and part[n] == nil then   -- another length
+      elseif #part ~= n then   -- another length
         changed = nil
         break
       elseif n >= 6 then
@@ -3633,12 +3642,42 @@ local function listView(fname, argname, shape)
 end
 
 -- The two views of flat arrays (one per argument), refilled on every call. `pending`: the area
--- sign and normals are still to compute (only a push on overlapping boxes needs them).
+-- sign and normals are still to compute (only a push on overlapping boxes needs them);
+-- `turnPending`: the area sign is (a boolean on overlapping boxes needs only that). No edge
+-- of a flat array is internal: internal[1] holds 0 for edges 1 .. edgeRoom, grown when a
+-- larger array comes (once, never shrunk).
 local function newFlatView()
-  return { count = 1, lengths = {}, internal = {}, boxes = {}, extremes = {}, turns = {},
-           normals = { {} }, pending = false }
+  return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {}, extremes = {},
+           turns = {}, normals = { {} }, pending = false, turnPending = false }
 end
 local flatView1, flatView2 = newFlatView(), newFlatView()
+
+-- The box of a flat array (n coordinates) into view as part k = 1, as partBox gives it, and
+-- whether every coordinate is finite. On LuaJIT min and max four vertices a round, the last round padded
+-- with the last vertex (as leastProjection, for the same reason: partBox's branches on every
+-- vertex were 9 % of a push's time on the crate and floor of bench/compound.lua by `luajit
+-- -jp=f`), and without the extremes' indices, which only a list's parts keep. PUC Lua: partBox.
+local flatBox = partBox
+if JIT then
+  flatBox = function(view, _, shape, n)
+    local finite = 0.0
+    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    local last = n - 1
+    for i = 1, last, 8 do
+      local i2, i3, i4 = min(i + 2, last), min(i + 4, last), min(i + 6, last)
+      local x1, y1, x2, y2 = shape[i] + 0.0, shape[i + 1] + 0.0, shape[i2] + 0.0, shape[i2 + 1] + 0.0
+      local x3, y3, x4, y4 = shape[i3] + 0.0, shape[i3 + 1] + 0.0, shape[i4] + 0.0, shape[i4 + 1] + 0.0
+      -- stays 0 unless a coordinate is inf or NaN
+      finite = finite + ((x1 * 0 + y1 * 0) + (x2 * 0 + y2 * 0) + (x3 * 0 + y3 * 0) + (x4 * 0 + y4 * 0))
+      xmin, xmax = min(xmin, x1, x2, x3, x4), max(xmax, x1, x2, x3, x4)
+      ymin, ymax = min(ymin, y1, y2, y3, y4), max(ymax, y1, y2, y3, y4)
+    end
+    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+    local boxes = view.boxes
+    boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+    return finite == 0
+  end
+end
 
 -- Fills `view` for the flat array shape. Raises the argument errors at the caller of the public
 -- function (level 4).
@@ -3650,19 +3689,24 @@ local function flatView(fname, argname, shape, view)
   if n % 2 ~= 0 then
     error(("%s: %s must hold an even number of coordinates, got %d"):format(fname, argname, n), 4)
   end
-  if not partBox(view, 1, shape, n) then
+  if not flatBox(view, 1, shape, n) then
     error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
   end
-  view.lengths[1], view.pending = n, true
+  if n / 2 > view.edgeRoom then
+    local flags = view.internal[1]
+    for e = view.edgeRoom + 1, n / 2 do flags[e] = 0 end
+    view.edgeRoom = n / 2
+  end
+  view.lengths[1], view.pending, view.turnPending = n, true, true
   shapeBox(view)
   return view
 end
 
 -- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
-local boxes1, boxes2 = {}, {}      -- the boxes of the two views of the call
-local faceX, faceY, faceC, faceOuter = {}, {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceX, faceY, faceC = {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
+local faceSeam = {}                -- 1 for a face from an internal edge (no foot on it), else 0
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
-local pairGap = {}                 -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
+local pairGaps = {}                -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
 
 -- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
 -- checks of the views did not see (one off the box of a list's part) raises the argument error
@@ -3673,36 +3717,69 @@ local function overlapsConvex(fname, p1, p2)
   return depth ~= false
 end
 
+-- The same number as minProjection: the least projection nx (vx - ax) + ny (vy - ay) over the
+-- vertices of points. On LuaJIT four vertices a round, the last round padded with the last
+-- vertex (a repeat cannot change the least), so that a part of up to four vertices takes no
+-- loop: a loop that never runs twice is compiled into its caller's trace, where minProjection's
+-- loop was a trace of its own, entered and left once per edge (22 % of the push's time on the
+-- crate and floor of bench/compound.lua by `luajit -jp=f`, 7 % as here). PUC Lua: minProjection.
+local leastProjection = minProjection
+if JIT then
+  leastProjection = function(points, n, ax, ay, nx, ny)
+    local lo, last = huge, n - 1
+    for i = 1, last, 8 do
+      local i2, i3, i4 = min(i + 2, last), min(i + 4, last), min(i + 6, last)
+      lo = min(lo, nx * (points[i] - ax) + ny * (points[i + 1] - ay),
+        nx * (points[i2] - ax) + ny * (points[i2 + 1] - ay),
+        nx * (points[i3] - ax) + ny * (points[i3 + 1] - ay),
+        nx * (points[i4] - ax) + ny * (points[i4 + 1] - ay))
+    end
+    return lo
+  end
+end
+
+-- Whether the edge a -> b of a part (turn its area sign, (ux, uy) its outward normal, unit or
+-- not) separates the part from `other`, whose least projection on (ux, uy) from a is lo:
+-- decided exactly, by cross's sign where projectionTolerance cannot vouch.
+local function edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
+  local tol = projectionTolerance(spanX, spanY, ux, uy)
+  return -lo <= tol and (-lo < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no))
+end
+
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
 -- part give (turn its area sign, normals its outward unit normals; sense 1 for a part of the
 -- first shape, -1 for one of the second, whose outward normal points the other way in t), with
 -- `other` the part it is paired with. Coordinates are scaled by k. Returns the last index used
--- and whether some edge separates the two parts, decided exactly (w, h bound the scaled
--- coordinate differences, for projectionTolerance).
+-- and whether some edge separates the two parts, decided exactly (spanX, spanY bound
+-- the scaled coordinate differences, for projectionTolerance).
 local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
+  -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
+  local tolBound = 16 * EPS * (spanX + spanY)
   local e = ne / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for i = 1, ne - 1, 2 do
     local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
       local ux, uy = normals[i], normals[i + 1]
-      local kax, kay = ax * k, ay * k
-      local lo = huge
-      for j = 1, no - 1, 2 do
-        local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
-        if s < lo then lo = s end
-      end
-      if not separated then
-        local tol = projectionTolerance(spanX, spanY, ux, uy)
-        if -lo <= tol and (-lo < -tol
-            or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no)) then
-          separated = true
+      local lo
+      if k == 1 then   -- the same numbers as the scaled loop below
+        lo = leastProjection(other, no, ax, ay, ux, uy)
+      else
+        local kax, kay = ax * k, ay * k
+        lo = huge
+        for j = 1, no - 1, 2 do
+          local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+          if s < lo then lo = s end
         end
+      end
+      -- -lo > tolBound >= projectionTolerance: the edge cannot separate
+      if not separated and -lo <= tolBound then
+        separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
       end
       top = top + 1
       faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
-      faceOuter[top] = not (internal and internal[e])
+      faceSeam[top] = internal[e]
     end
     ax, ay, e = bx, by, (i + 1) / 2
   end
@@ -3724,36 +3801,52 @@ local function pushFree(tx, ty, np, margin)
   return true
 end
 
+local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
+local faceReach = {}   -- scratch for nearestFree: |faceC + lift|, how near each face's line passes
+
 -- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
 local function nearestFree(np, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
-  -- The nearest foot first: it is usually free, and then no farther candidate is tried.
+  -- The nearest foot first: it is usually free, and then no other foot is nearer (the feet
+  -- loop below keeps only nearer ones, so it is skipped).
   local nearest, nearestD = 0, huge
   for f = 1, last do
-    local d = abs(faceC[f] + lift)
-    if faceOuter[f] and d < nearestD then nearest, nearestD = f, d end
+    local d = faceC[f] + lift
+    if JIT then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
+    faceReach[f] = d
+    if faceSeam[f] == 0 and d < nearestD then nearest, nearestD = f, d end
   end
+  local nearestFreed = false
   if nearest > 0 then
     local d = faceC[nearest] + lift
     local tx, ty = faceX[nearest] * d, faceY[nearest] * d
-    if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY, nearestFreed = nearestD, tx, ty, true end
   end
-  for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
-    local d = faceC[f] + lift
-    if faceOuter[f] and abs(d) < best then
-      local tx, ty = faceX[f] * d, faceY[f] * d
-      if pushFree(tx, ty, np, margin) then best, bestX, bestY = abs(d), tx, ty end
+  if not nearestFreed then
+    for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
+      if faceSeam[f] == 0 and faceReach[f] < best then
+        local d = faceC[f] + lift
+        local tx, ty = faceX[f] * d, faceY[f] * d
+        if pushFree(tx, ty, np, margin) then best, bestX, bestY = faceReach[f], tx, ty end
+      end
     end
   end
-  for f = 1, last - 1 do   -- crossings of two lines, each nearer than the best so far
-    local c1 = faceC[f] + lift
-    if abs(c1) < best then
-      local x1, y1 = faceX[f], faceY[f]
-      for g = f + 1, last do
-        local c2 = faceC[g] + lift
-        if abs(c2) < best then
+  -- Crossings of two lines, each nearer than the best so far (a crossing is no nearer than
+  -- either line): only the lines nearer than the best now can take part, usually a few of them.
+  local count = 0
+  for f = 1, last do
+    if faceReach[f] < best then count = count + 1; nearLines[count] = f end
+  end
+  for a = 1, count - 1 do
+    local f = nearLines[a]
+    if faceReach[f] < best then
+      local c1, x1, y1 = faceC[f] + lift, faceX[f], faceY[f]
+      for b = a + 1, count do
+        local g = nearLines[b]
+        if faceReach[g] < best then
+          local c2 = faceC[g] + lift
           local x2, y2 = faceX[g], faceY[g]
           local det = x1 * y2 - y1 * x2
           if det ~= 0 then
@@ -3768,21 +3861,71 @@ local function nearestFree(np, margin)
   return best, bestX, bestY
 end
 
+-- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for a pair test:
+-- a list's part compared with its whole copy (the non-finite error raised at the public
+-- function's caller, level 7 from checkCopy), a flat view's area sign computed and, for a push
+-- (k given), its normals. Returns their area signs and spanX, spanY (scaled by k, or 1 for a
+-- boolean) bounding their coordinate differences.
+local function preparePair(view1, p1, i, view2, p2, j, k)
+  if view1.copies then
+    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 7) end
+  elseif k then
+    if view1.pending then partNormals(view1, 1, p1, #p1); view1.pending = false end
+  elseif view1.turnPending then
+    partTurn(view1, 1, p1, #p1); view1.turnPending = false
+  end
+  if view2.copies then
+    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 7) end
+  elseif k then
+    if view2.pending then partNormals(view2, 1, p2, #p2); view2.pending = false end
+  elseif view2.turnPending then
+    partTurn(view2, 1, p2, #p2); view2.turnPending = false
+  end
+  k = k or 1.0
+  local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
+  local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
+  local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
+  return view1.turns[i], view2.turns[j], spanX, spanY
+end
+
+-- Whether some edge of the part `edges` (turn its area sign) separates it from the part
+-- `other`, decided exactly: the SAT engine's test (reachPast's), on each edge's outward normal
+-- as the coordinates' differences give it (unscaled coordinates: the boolean's pairs).
+local function edgesSeparate(edges, ne, turn, other, no, spanX, spanY)
+  -- at least projectionTolerance of every edge's normal, whose |nx| <= spanY, |ny| <= spanX
+  -- (rounding is monotonic): an edge whose -lo exceeds it cannot separate
+  local tolBound = 16 * EPS * (2 * (spanX * spanY))
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  for i = 1, ne - 1, 2 do
+    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+      local nx, ny = (by - ay) * turn, (ax - bx) * turn
+      local lo = leastProjection(other, no, ax, ay, nx, ny)
+      if -lo <= tolBound and edgeSeparates(lo, ax, ay, bx, by, turn, nx, ny, other, no, spanX, spanY) then
+        return true
+      end
+    end
+    ax, ay = bx, by
+  end
+  return false
+end
+
+-- Whether part p1 (number i of view1) and p2 (number j of view2) overlap, exactly: the boolean
+-- addPair returns, without building faces.
+local function pairOverlaps(view1, p1, i, view2, p2, j)
+  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, false)
+  if turn1 == 0 or turn2 == 0 then return false end   -- zero area: never collides
+  local n1, n2 = view1.lengths[i], view2.lengths[j]
+  return not (edgesSeparate(p1, n1, turn1, p2, n2, spanX, spanY)
+    or edgesSeparate(p2, n2, turn2, p1, n1, spanX, spanY))
+end
+
 -- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair
 -- np + 1. Returns np, top and whether the parts overlap, decided exactly.
 local function addPair(view1, p1, i, view2, p2, j, k, np, top)
-  if view1.pending then partNormals(view1, 1, p1, #p1); view1.pending = false end
-  if view2.pending then partNormals(view2, 1, p2, #p2); view2.pending = false end
-  -- a list's part: its whole copy compared (the non-finite error raised at the public
-  -- function's caller, level 6 from checkCopy)
-  if view1.copies and view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 6) end
-  if view2.copies and view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 6) end
-  local turn1, turn2 = view1.turns[i], view2.turns[j]
+  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, k)
   if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
   local n1, n2 = view1.lengths[i], view2.lengths[j]
-  local a, b = 4 * i, 4 * j
-  local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
-  local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
   faceFirst[np + 1] = top + 1
   local apart1, apart2
   top, apart1 = addFaces(p1, n1, turn1, view1.normals[i], p2, n2, view1.internal[i], 1.0, k, spanX, spanY,
@@ -3803,21 +3946,29 @@ function collideParts(fname, shape1, shape2, wantPush)
   local view2 = parts2 and listView(fname, "points2", shape2)
     or flatView(fname, "points2", shape2, flatView2)
   local count1, count2 = view1.count, view2.count
-  boxes1, boxes2 = view1.boxes, view2.boxes
+  local boxes1, boxes2 = view1.boxes, view2.boxes
+  local magnitude = max(view1.magnitude, view2.magnitude)
+  callStamp = callStamp + 1
   if not wantPush then
+    -- Each pair as addPair decides it, from the prepared normals (no faces); beyond the exact
+    -- range, where the push scales (below), by the SAT engine, which rescales itself.
+    local scaled = magnitude > EXACT_TOP or magnitude < 2^-400
     local i, j = 1, 0
     for _ = 1, count1 * count2 do   -- one loop over the pairs: see below
       if j == count2 then i, j = i + 1, 1 else j = j + 1 end
       local a, b = 4 * i, 4 * j
       if boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
-          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a]
-          and overlapsConvex(fname, parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2) then
-        return true
+          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a] then
+        local p1, p2 = parts1 and shape1[i] or shape1, parts2 and shape2[j] or shape2
+        if scaled then
+          if overlapsConvex(fname, p1, p2) then return true end
+        elseif pairOverlaps(view1, p1, i, view2, p2, j) then
+          return true
+        end
       end
     end
     return false
   end
-  local magnitude = max(view1.magnitude, view2.magnitude)
   -- beyond the exact range, or so small that products would underflow, the faces are built on
   -- coordinates scaled by a power of two k into [2^100, 2^164]: there every product of two
   -- stays far from overflow (2^328) and underflow, and scaling back is exact
@@ -3826,32 +3977,37 @@ function collideParts(fname, shape1, shape2, wantPush)
   local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
     + (max(view1.bottom, view2.bottom) - min(view1.top, view2.top))) * k
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- delta above: 64 eps E + 2 eps S
-  callStamp = callStamp + 1
   -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
-  -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box,
-  -- or once the pair is in), and `nearest` is the least of those.
+  -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box:
+  -- the empty box's huge minus any coordinate is huge; or once the pair is in), and `nearest`
+  -- is the least of those.
   -- One loop over the pairs, not two nested (on LuaJIT an inner loop of one part, as for a flat
   -- second shape, costs a trace exit for every part of the first).
   local np, top, hit, nearest = 0, 0, false, huge
+  local pairGap = pairGaps   -- a local: PUC Lua reads an upvalue by an extra instruction
   local i, j = 1, 0
   for pair = 1, count1 * count2 do
     if j == count2 then i, j = i + 1, 1 else j = j + 1 end
     local a, b = 4 * i, 4 * j
     -- a - b < 0 exactly when a < b: no NaN, as an empty box is (huge, huge, -huge, -huge)
-    local gapX = max(boxes1[a - 3] - boxes2[b - 1], boxes2[b - 3] - boxes1[a - 1])
-    local gapY = max(boxes1[a - 2] - boxes2[b], boxes2[b - 2] - boxes1[a])
+    local gapX, gapY = boxes1[a - 3] - boxes2[b - 1], boxes1[a - 2] - boxes2[b]
+    local gapX2, gapY2 = boxes2[b - 3] - boxes1[a - 1], boxes2[b - 2] - boxes1[a]
+    if JIT then   -- no side exits (see minProjection)
+      gapX, gapY = max(gapX, gapX2), max(gapY, gapY2)
+    else          -- no calls
+      if gapX2 > gapX then gapX = gapX2 end
+      if gapY2 > gapY then gapY = gapY2 end
+    end
     if gapX < 0 and gapY < 0 then
       pairGap[pair] = huge
       local overlaps
       np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
         parts2 and shape2[j] or shape2, j, k, np, top)
       if overlaps then hit = true end
-    elseif boxes1[a - 3] <= boxes1[a - 1] and boxes2[b - 3] <= boxes2[b - 1] then
-      local gap = max(gapX * k, gapY * k, 0.0)
+    else   -- >= 0, as not both are < 0; huge (inf) when a box is empty
+      local gap = (JIT and max(gapX, gapY) or gapX > gapY and gapX or gapY) * k
       pairGap[pair] = gap
       if gap < nearest then nearest = gap end
-    else
-      pairGap[pair] = huge
     end
   end
   if not hit then return false end
@@ -3918,7 +4074,7 @@ local function addCircleFaces(part, n, normals, internal, cx, cy, k, top)
       faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
       faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
       faceQ[top] = sqrt(qax * qax + qay * qay)
-      faceOuter[top] = not (internal and internal[e])
+      faceSeam[top] = internal[e]
     end
     ax, ay, e = bx, by, (i + 1) / 2
   end
@@ -3968,7 +4124,7 @@ local function nearestFreeCircle(np, r, margin)
   local reach, need = r + 1.25 * margin, r + margin   -- lines and arcs moved out by lift
   for f = 1, last do   -- feet on the outer edges' moved lines
     local d = faceC[f] + reach
-    if faceOuter[f] and abs(d) < best then
+    if faceSeam[f] == 0 and abs(d) < best then
       best, bestX, bestY = tryCircle(faceX[f] * d, faceY[f] * d, np, need, best, bestX, bestY)
     end
   end
@@ -4035,7 +4191,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
   local view = listView(fname, "points", shape)
   local count, turns, normals, internal = view.count, view.turns, view.normals, view.internal
   local left, top, right, bottom = view.left, view.top, view.right, view.bottom
-  boxes1 = view.boxes
+  local boxes = view.boxes
   cx, cy, r = cx + 0.0, cy + 0.0, r + 0.0
   if r == 0 then return false end
   local magnitude = max(view.magnitude, abs(cx) + r, abs(cy) + r)
@@ -4046,8 +4202,8 @@ function collideCircleParts(fname, shape, cx, cy, r)
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- as for polygons: 64 eps E + 2 eps S
   local np, last, hit = 0, 0, false
   for i = 1, count do
-    if boxes1[4 * i - 3] < cx + r and cx - r < boxes1[4 * i - 1]
-        and boxes1[4 * i - 2] < cy + r and cy - r < boxes1[4 * i] then
+    if boxes[4 * i - 3] < cx + r and cx - r < boxes[4 * i - 1]
+        and boxes[4 * i - 2] < cy + r and cy - r < boxes[4 * i] then
       local part = shape[i]
       local n = #part
       if view.checked[i] ~= callStamp then checkCopy(view, i, part, 5) end
@@ -4070,12 +4226,12 @@ function collideCircleParts(fname, shape, cx, cy, r)
     local before = np
     for i = 1, count do
       local a = 4 * i
-      if boxes1[a - 3] <= boxes1[a - 1] and circleAdded[i] ~= callStamp
-          and not (boxes1[a - 3] < cx + r and cx - r < boxes1[a - 1]
-                   and boxes1[a - 2] < cy + r and cy - r < boxes1[a]) then
+      if boxes[a - 3] <= boxes[a - 1] and circleAdded[i] ~= callStamp
+          and not (boxes[a - 3] < cx + r and cx - r < boxes[a - 1]
+                   and boxes[a - 2] < cy + r and cy - r < boxes[a]) then
         -- how far t lies beyond the box of D, along x and along y (< 0 inside)
-        local outX = max((boxes1[a - 3] - cx - r) * k - tx, tx - (boxes1[a - 1] - cx + r) * k)
-        local outY = max((boxes1[a - 2] - cy - r) * k - ty, ty - (boxes1[a] - cy + r) * k)
+        local outX = max((boxes[a - 3] - cx - r) * k - tx, tx - (boxes[a - 1] - cx + r) * k)
+        local outY = max((boxes[a - 2] - cy - r) * k - ty, ty - (boxes[a] - cy + r) * k)
         if best == huge or max(outX, outY) < near then
           circleAdded[i] = callStamp
           if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 5) end

@@ -1,7 +1,12 @@
--- Compound shapes (lists of convex parts) measured two ways, from the repository root:
+-- Compound shapes (lists of convex parts) measured three ways, from the repository root:
 --   luajit bench/compound.lua timing 100000    time per call against the convex pair calls needed
 --   lua5.4 bench/compound.lua excess 11 1000   how much longer the push is than the true least
 --                                              translation (seed, number of scenes)
+--   lua5.4 bench/compound.lua only pushFloor 3000
+--                                              one timing row alone (its key, calls), for an
+--                                              instruction count that load cannot disturb:
+--                                              valgrind --tool=callgrind at 1000 and 3000 calls,
+--                                              the difference over 2000 is the cost per call
 -- The excess mode compares with spec/support/union.lua, which shares no code with polygon.lua.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local polygon = require "polygon"
@@ -12,23 +17,14 @@ local V, B = polygon.polygonsCollideV, polygon.polygonsCollide
 -- Timing: a crate 8 x 8 sunk 3 into a floor of 20 parts, at 100 positions along it, against the
 -- convex calls on exactly the parts whose boxes overlap the crate (the least a compound call
 -- could cost) and against a naive loop that computes each part's box first, as a game would.
-local function timing(count)
-  local clock = os.clock
+-- The rows in order: key, name, body (call number -> a number for the checksum).
+local function timingRows()
   local floor = parts.floor(20, 10, 100, 0)
   local crates = {}
   for k = 0, 99 do crates[#crates + 1] = parts.box(k * 1.91, 95, 8, 8) end
   local corner = { parts.box(0, 0, 10, 100), parts.box(10, 90, 100, 10) }
   local cornerCrates = {}
   for k = 0, 99 do cornerCrates[#cornerCrates + 1] = parts.box(5 + k * 0.03, 85, 8, 8) end
-
-  local function time(name, body)
-    body(1)
-    local t0 = clock()
-    local checksum = 0
-    for i = 1, count do checksum = checksum + (body(i) or 0) end
-    local seconds = clock() - t0
-    print(("%-44s %8.2f us/call  (checksum %.6g)"):format(name, seconds / count * 1e6, checksum))
-  end
 
   local needed = {}   -- for each crate, the floor parts whose boxes overlap its box
   for k, c in ipairs(crates) do
@@ -39,15 +35,16 @@ local function timing(count)
     needed[k] = list
   end
 
-  for round = 1, 2 do
-    print("round", round)
-    time("compound V: crate vs 20-part floor", function(i) return (V(floor, crates[i % 100 + 1])) end)
-    time("sum of convex V pair calls it needs", function(i)
+  return {
+    { "pushFloor", "compound V: crate vs 20-part floor", function(i)
+      return (V(floor, crates[i % 100 + 1]))
+    end },
+    { "pushPairs", "sum of convex V pair calls it needs", function(i)
       local c, sum = crates[i % 100 + 1], 0
       for _, p in ipairs(needed[i % 100 + 1]) do sum = sum + (V(p, c) or 0) end
       return sum
-    end)
-    time("naive loop: per part box, then V pair call", function(i)
+    end },
+    { "pushNaive", "naive loop: per part box, then V pair call", function(i)
       local c, sum = crates[i % 100 + 1], 0
       local cx0, cy0, cx1, cy1 = c[1], c[2], c[5], c[6]
       for _, p in ipairs(floor) do
@@ -62,26 +59,59 @@ local function timing(count)
         if x0 < cx1 and cx0 < x1 and y0 < cy1 and cy0 < y1 then sum = sum + (V(p, c) or 0) end
       end
       return sum
-    end)
-    time("compound boolean: crate vs 20-part floor", function(i)
+    end },
+    { "booleanFloor", "compound boolean: crate vs 20-part floor", function(i)
       return B(floor, crates[i % 100 + 1]) and 1 or 0
-    end)
-    time("sum of convex boolean pair calls", function(i)
+    end },
+    { "booleanPairs", "sum of convex boolean pair calls", function(i)
       local c, sum = crates[i % 100 + 1], 0
       for _, p in ipairs(needed[i % 100 + 1]) do sum = sum + (B(p, c) and 1 or 0) end
       return sum
-    end)
-    time("compound V: crate in a concave corner", function(i)
+    end },
+    { "pushCorner", "compound V: crate in a concave corner", function(i)
       return (V(corner, cornerCrates[i % 100 + 1]))
-    end)
-    time("compound circle V: circle vs 20-part floor", function(i)
+    end },
+    { "circleFloor", "compound circle V: circle vs 20-part floor", function(i)
       return (polygon.polygonCircleCollideV(floor, 5 + (i % 100) * 1.9, 97, 5))
-    end)
-    time("convex circle V: circle vs one part", function(i)
+    end },
+    { "circlePart", "convex circle V: circle vs one part", function(i)
       local x = 5 + (i % 100) * 1.9
       return (polygon.polygonCircleCollideV(floor[math.floor(x / 10) + 1], x, 97, 5))
-    end)
+    end },
+  }
+end
+
+local function runRow(body, count)
+  local checksum = 0
+  for i = 1, count do checksum = checksum + (body(i) or 0) end
+  return checksum
+end
+
+local function timing(count)
+  local rows = timingRows()
+  for round = 1, 2 do
+    print("round", round)
+    for _, row in ipairs(rows) do
+      local body = row[3]
+      body(1)
+      local t0 = os.clock()
+      local checksum = runRow(body, count)
+      local seconds = os.clock() - t0
+      print(("%-44s %8.2f us/call  (checksum %.6g)"):format(row[2], seconds / count * 1e6, checksum))
+    end
   end
+end
+
+-- One row alone, `count` calls, its checksum printed.
+local function only(key, count)
+  for _, row in ipairs(timingRows()) do
+    if row[1] == key then
+      print(key, count, ("checksum %.6g"):format(runRow(row[3], count)))
+      return
+    end
+  end
+  io.stderr:write("no row " .. tostring(key) .. "\n")
+  os.exit(2)
 end
 
 -- Excess: random clusters of 1-5 convex parts against 1-2, terrains of 12 columns with a crate,
@@ -137,7 +167,10 @@ if mode == "timing" then
   timing(tonumber(arg[2]) or 20000)
 elseif mode == "excess" then
   excess(tonumber(arg[2]) or 11, tonumber(arg[3]) or 300)
+elseif mode == "only" then
+  only(arg[2], tonumber(arg[3]) or 1000)
 else
-  io.stderr:write("usage: lua bench/compound.lua timing [calls] | excess [seed] [scenes]\n")
+  io.stderr:write("usage: lua bench/compound.lua timing [calls] | excess [seed] [scenes]"
+    .. " | only key [calls]\n")
   os.exit(2)
 end

@@ -19,6 +19,15 @@ local function check(s1, s2, wrong)
   local overlap, dx, dy = collideV(s1, s2)
   local truth = parts.collide(s1, s2)
   wrong.boolean:check(collide(s1, s2) == truth and (overlap ~= false) == truth, s1, s2)
+  -- a list of one part passed as the flat array itself, the other shape still a list: the same
+  -- answers, number for number (two flat arrays go to the convex engine, another push)
+  for _, pair in ipairs({ { #s1 == 1 and s1[1], s2 }, { s1, #s2 == 1 and s2[1] } }) do
+    if pair[1] and pair[2] then
+      local o, x, y = collideV(pair[1], pair[2])
+      wrong.flat:check(collide(pair[1], pair[2]) == truth and o == overlap and x == dx and y == dy,
+        s1, s2)
+    end
+  end
   if not overlap then return nil end
   local moved = parts.translate(s2, dx, dy)
   wrong.separation:check(not parts.collide(s1, moved) and not collide(s1, moved), s1, s2, dx, dy)
@@ -30,6 +39,7 @@ end
 
 local function newWrong()
   return { boolean = tally.new("boolean unlike the oracle"),
+           flat = tally.new("a one-part list passed flat answers otherwise"),
            separation = tally.new("push leaves a collision"),
            shorter = tally.new("push shorter than the least translation") }
 end
@@ -168,6 +178,42 @@ describe("compound shapes far from the origin", function()
       local nudged = parts.translate({ parts.box(35, 92, 8, 8) }, off, off + nudge)
       assert.is_true(collide(f, nudged))
     end
+  end)
+end)
+
+describe("the boolean at contact", function()
+  -- A flat crate (and its mirror, a flat floor part against a list crate) resting exactly on a
+  -- random terrain's sloped tops, then moved by about an ulp down, up and sideways: the answers
+  -- are the exact oracle's at every offset, in both argument orders. The terrain's tops are
+  -- lines through integer points, so a corner placed on one is exactly on it.
+  it("agrees with the oracle on resting and nudged crates, flat or listed, at every offset", function()
+    local g = prng.new(23)
+    local wrong = tally.new("boolean unlike the oracle")
+    for _ = 1, 150 do
+      local terrain = scenes.terrain(g, 8)
+      local column = terrain[g:int(1, #terrain)]
+      -- a vertex of the column's top edge, and the crate resting on it or hanging off its end
+      local onRight = g:int(0, 1) == 1
+      local x, y = column[onRight and 3 or 1], column[onRight and 4 or 2]
+      local w, h = g:int(1, 12), g:int(1, 12)
+      local left = x - w * g:int(0, 1)   -- its bottom left or bottom right corner there
+      for _, off in ipairs(OFFSETS) do
+        local nudge = math.max(2 ^ -40, off * 2 ^ -50)
+        for _, move in ipairs({ { 0, 0 }, { 0, nudge }, { 0, -nudge }, { nudge, 0 }, { -nudge, nudge } }) do
+          local crate = parts.box(left + off + move[1], y - h + off + move[2], w, h)
+          local t = parts.translate(terrain, off, off)
+          local truth = parts.collide(t, { crate })
+          wrong:check(collide(t, crate) == truth and collide(crate, t) == truth
+            and collide(t, { crate }) == truth, tally.show(t), tally.show(crate))
+          local flatColumn = parts.translate({ column }, off, off)[1]
+          local truthColumn = parts.collide({ flatColumn }, { crate })
+          wrong:check(collide(flatColumn, { crate }) == truthColumn
+            and collide({ crate }, flatColumn) == truthColumn, tally.show(flatColumn), tally.show(crate))
+        end
+      end
+    end
+    assert.are.equal(0, wrong.count, table.concat(wrong.examples, "\n"))
+    assert.is_true(wrong.total >= 6000)
   end)
 end)
 
