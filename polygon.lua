@@ -2158,8 +2158,8 @@ local function crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
   return crossed, crossedLow, lengthSq, lengthSqLow, abs(p) + abs(q)
 end
 
--- Whether the circle (cx, cy, r) certainly stays beyond the line of the edge a -> b (as
--- clearOfEdge), by float arithmetic alone: false also when rounding cannot tell. It compares
+-- A margin > 0 when the circle (cx, cy, r) certainly stays beyond the line of the edge a -> b
+-- (as clearOfEdge), by float arithmetic alone: <= 0 also when rounding cannot tell. It compares
 -- outside^2 with r^2 |b - a|^2, outside = (b - a) x (a - c) turned outwards, every product kept
 -- as hi + low: the difference is off by less than 32 eps^2 (outside^2 + r^2 |b - a|^2 + t^2)
 -- (the high parts' difference is exact by Sterbenz's lemma when they are within a factor 2,
@@ -2180,11 +2180,11 @@ local function beyondEdgeFiltered(ax, ay, bx, by, sign, cx, cy, r)
   local clearance = (outsideSq - reachSq) + (outsideSqLow - reachSqLow)
     - 32 * EPS * EPS * (outsideSq + reachSq + t * t)
   local bound = 32 * EPS * EPS * (outsideSq + reachSq)
-  return min(outside, clearance, bound - FILTER_LO, FILTER_HI - bound) > 0
+  return min(outside, clearance, bound - FILTER_LO, FILTER_HI - bound)
 end
 
--- Whether the circle (cx, cy, r) certainly lies in the corner region of the vertex b between
--- its neighbours a and q, at distance r or more from b, by float arithmetic alone. Each dot
+-- A margin > 0 when the circle (cx, cy, r) certainly lies in the corner region of the vertex b
+-- between its neighbours a and q, at distance r or more from b, by float arithmetic alone. Each dot
 -- product (m - b).(a - b) is within 3 eps of the sum of its terms' magnitudes; |m - b|^2 - r^2
 -- is summed from exact squares of the split differences, off by less than 16 eps^2 of
 -- |m - b|^2 + r^2 (as in beyondEdgeFiltered, room of order eps^2).
@@ -2201,7 +2201,18 @@ local function cornerClearFiltered(ax, ay, bx, by, qx, qy, cx, cy, r)
     + ((distSqLow + (xxLow + yyLow) + 2 * (wx * wxLow + wy * wyLow)) - radiusSqLow)
   local bound = 16 * EPS * EPS * (distSq + radiusSq)
   return min(-(s1 + s2) - 4 * EPS * (abs(s1) + abs(s2)), -(t1 + t2) - 4 * EPS * (abs(t1) + abs(t2)),
-    gap - bound, bound - FILTER_LO, FILTER_HI - bound) > 0
+    gap - bound, bound - FILTER_LO, FILTER_HI - bound)
+end
+
+-- The exact test behind tryPush's filters, for the moved centre (mx, my).
+local function pushClears(points, a, b, q, sign, mx, my, r)
+  local ax, ay, bx, by = points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0, points[b + 1] + 0.0
+  if q == 0 then return clearOfEdge(ax, ay, bx, by, sign, mx, my, r) end
+  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
+  -- in the corner region of b, where the distance to the polygon is |m - b|, or beyond an edge
+  return dot(bx, by, mx, my, ax, ay) <= 0 and dot(bx, by, mx, my, qx, qy) <= 0
+      and reachesExact(bx, by, mx, my, r, 0.0) <= 0
+    or clearOfEdge(ax, ay, bx, by, sign, mx, my, r) or clearOfEdge(bx, by, qx, qy, sign, mx, my, r)
 end
 
 -- One try of circlePush: the push of length depth + lengthLow along (ux, uy), and whether the
@@ -2217,23 +2228,31 @@ local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLo
     hi, low = twoProduct(uy, depth)
     py = hi + (low + uy * lengthLow) + 0.0
   end
-  local mx, my = cx + px, cy + py
-  local ax, ay, bx, by = points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0, points[b + 1] + 0.0
-  if q == 0 then
-    return px, py, beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r)
-      or late and clearOfEdge(ax, ay, bx, by, sign, mx, my, r)
+  -- the filters' margin: > 0 when one of them vouches. Only the indices are kept across the
+  -- branch on it (on LuaJIT a side trace there took over every number alive: with the
+  -- coordinates it failed to compile, "NYI: register coalescing too complex", for lists of parts)
+  local margin
+  do
+    local mx, my = cx + px, cy + py
+    local ax, ay, bx, by = points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0, points[b + 1] + 0.0
+    if q == 0 then
+      margin = beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r)
+    else
+      local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
+      margin = cornerClearFiltered(ax, ay, bx, by, qx, qy, mx, my, r)
+      if JIT then   -- all three, no branch
+        margin = max(margin, beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r),
+          beyondEdgeFiltered(bx, by, qx, qy, sign, mx, my, r))
+      elseif margin <= 0 then   -- the next only when needed (each is a call on PUC Lua)
+        margin = beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r)
+        if margin <= 0 then margin = beyondEdgeFiltered(bx, by, qx, qy, sign, mx, my, r) end
+      end
+    end
   end
-  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
-  if cornerClearFiltered(ax, ay, bx, by, qx, qy, mx, my, r)
-      or beyondEdgeFiltered(ax, ay, bx, by, sign, mx, my, r)
-      or beyondEdgeFiltered(bx, by, qx, qy, sign, mx, my, r) then
-    return px, py, true
-  end
+  if margin > 0 then return px, py, true end
   if not late then return px, py, false end
-  -- in the corner region of b, where the distance to the polygon is |m - b|, or beyond an edge
-  return px, py, dot(bx, by, mx, my, ax, ay) <= 0 and dot(bx, by, mx, my, qx, qy) <= 0
-      and reachesExact(bx, by, mx, my, r, 0.0) <= 0
-    or clearOfEdge(ax, ay, bx, by, sign, mx, my, r) or clearOfEdge(bx, by, qx, qy, sign, mx, my, r)
+  local cleared = pushClears(points, a, b, q, sign, cx + px, cy + py, r)
+  return px, py, cleared
 end
 
 -- The push out of the polygon along (ux, uy), a unit vector to rounding, depth + lengthLow (to
