@@ -2663,6 +2663,8 @@ local SHARED_RUN = 8    -- nodes of one cell compared pair by pair, at most (the
 local FINE = 2 ^ -30    -- cells wider than this times the largest coordinate are visited by
                         -- the triangle's span (rounding stays far below a cell); narrower
                         -- ones, by its box (an outline tiny against its offset)
+local SPAN_MARGIN = 2 ^ -10   -- a span's widening, in cells: with FINE, at least 2^-40 of the
+                        -- largest coordinate, thousands of times its few ulps of rounding
 local gridLeft, gridTop, gridScale, gridCols, gridRows, cellSize, gridFine
 
 -- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so a
@@ -2769,21 +2771,26 @@ end
 -- ring runs; the box x0..x1, y0..y1; for the spans, the top corner t, the middle one m, and
 -- the slopes dx/dy of the long side t -> bottom and of the short sides t -> m and m -> bottom.
 local earA, earB, earC, boxX0, boxY0, boxX1, boxY1, boxCol0, boxCol1
+local spanX0, spanX1    -- the triangle's widened span in x over the row being visited
 local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
 
--- The columns of the cells the triangle may meet in a row: its span in x over the row widened
--- by a quarter row up and down, then by a cell left and right, against rounding. Each side is
--- straight, so its x over [lo, hi] is extreme at the ends; a short side's ends are clamped to
--- its own rows (m may come in when outside [lo, hi]: a wider span, never a narrower one).
+-- The columns of the cells the triangle may meet in a row: its span in x over the row's band
+-- of y, band and span widened by SPAN_MARGIN cells against rounding (the last row's band runs
+-- to the box's bottom: rowOf puts every node beyond the grid there). Each side is straight, so
+-- its x over [lo, hi] is extreme at the ends; a short side's ends are clamped to its own rows
+-- (m may come in when outside [lo, hi]: a wider span, never a narrower one). A cell's width
+-- of widening on each side cost a thin spike's ear three cells a row instead of one or two.
 local function rowSpan(row)
-  if not gridFine then return boxCol0, boxCol1 end
-  local lo = max(boxY0, gridTop + (row - 0.25) * cellSize)
-  local hi = min(boxY1, gridTop + (row + 1.25) * cellSize)
+  if not gridFine then spanX0, spanX1 = boxX0, boxX1; return boxCol0, boxCol1 end
+  local margin = SPAN_MARGIN * cellSize
+  local lo = max(boxY0, gridTop + row * cellSize - margin)
+  local hi = row < gridRows - 1 and min(boxY1, gridTop + (row + 1) * cellSize + margin) or boxY1
   local x1, x2 = topX + (lo - topY) * longSlope, topX + (hi - topY) * longSlope
   local x3, x4 = topX + (min(lo, midY) - topY) * upperSlope, topX + (min(hi, midY) - topY) * upperSlope
   local x5, x6 = midX + (max(lo, midY) - midY) * lowerSlope, midX + (max(hi, midY) - midY) * lowerSlope
-  return max(boxCol0, colOf(min(x1, x2, x3, x4, x5, x6)) - 1),
-    min(boxCol1, colOf(max(x1, x2, x3, x4, x5, x6)) + 1)
+  spanX0 = max(boxX0, min(x1, x2, x3, x4, x5, x6) - margin)
+  spanX1 = min(boxX1, max(x1, x2, x3, x4, x5, x6) + margin)
+  return colOf(spanX0), colOf(spanX1)
 end
 
 -- Whether a listed node in cells first..last blocks the triangle.
@@ -2792,7 +2799,7 @@ local function cellsBlock(first, last)
     local k = cellHead[cell]
     while k do
       local x, y, after = nodeX[k], nodeY[k], nextInCell[k]
-      if k ~= earA and k ~= earC and keepListed(k) and x >= boxX0 and x <= boxX1
+      if k ~= earA and k ~= earC and keepListed(k) and x >= spanX0 and x <= spanX1
         and y >= boxY0 and y <= boxY1 and blocks(k, earA, earB, earC) then
         return true
       end
