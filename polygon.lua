@@ -2666,6 +2666,7 @@ local FINE = 2 ^ -30    -- cells wider than this times the largest coordinate ar
 local SPAN_MARGIN = 2 ^ -10   -- a span's widening, in cells: with FINE, at least 2^-40 of the
                         -- largest coordinate, thousands of times its few ulps of rounding
 local gridLeft, gridTop, gridScale, gridCols, gridRows, cellSize, gridFine
+local spanMargin        -- SPAN_MARGIN cells
 
 -- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so a
 -- box's corners bound the cells of every point inside it.
@@ -2694,6 +2695,7 @@ local function buildGrid(s)
   gridCols = min(floor((x1 - x0) * gridScale) + 1, count)
   gridRows = min(floor((y1 - y0) * gridScale) + 1, count)
   gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
+  spanMargin = SPAN_MARGIN * cellSize
   cellOf, cellHead, nextInCell, prevInCell = {}, {}, {}, {}
   listed, shared, reflexSeen, listStale = {}, {}, {}, false
   k = s
@@ -2782,7 +2784,7 @@ local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
 -- of widening on each side cost a thin spike's ear three cells a row instead of one or two.
 local function rowSpan(row)
   if not gridFine then spanX0, spanX1 = boxX0, boxX1; return boxCol0, boxCol1 end
-  local margin = SPAN_MARGIN * cellSize
+  local margin = spanMargin
   local lo = max(boxY0, gridTop + row * cellSize - margin)
   local hi = row < gridRows - 1 and min(boxY1, gridTop + (row + 1) * cellSize + margin) or boxY1
   local x1, x2 = topX + (lo - topY) * longSlope, topX + (hi - topY) * longSlope
@@ -2793,6 +2795,16 @@ local function rowSpan(row)
   return colOf(spanX0), colOf(spanX1)
 end
 
+-- Whether (x, y), in the triangle's box, lies near the triangle: within its span in x at
+-- height y, widened by SPAN_MARGIN cells (as rowSpan, far beyond rounding). A long thin ear
+-- meets about one candidate a row that only the exact test would turn down otherwise.
+local function nearTriangle(x, y)
+  if not gridFine then return true end
+  local xLong = topX + (y - topY) * longSlope
+  local xShort = y < midY and topX + (y - topY) * upperSlope or midX + (y - midY) * lowerSlope
+  return x >= min(xLong, xShort) - spanMargin and x <= max(xLong, xShort) + spanMargin
+end
+
 -- Whether a listed node in cells first..last blocks the triangle.
 local function cellsBlock(first, last)
   for cell = first, last do
@@ -2800,7 +2812,7 @@ local function cellsBlock(first, last)
     while k do
       local x, y, after = nodeX[k], nodeY[k], nextInCell[k]
       if k ~= earA and k ~= earC and keepListed(k) and x >= spanX0 and x <= spanX1
-        and y >= boxY0 and y <= boxY1 and blocks(k, earA, earB, earC) then
+        and y >= boxY0 and y <= boxY1 and nearTriangle(x, y) and blocks(k, earA, earB, earC) then
         return true
       end
       k = after
