@@ -2410,19 +2410,12 @@ end
 -- crossing shows up between two edges next to each other in that order before the line reaches
 -- it, so each edge is tested only against its neighbours when it comes in and when it leaves.
 -- Edge k runs from node k to nextNode[k]; sweepLeft[k] and sweepRight[k] are its ends in (x, y)
--- order. The vertices are sorted by place in expected linear time (buckets by x, see
--- sortPlaces), and the order along the line is a skip list: an edge found once is unlinked
--- or replaced where it stands, so only an edge coming in where no edge leaves (a vertex whose
--- two edges both run right) is searched for, in O(log m) for m edges on the line. (A sorted
--- array cost a search and a shift of m / 2 entries per event: on the 10,000-vertex noisy
--- circle, m is 677 on average.)
+-- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
+-- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces).
 local sweepCrossing
 do   -- the sweep's helpers are local to it (the file is near Lua's 200 locals per function)
 local sweepLeft, sweepRight
 local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
-local above, below, tower   -- the skip list: above[l][k], below[l][k] are edge k's neighbours
-                            -- at level l (0 stands before the first edge), tower[k] its height
-local SKIP_LEVELS = 16      -- levels at most: a level holds about a quarter of the one below
 
 -- > 0 when edge s lies above edge t where the line meets both (in y-up terms), < 0 below, 0 for
 -- edges in line: the later left end tested against the other edge, then its right end.
@@ -2499,85 +2492,8 @@ local function sortPlaces(starts)
   return order, count
 end
 
--- Links edge e into the skip list just above edge k (0: at the bottom), as tall as `height`:
--- at each level above the first, its neighbour below is the nearest edge below tall enough.
-local function linkAbove(e, k, height)
-  tower[e] = height
-  for level = 1, height do
-    if level > 1 then
-      local down = below[level - 1]
-      while tower[k] < level do k = down[k] end
-    end
-    local up, down = above[level], below[level]
-    local j = up[k]
-    up[k], down[e], up[e] = e, k, j
-    if j then down[j] = e end
-  end
-end
-
-local function unlinkEdge(e)
-  for level = 1, tower[e] do
-    local up, down = above[level], below[level]
-    local k, j = down[e], up[e]
-    up[k] = j
-    if j then down[j] = k end
-  end
-end
-
--- Edge e takes the place of edge old, keeping its tower.
-local function replaceEdge(old, e)
-  local height = tower[old]
-  tower[e] = height
-  for level = 1, height do
-    local up, down = above[level], below[level]
-    local k, j = down[old], up[old]
-    up[k], down[e], up[e] = e, k, j
-    if j then down[j] = e end
-  end
-end
-
--- Puts edge e in its place: above the last edge that lies below it, searched from the top
--- level down. Heights follow the count of insertions: one in four gets level 2 and more, one
--- in 16 level 3, and so on (a deterministic skip list: no random numbers needed).
-local inserted = 0
-local function insertEdge(e)
-  inserted = inserted + 1
-  local height, c = 1, inserted
-  while c % 4 == 0 and height < SKIP_LEVELS do height, c = height + 1, c / 4 end
-  while not above[height] do
-    local level = #above + 1
-    above[level], below[level] = { }, { }
-    tower[0] = SKIP_LEVELS
-  end
-  -- one loop for all levels: nested loops made LuaJIT unroll them into traces so long that
-  -- its machine-code area ran out
-  local k, level = 0, #above
-  repeat
-    local j = above[level][k]
-    if j and edgeOrder(e, j) > 0 then k = j else level = level - 1 end
-  until level == 0
-  linkAbove(e, k, height)
-end
-
--- Whether edge e properly crosses either of its neighbours in the list.
-local function crossesNeighbour(e)
-  local k, j = below[1][e], above[1][e]
-  if k ~= 0 and properlyCross(e, nextNode[e], k, nextNode[k]) then return true end
-  return j ~= nil and properlyCross(e, nextNode[e], j, nextNode[j])
-end
-
--- Takes edge e off the list: true when its neighbours, now next to each other, properly
--- cross; nil when e is out of order with them (then the caller asks anyCrossing).
-local function removeEdge(e)
-  local k, j = below[1][e], above[1][e]
-  if (k ~= 0 and edgeOrder(e, k) < 0) or (j and edgeOrder(e, j) > 0) then return nil end
-  unlinkEdge(e)
-  return k ~= 0 and j ~= nil and properlyCross(k, nextNode[k], j, nextNode[j])
-end
-
--- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
--- order came out inconsistent (then the caller asks anyCrossing).
-local function sweep(starts)
+-- The events in order: by place, and at one place every edge leaving before any coming in.
+local function sweepEvents(starts)
   local order, count = sortPlaces(starts)
   sweepLeft, sweepRight = {}, {}
   for _, s in ipairs(starts) do
@@ -2588,58 +2504,76 @@ local function sweep(starts)
       k = q
     until k == s
   end
-  above, below, tower, inserted = { {} }, { {} }, { [0] = SKIP_LEVELS }, 0
-  local comers, comerCount = {}, 0   -- the edges coming in at one place
+  local events, e = {}, 0
   local i = 1
   while i <= count do
-    local v = order[i]
-    local p = prevNode[v]
-    local last = i   -- the nodes at v's place are order[i..last]
-    while last < count and rank[order[last + 1]] == rank[v] do last = last + 1 end
-    if last == i and (sweepRight[p] == v) ~= (sweepRight[v] == v) then
-      -- one edge leaves, the next comes in: it most often takes its place
-      local old, e = p, v
-      if sweepRight[v] == v then old, e = v, p end
-      local k, j = below[1][old], above[1][old]
-      if (k == 0 or edgeOrder(e, k) > 0) and (j == nil or edgeOrder(e, j) <= 0) then
-        replaceEdge(old, e)
-      else
-        local crossing = removeEdge(old)
-        if crossing ~= false then return crossing end
-        insertEdge(e)
-      end
-      if crossesNeighbour(e) then return true end
-    else
-      -- at one place every edge leaving goes before any coming in
-      for g = i, last do
-        local w = order[g]
-        local pw = prevNode[w]
-        for side = 1, 2 do
-          local e = side == 1 and pw or w
-          if sweepRight[e] == w then
-            local crossing = removeEdge(e)
-            if crossing ~= false then return crossing end
-          else
-            comerCount = comerCount + 1
-            comers[comerCount] = e
-          end
-        end
-      end
-      for c = 1, comerCount do
-        local e = comers[c]
-        insertEdge(e)
-        if crossesNeighbour(e) then return true end
-      end
-      comerCount = 0
+    local last = i   -- the nodes at one place are order[i..last]
+    while last < count and rank[order[last + 1]] == rank[order[i]] do last = last + 1 end
+    for g = i, last do
+      local v = order[g]
+      local p = prevNode[v]
+      if sweepRight[p] == v then e = e + 1; events[e] = -p end
+      if sweepRight[v] == v then e = e + 1; events[e] = -v end
+    end
+    for g = i, last do
+      local v = order[g]
+      local p = prevNode[v]
+      if sweepLeft[p] == v then e = e + 1; events[e] = p end
+      if sweepLeft[v] == v then e = e + 1; events[e] = v end
     end
     i = last + 1
+  end
+  return events, e
+end
+
+-- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
+-- order came out inconsistent (then the caller asks anyCrossing).
+local function sweep(starts)
+  local events, eventCount = sweepEvents(starts)
+  local status, m = {}, 0
+  local i = 1
+  while i <= eventCount do
+    local e = events[i]
+    local s = e > 0 and e or -e
+    -- the first place whose edge does not lie below s
+    local lo, hi = 1, m + 1
+    while lo < hi do
+      local mid = (lo + hi - (lo + hi) % 2) / 2
+      if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+    end
+    if e > 0 then
+      table.insert(status, lo, s); m = m + 1
+      local below, above = status[lo - 1], status[lo + 1]
+      if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
+      if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
+    else
+      while lo <= m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
+      if status[lo] ~= s then return nil end
+      local below, above = status[lo - 1], status[lo + 1]
+      -- an edge coming in where s leaves (a vertex along the outline) most often takes its
+      -- place: two tests vouch for it, and the list is not shifted twice
+      local t = events[i + 1]
+      if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
+        and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
+        status[lo] = t
+        i = i + 1
+        if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
+        if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
+      else
+        table.remove(status, lo); m = m - 1
+        if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
+          return true
+        end
+      end
+    end
+    i = i + 1
   end
   return false
 end
 
 function sweepCrossing(starts)
   local crossing = sweep(starts)
-  sweepLeft, sweepRight, rank, above, below, tower = nil, nil, nil, nil, nil, nil
+  sweepLeft, sweepRight, rank = nil, nil, nil
   return crossing
 end
 end
