@@ -2411,7 +2411,9 @@ end
 -- it, so each edge is tested only against its neighbours when it comes in and when it leaves.
 -- Edge k runs from node k to nextNode[k]; sweepLeft[k] and sweepRight[k] are its ends in (x, y)
 -- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
--- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces).
+-- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces);
+-- the order along the line is a sorted array, searched by halving. (A skip list, which spares
+-- the array's shifts, made LuaJIT grow traces until its machine-code area ran out.)
 local sweepCrossing
 do   -- the sweep's helpers are local to it (the file is near Lua's 200 locals per function)
 local sweepLeft, sweepRight
@@ -3098,8 +3100,8 @@ end
 -- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
 -- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
 -- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
--- found by a sweep in O(n log n); the ears cost a few microseconds per vertex on LuaJIT, growing
--- about as the square root of n on outlines of long thin spikes (bench/concave.lua).
+-- found by a sweep (Shamos and Hoey); the ears cost a few microseconds per vertex on LuaJIT,
+-- growing about as the square root of n on outlines of long thin spikes (bench/concave.lua).
 -- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
 -- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
 -- outside the polygon)
