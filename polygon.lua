@@ -2663,12 +2663,15 @@ local function linkRing(points, n, firstId, reversed)
   return first
 end
 
--- Whether segments a-b and c-d cross at one point inside both (a proper crossing).
+-- Whether segments a-b and c-d cross at one point inside both (a proper crossing): c and d
+-- strictly on opposite sides of a-b, and a and b of c-d. Each side test is one comparison,
+-- min(max(s1, s2), -min(s1, s2)) > 0, rarely true: sign tests that went both ways made LuaJIT
+-- grow side traces in the sweep until its machine-code area ran out.
 local function properlyCross(a, b, c, d)
   local s1, s2 = orient(a, b, c), orient(a, b, d)
-  if not ((s1 > 0 and s2 < 0) or (s1 < 0 and s2 > 0)) then return false end
+  if min(max(s1, s2), -min(s1, s2)) <= 0 then return false end
   local s3, s4 = orient(c, d, a), orient(c, d, b)
-  return (s3 > 0 and s4 < 0) or (s3 < 0 and s4 > 0)
+  return min(max(s3, s4), -min(s3, s4)) > 0
 end
 
 -- Shamos and Hoey's sweep: the edges in order along a vertical line moving right; a proper
@@ -2676,63 +2679,137 @@ end
 -- it, so each edge is tested only against its neighbours when it comes in and when it leaves.
 -- Edge k runs from node k to nextNode[k]; sweepLeft[k] and sweepRight[k] are its ends in (x, y)
 -- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
+-- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces);
+-- the order along the line is a sorted array, searched by halving. (A skip list, which spares
+-- the array's shifts, made LuaJIT grow traces until its machine-code area ran out.)
+local sweepCrossing
+do   -- the sweep's helpers are local to it (the file is near Lua's 200 locals per function)
 local sweepLeft, sweepRight
-
-local function precedes(a, b)   -- nodes in (x, y) order
-  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
-end
-
-local function eventOrder(e, f)   -- by place, and at one place an edge leaves before one comes in
-  local a = e > 0 and sweepLeft[e] or sweepRight[-e]
-  local b = f > 0 and sweepLeft[f] or sweepRight[-f]
-  if nodeX[a] ~= nodeX[b] then return nodeX[a] < nodeX[b] end
-  if nodeY[a] ~= nodeY[b] then return nodeY[a] < nodeY[b] end
-  return e < 0 and f > 0
-end
+local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
 
 -- > 0 when edge s lies above edge t where the line meets both (in y-up terms), < 0 below, 0 for
 -- edges in line: the later left end tested against the other edge, then its right end.
 local function edgeOrder(s, t)
   local flip = 1
-  if precedes(sweepLeft[s], sweepLeft[t]) then s, t, flip = t, s, -1 end
+  if rank[sweepLeft[s]] < rank[sweepLeft[t]] then s, t, flip = t, s, -1 end
   local a, b = sweepLeft[t], sweepRight[t]
   local side = orient(a, b, sweepLeft[s])
   if side == 0 then side = orient(a, b, sweepRight[s]) end
   return side * turn * flip
 end
 
--- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
--- order came out inconsistent (then the caller asks anyCrossing).
-local function sweepCrossing(starts)
+local BUCKET_RUN = 24   -- a bucket holding more nodes than this is sorted by table.sort
+                        -- (many vertices on one vertical line), fewer by insertion
+
+-- The nodes of the rings at `starts` in (x, y) order, and their count: counted into as many
+-- buckets as nodes by x (the bucket is monotone in x), then each bucket sorted. Sets rank.
+local function sortPlaces(starts)
+  local x0, x1, count = huge, -huge, 0
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      x0, x1, count = min(x0, nodeX[k]), max(x1, nodeX[k]), count + 1
+      k = nextNode[k]
+    until k == s
+  end
+  local scale = count / (x1 - x0)   -- x1 > x0: the outer ring has area
+  local bucketOf, first = {}, {}
+  for b = 1, count + 1 do first[b] = 0 end
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local b = min(floor((nodeX[k] - x0) * scale), count - 1) + 1
+      bucketOf[k] = b
+      first[b] = first[b] + 1
+      k = nextNode[k]
+    until k == s
+  end
+  local at = 1   -- first[b]: where bucket b starts in the order; then where its next node goes
+  for b = 1, count + 1 do first[b], at = at, at + first[b] end
+  local order, fill = {}, {}
+  for b = 1, count do fill[b] = first[b] end
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local b = bucketOf[k]
+      order[fill[b]] = k
+      fill[b] = fill[b] + 1
+      k = nextNode[k]
+    until k == s
+  end
+  for b = 1, count do
+    local lo, hi = first[b], first[b + 1] - 1
+    if hi - lo >= BUCKET_RUN then
+      local run = {}
+      for i = lo, hi do run[i - lo + 1] = order[i] end
+      sort(run, leftmostFirst)
+      for i = lo, hi do order[i] = run[i - lo + 1] end
+    else
+      for i = lo + 1, hi do
+        local k, j = order[i], i - 1
+        while j >= lo and leftmostFirst(k, order[j]) do order[j + 1] = order[j]; j = j - 1 end
+        order[j + 1] = k
+      end
+    end
+  end
+  rank = {}
+  local place = 0
+  for i = 1, count do
+    local k = order[i]
+    if i == 1 or not same(k, order[i - 1]) then place = place + 1 end
+    rank[k] = place
+  end
+  return order, count
+end
+
+-- The events in order: by place, and at one place every edge leaving before any coming in.
+local function sweepEvents(starts)
+  local order, count = sortPlaces(starts)
   sweepLeft, sweepRight = {}, {}
-  local events = {}
   for _, s in ipairs(starts) do
     local k = s
     repeat
       local q = nextNode[k]
-      if precedes(k, q) then sweepLeft[k], sweepRight[k] = k, q else sweepLeft[k], sweepRight[k] = q, k end
-      events[#events + 1], events[#events + 2] = k, -k
+      if rank[k] < rank[q] then sweepLeft[k], sweepRight[k] = k, q else sweepLeft[k], sweepRight[k] = q, k end
       k = q
     until k == s
   end
-  sort(events, eventOrder)
+  local events, e = {}, 0
+  local i = 1
+  while i <= count do
+    local last = i   -- the nodes at one place are order[i..last]
+    while last < count and rank[order[last + 1]] == rank[order[i]] do last = last + 1 end
+    for g = i, last do
+      local v = order[g]
+      local p = prevNode[v]
+      if sweepRight[p] == v then e = e + 1; events[e] = -p end
+      if sweepRight[v] == v then e = e + 1; events[e] = -v end
+    end
+    for g = i, last do
+      local v = order[g]
+      local p = prevNode[v]
+      if sweepLeft[p] == v then e = e + 1; events[e] = p end
+      if sweepLeft[v] == v then e = e + 1; events[e] = v end
+    end
+    i = last + 1
+  end
+  return events, e
+end
+
+-- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
+-- order came out inconsistent (then the caller asks anyCrossing).
+local function sweep(starts)
+  local events, eventCount = sweepEvents(starts)
   local status, m = {}, 0
-  local leftPlace, leftEnd = nil, nil   -- where the last edge to leave was, and its right end
-  for i = 1, #events do
+  local i = 1
+  while i <= eventCount do
     local e = events[i]
     local s = e > 0 and e or -e
-    -- the first place whose edge does not lie below s; an edge coming in where one has just
-    -- left (a vertex along the outline) most often takes its place: two tests vouch for it
+    -- the first place whose edge does not lie below s
     local lo, hi = 1, m + 1
-    if e > 0 and leftEnd and same(leftEnd, sweepLeft[s]) and leftPlace <= hi
-      and (leftPlace == 1 or edgeOrder(s, status[leftPlace - 1]) > 0)
-      and (leftPlace == hi or edgeOrder(s, status[leftPlace]) <= 0) then
-      lo = leftPlace
-    else
-      while lo < hi do
-        local mid = (lo + hi - (lo + hi) % 2) / 2
-        if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
-      end
+    while lo < hi do
+      local mid = (lo + hi - (lo + hi) % 2) / 2
+      if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
     end
     if e > 0 then
       table.insert(status, lo, s); m = m + 1
@@ -2742,15 +2819,33 @@ local function sweepCrossing(starts)
     else
       while lo <= m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
       if status[lo] ~= s then return nil end
-      table.remove(status, lo); m = m - 1
-      leftPlace, leftEnd = lo, sweepRight[s]
-      local below, above = status[lo - 1], status[lo]
-      if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
-        return true
+      local below, above = status[lo - 1], status[lo + 1]
+      -- an edge coming in where s leaves (a vertex along the outline) most often takes its
+      -- place: two tests vouch for it, and the list is not shifted twice
+      local t = events[i + 1]
+      if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
+        and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
+        status[lo] = t
+        i = i + 1
+        if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
+        if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
+      else
+        table.remove(status, lo); m = m - 1
+        if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
+          return true
+        end
       end
     end
+    i = i + 1
   end
   return false
+end
+
+function sweepCrossing(starts)
+  local crossing = sweep(starts)
+  sweepLeft, sweepRight, rank = nil, nil, nil
+  return crossing
+end
 end
 
 -- The same answer by a plainer sweep, should sweepCrossing find its order inconsistent: the
@@ -2931,7 +3026,11 @@ local SHARED_RUN = 8    -- nodes of one cell compared pair by pair, at most (the
 local FINE = 2 ^ -30    -- cells wider than this times the largest coordinate are visited by
                         -- the triangle's span (rounding stays far below a cell); narrower
                         -- ones, by its box (an outline tiny against its offset)
+local SPAN_MARGIN = 2 ^ -10   -- a span's widening, in cells: with FINE, at least 2^-40 of the
+                        -- largest coordinate, thousands of times its few ulps of rounding
 local gridLeft, gridTop, gridScale, gridCols, gridRows, cellSize, gridFine
+local spanMargin        -- twice SPAN_MARGIN cells (nearTriangle compares doubled widths), or
+                        -- huge when the grid is not fine
 
 -- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so a
 -- box's corners bound the cells of every point inside it.
@@ -2960,6 +3059,7 @@ local function buildGrid(s)
   gridCols = min(floor((x1 - x0) * gridScale) + 1, count)
   gridRows = min(floor((y1 - y0) * gridScale) + 1, count)
   gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
+  spanMargin = gridFine and 2 * SPAN_MARGIN * cellSize or huge
   cellOf, cellHead, nextInCell, prevInCell = {}, {}, {}, {}
   listed, shared, reflexSeen, listStale = {}, {}, {}, false
   k = s
@@ -3037,21 +3137,38 @@ end
 -- ring runs; the box x0..x1, y0..y1; for the spans, the top corner t, the middle one m, and
 -- the slopes dx/dy of the long side t -> bottom and of the short sides t -> m and m -> bottom.
 local earA, earB, earC, boxX0, boxY0, boxX1, boxY1, boxCol0, boxCol1
+local spanX0, spanX1    -- the triangle's widened span in x over the row being visited
 local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
 
--- The columns of the cells the triangle may meet in a row: its span in x over the row widened
--- by a quarter row up and down, then by a cell left and right, against rounding. Each side is
--- straight, so its x over [lo, hi] is extreme at the ends; a short side's ends are clamped to
--- its own rows (m may come in when outside [lo, hi]: a wider span, never a narrower one).
+-- The columns of the cells the triangle may meet in a row: its span in x over the row's band
+-- of y, band and span widened by SPAN_MARGIN cells against rounding (the last row's band runs
+-- to the box's bottom: rowOf puts every node beyond the grid there). Each side is straight, so
+-- its x over [lo, hi] is extreme at the ends; a short side's ends are clamped to its own rows
+-- (m may come in when outside [lo, hi]: a wider span, never a narrower one). A cell's width
+-- of widening on each side cost a thin spike's ear three cells a row instead of one or two.
 local function rowSpan(row)
-  if not gridFine then return boxCol0, boxCol1 end
-  local lo = max(boxY0, gridTop + (row - 0.25) * cellSize)
-  local hi = min(boxY1, gridTop + (row + 1.25) * cellSize)
+  if not gridFine then spanX0, spanX1 = boxX0, boxX1; return boxCol0, boxCol1 end
+  local margin = SPAN_MARGIN * cellSize
+  local lo = max(boxY0, gridTop + row * cellSize - margin)
+  local hi = row < gridRows - 1 and min(boxY1, gridTop + (row + 1) * cellSize + margin) or boxY1
   local x1, x2 = topX + (lo - topY) * longSlope, topX + (hi - topY) * longSlope
   local x3, x4 = topX + (min(lo, midY) - topY) * upperSlope, topX + (min(hi, midY) - topY) * upperSlope
   local x5, x6 = midX + (max(lo, midY) - midY) * lowerSlope, midX + (max(hi, midY) - midY) * lowerSlope
-  return max(boxCol0, colOf(min(x1, x2, x3, x4, x5, x6)) - 1),
-    min(boxCol1, colOf(max(x1, x2, x3, x4, x5, x6)) + 1)
+  spanX0 = max(boxX0, min(x1, x2, x3, x4, x5, x6) - margin)
+  spanX1 = min(boxX1, max(x1, x2, x3, x4, x5, x6) + margin)
+  return colOf(spanX0), colOf(spanX1)
+end
+
+-- Whether (x, y), in the triangle's box, lies near the triangle: within its span in x at
+-- height y, widened by spanMargin (as rowSpan, far beyond rounding). A long thin ear meets
+-- about one candidate a row that only the exact test would turn down otherwise. The short
+-- sides are both measured from m, each clamped to its own rows, so their sum is the short
+-- side's x at y (a level side too) without a branch: branches here multiplied LuaJIT's side
+-- traces until its machine-code area ran out.
+local function nearTriangle(x, y)
+  local xLong = topX + (y - topY) * longSlope
+  local xShort = midX + (min(y, midY) - midY) * upperSlope + (max(y, midY) - midY) * lowerSlope
+  return abs(x + x - xLong - xShort) <= abs(xLong - xShort) + spanMargin
 end
 
 -- Whether a listed node in cells first..last blocks the triangle.
@@ -3060,8 +3177,8 @@ local function cellsBlock(first, last)
     local k = cellHead[cell]
     while k do
       local x, y, after = nodeX[k], nodeY[k], nextInCell[k]
-      if k ~= earA and k ~= earC and keepListed(k) and x >= boxX0 and x <= boxX1
-        and y >= boxY0 and y <= boxY1 and blocks(k, earA, earB, earC) then
+      if k ~= earA and k ~= earC and keepListed(k) and x >= spanX0 and x <= spanX1
+        and y >= boxY0 and y <= boxY1 and nearTriangle(x, y) and blocks(k, earA, earB, earC) then
         return true
       end
       k = after
@@ -3196,7 +3313,6 @@ local function triangulate(fname, points, holes)
     firstId = firstId + m / 2
   end
   local crossing = sweepCrossing(starts)
-  sweepLeft, sweepRight = nil, nil
   if crossing == nil then crossing = anyCrossing(starts) end
   if crossing then return nil, "edges cross" end
   for h = 2, #starts do
@@ -3252,8 +3368,8 @@ end
 -- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
 -- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
 -- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
--- found by a sweep in O(n log n); the ears cost a few microseconds per vertex on LuaJIT, growing
--- about as the square root of n on outlines of long thin spikes (bench/concave.lua).
+-- found by a sweep (Shamos and Hoey); the ears cost a few microseconds per vertex on LuaJIT,
+-- growing about as the square root of n on outlines of long thin spikes (bench/concave.lua).
 -- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
 -- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
 -- outside the polygon)

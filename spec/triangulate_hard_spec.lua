@@ -63,6 +63,38 @@ end
 
 
 -- Checks both functions on one polygon against the oracle; returns the parts.
+-- A spike 1000 tall and 2 wide, tip (1, 1000) over base corners (0, 0) and (2, 0), standing on
+-- a slab 1000 wide whose wavy bottom holds `baseVertices` vertices, so that the ear test's cells
+-- are about 30 wide: the spike's ear crosses some 30 rows of them. A notch rises from the bottom
+-- to r = (1.5 - hair, 500), inside the spike by `hair` from its right side (hair 0: on it), so r
+-- blocks the spike's ear; missing it gives overlapping triangles. All of it turned by `angle`
+-- around the origin (r stays inside: the turn rounds by about 1e-13).
+-- Arithmetic: the right side runs from (1, 1000) to (2, 0), x = 2 - y / 1000, 1.5 at y = 500.
+local function notchedSpike(baseVertices, hair, angle, rng)
+  local points = { 0, 0, 1, 1000, 2, 0, 500, 0 }
+  local function bottom(from, to, count)
+    for k = 0, count - 1 do
+      local x = from + (to - from) * k / count
+      points[#points + 1], points[#points + 2] = x, -10 - 5 * rng:float()
+    end
+  end
+  bottom(500, 1.55, baseVertices / 2)
+  points[#points + 1], points[#points + 2] = 1.55, -10
+  points[#points + 1], points[#points + 2] = 1.5 - hair, 500
+  points[#points + 1], points[#points + 2] = 1.45, -10
+  bottom(1.45, -500, baseVertices / 2)
+  points[#points + 1], points[#points + 2] = -500, -10
+  points[#points + 1], points[#points + 2] = -500, 0
+  if angle ~= 0 then
+    local c, s = math.cos(angle), math.sin(angle)
+    for i = 1, #points, 2 do
+      local x, y = points[i], points[i + 1]
+      points[i], points[i + 1] = x * c - y * s, x * s + y * c
+    end
+  end
+  return points
+end
+
 local function checkBoth(points, holes)
   local tris, message = triangulate(points, holes)
   assert.is_truthy(tris, message)
@@ -170,6 +202,21 @@ describe("polygonTriangulate and polygonConvexParts on hard input", function()
       for _, offset in ipairs(OFFSETS) do
         for _, points in ipairs(cases) do
           checkBoth(shapes.translate(points, offset, offset * 0.75))
+        end
+      end
+    end)
+  end)
+
+  describe("when a reflex vertex lies a hair inside a long thin ear", function()
+    it("keeps the ear out, at every turn and offset", function()
+      local rng = prng.new(77)
+      for _, hair in ipairs({ 1e-6, 1e-9, 0 }) do
+        for _, angle in ipairs({ 0, 0.3, 1.1, 2.5, -0.7 }) do
+          if hair > 0 or angle == 0 then   -- hair 0 needs exact coordinates: no turn
+            local points = notchedSpike(2000, hair, angle, rng)
+            checkBoth(points)
+            checkBoth(shapes.translate(points, OFFSETS[1], OFFSETS[1]))
+          end
         end
       end
     end)
