@@ -3998,24 +3998,22 @@ end
 
 -- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for a pair test:
 -- a list's part compared with its whole copy (the non-finite error raised at the public
--- function's caller, level 7 from checkCopy), a flat view's area sign computed and, for a push
+-- function's caller, level 8 from checkCopy), a flat view's area sign computed and, for a push
 -- (k given), its normals. Returns their area signs and spanX, spanY (scaled by k, or 1 for a
 -- boolean) bounding their coordinate differences.
+local function prepareSide(view, p, i, k)
+  if view.copies then
+    if view.checked[i] ~= callStamp then checkCopy(view, i, p, 8) end
+  elseif k then
+    if view.pending then partNormals(view, 1, p, #p); view.pending = false end
+  elseif view.turnPending then
+    partTurn(view, 1, p, #p); view.turnPending = false
+  end
+end
+
 local function preparePair(view1, p1, i, view2, p2, j, k)
-  if view1.copies then
-    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 7) end
-  elseif k then
-    if view1.pending then partNormals(view1, 1, p1, #p1); view1.pending = false end
-  elseif view1.turnPending then
-    partTurn(view1, 1, p1, #p1); view1.turnPending = false
-  end
-  if view2.copies then
-    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 7) end
-  elseif k then
-    if view2.pending then partNormals(view2, 1, p2, #p2); view2.pending = false end
-  elseif view2.turnPending then
-    partTurn(view2, 1, p2, #p2); view2.turnPending = false
-  end
+  prepareSide(view1, p1, i, k)
+  prepareSide(view2, p2, j, k)
   k = k or 1.0
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
