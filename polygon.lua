@@ -1385,9 +1385,12 @@ end
 -- The SAT engine's one exact fallback: whether a vertex of points lies strictly on the side
 -- `inside` (1 or -1, the sign of the cross product) of the line through c parallel to a -> b
 -- (a and b converted to doubles). The filter decides almost every call; the vertices it cannot
--- place are decided by cross, exactly, in a loop with no early exit (an exit inside it made
--- LuaJIT abort the loop's trace, "leaving loop in root trace"). The sign is multiplied by the
--- sign +-1, never by an area, so nothing underflows.
+-- place are decided exactly, in a loop with no early exit (an exit inside it made LuaJIT abort
+-- the loop's trace, "leaving loop in root trace"). On LuaJIT that loop sends every vertex to
+-- crossExact, whose stage B decides all but exactly collinear ones with inexact differences:
+-- through cross, the vertices near the line took its filter's side exit, and the side traces
+-- there, inside the SAT's traces, failed to compile ("NYI: register coalescing too complex").
+-- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
 local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n)
   cx, cy = cx + 0.0, cy + 0.0
   local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
@@ -1397,8 +1400,8 @@ local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n)
   local found = 0.0
   for i = 1, n - 1, 2 do
     local px, py = points[i] + 0.0, points[i + 1] + 0.0
-    if JIT then   -- every vertex through cross, whose one branch is its filter's
-      found = max(found, cross(ax, ay, bx, by, cx, cy, px, py) * inside)
+    if JIT then   -- every vertex through crossExact: no filter branch to leave the loop by
+      found = max(found, crossExact(ax, ay, bx, by, cx, cy, px, py) * inside)
     else          -- only the vertices the filter cannot place (a call costs PUC Lua)
       local l, r = ex * (py - cy), ey * (px - cx)
       if l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r)) > 0 then
