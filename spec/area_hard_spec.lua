@@ -122,10 +122,16 @@ local function check(points, bad)
   end
 end
 
+-- Checks count polygons made by make(r, i) from a generator seeded with seed: none may be off.
+local function checkGenerated(seed, count, make)
+  local r, bad = prng.new(seed), {}
+  for i = 1, count do check(make(r, i), bad) end
+  assert.are.same({}, bad)
+end
+
 describe("polygonAreaAccurate against the exact area", function()
   it("is within one ulp on random star-shaped polygons at offsets up to 1e12", function()
-    local r, bad = prng.new(31337), {}
-    for _ = 1, 400 do
+    checkGenerated(31337, 400, function(r)
       local m, radius = r:int(3, 40), 10 ^ r:int(-3, 4)
       local ox, oy = (r:float() - 0.5) * 10 ^ r:int(0, 12), (r:float() - 0.5) * 10 ^ r:int(0, 12)
       local p = {}
@@ -133,23 +139,20 @@ describe("polygonAreaAccurate against the exact area", function()
         local t, rk = (k + 0.8 * (r:float() - 0.5)) * 2 * math.pi / m, radius * (0.3 + r:float())
         p[#p + 1], p[#p + 2] = ox + rk * math.cos(t), oy + rk * math.sin(t)
       end
-      check(p, bad)
-    end
-    assert.are.same({}, bad)
+      return p
+    end)
   end)
 
   it("is within one ulp where the sum cancels (nearly collinear points)", function()
-    local r, bad = prng.new(2718), {}
-    for _ = 1, 300 do
+    checkGenerated(2718, 300, function(r)
       local p = {}
       local x0, y0, dx, dy = r:float() * 100, r:float() * 100, r:float(), r:float()
       for _ = 1, r:int(3, 8) do
         local s = r:float() * 50
         p[#p + 1], p[#p + 2] = x0 + s * dx, y0 + s * dy + r:int(-2, 2) * 2 ^ -46
       end
-      check(p, bad)
-    end
-    assert.are.same({}, bad)
+      return p
+    end)
   end)
 end)
 
@@ -201,22 +204,18 @@ describe("polygonAreaAccurate's split path against the exact area", function()
   end
 
   it("is within one ulp on guess-breaking, far, flat, sliver, regular and star polygons", function()
-    local r, bad = prng.new(20261122), {}
-    for i = 1, 1000 do check(polygonOf(r, i % 5), bad) end
-    assert.are.same({}, bad)
+    checkGenerated(20261122, 1000, function(r, i) return polygonOf(r, i % 5) end)
   end)
 
   it("is within one ulp on small integer grids far out (exact products everywhere)", function()
     -- multiples of 2^k around an integer offset: every rounded part is the coordinate itself
-    local r, bad = prng.new(4099), {}
-    for _ = 1, 200 do
+    checkGenerated(4099, 200, function(r)
       local g, ox, oy = 2 ^ r:int(0, 30), r:int(-2 ^ 40, 2 ^ 40), r:int(-2 ^ 40, 2 ^ 40)
       local p = {}
       for _ = 1, r:int(3, 64) do
         p[#p + 1], p[#p + 2] = ox + r:int(-1000, 1000) * g, oy + r:int(-1000, 1000) * g
       end
-      check(p, bad)
-    end
-    assert.are.same({}, bad)
+      return p
+    end)
   end)
 end)
