@@ -67,7 +67,11 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- instructions, and turns every branch that goes both ways into a side trace, whose number is
 -- limited (100 per loop, 1000 in all by default). Where that matters a function has two bodies
 -- computing the same numbers, chosen once by JIT below; the LuaJIT bodies keep few values alive
--- across their loops, since a side trace leaving a loop must take them all over in registers.
+-- across their loops, since a side trace leaving a loop must take them all over in registers,
+-- and avoid short inner loops: a loop of a few steps (a polygon's vertices) often fails to
+-- become a trace of its own, and other traces then copy it unrolled, with a side exit for every
+-- other polygon size (so the SAT's loops run flat over (edge, vertex) pairs; `bash
+-- bench/aborts.sh` counts what LuaJIT still aborts).
 --
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
 -- 2^-447 and 2^500 in magnitude (then all coordinates are multiples of 2^-499, all products of
@@ -1515,6 +1519,12 @@ else
   end
 end
 
+-- 1 when d > 0, else 0, without a branch (for LuaJIT: d is a difference of doubles or inf, never
+-- NaN; a positive one is at least 2^-1074, which the two factors take above 1, and 0 stays 0).
+local function isAbove(d)
+  return min(1, max(0, d * 2^1000 * 2^1000))
+end
+
 -- For reachPastBothEnds: -lo and hi - own, where [lo, hi] is the range of the projections
 -- n . (v - a) of other's vertices and own the least of edges' own. On LuaJIT one loop over both
 -- polygons at once, the shorter one's last vertex read again (harmless to a min or max): half
@@ -1575,11 +1585,22 @@ local function reachPastBothEnds(edges, ne, turn, other, no, span)
         end
         if far < 0 then far = 0.0 end
       end
-      local depth = face < far and face or far
-      local squaredDepth = depth * (depth / (nx * nx + ny * ny))
-      if squaredDepth < leastSquared then   -- keep the least
-        leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
-        leastAtFar = far < face and 1 or 0
+      if JIT then   -- keep the least, selecting without a branch (see isAbove)
+        local depth = min(face, far)
+        local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+        local better = isAbove(leastSquared - squaredDepth)
+        leastSquared = min(leastSquared, squaredDepth)
+        -- (b x + (1 - b) y with b 0 or 1 is x or y exactly; x + b (y - x) would round)
+        leastOverlap = better * depth + (1 - better) * leastOverlap
+        leastEnd = better * ib + (1 - better) * leastEnd
+        leastAtFar = better * isAbove(face - far) + (1 - better) * leastAtFar
+      else
+        local depth = face < far and face or far
+        local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+        if squaredDepth < leastSquared then   -- keep the least
+          leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+          leastAtFar = far < face and 1 or 0
+        end
       end
     end
     ia = ib
