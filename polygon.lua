@@ -1588,12 +1588,16 @@ local function reachPastBothEnds(edges, ne, turn, other, no, span)
       if JIT then   -- keep the least, selecting without a branch (see isAbove)
         local depth = min(face, far)
         local squaredDepth = depth * (depth / (nx * nx + ny * ny))
-        local better = isAbove(leastSquared - squaredDepth)
-        leastSquared = min(leastSquared, squaredDepth)
-        -- (b x + (1 - b) y with b 0 or 1 is x or y exactly; x + b (y - x) would round)
-        leastOverlap = better * depth + (1 - better) * leastOverlap
-        leastEnd = better * ib + (1 - better) * leastEnd
-        leastAtFar = better * isAbove(face - far) + (1 - better) * leastAtFar
+        -- NaN or inf only where the squared normal underflows, outside the exact range: such an
+        -- axis is never chosen (as by the comparison below), and isAbove never sees a NaN
+        if squaredDepth < huge then
+          local better = isAbove(leastSquared - squaredDepth)
+          leastSquared = min(leastSquared, squaredDepth)
+          -- (b x + (1 - b) y with b 0 or 1 is x or y exactly; x + b (y - x) would round)
+          leastOverlap = better * depth + (1 - better) * leastOverlap
+          leastEnd = better * ib + (1 - better) * leastEnd
+          leastAtFar = better * isAbove(face - far) + (1 - better) * leastAtFar
+        end
       else
         local depth = face < far and face or far
         local squaredDepth = depth * (depth / (nx * nx + ny * ny))
