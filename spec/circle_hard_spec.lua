@@ -205,9 +205,7 @@ describe("polygonCircleCollideV on generated circles near contact, at offsets 1 
       local points = convex(r, 10 ^ r:int(0, 12))
       if trial % 2 == 0 then points = shapes.reverse(points) end
       -- a centre between the first vertex and the vertex mean: inside
-      local mx, my = 0, 0
-      for i = 1, #points, 2 do mx, my = mx + points[i], my + points[i + 1] end
-      mx, my = mx / (#points / 2), my / (#points / 2)
+      local mx, my = shapes.vertexMean(points)
       local t = r:float()
       local cx, cy = mx + t * (points[1] - mx), my + t * (points[2] - my)
       if check(points, cx, cy, r:range(0.01, 200)) then collided = collided + 1 end

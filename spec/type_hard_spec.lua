@@ -55,9 +55,7 @@ describe("polygonType in every rotation and winding", function()
       local m = 3 + trial % 10
       local p = shapes.convex(r, m, r:range(-100, 100), r:range(-100, 100), r:range(1, 50), 0.3)
       if trial % 2 == 0 then   -- pull every other vertex in: a star, concave from vertex 1 on
-        local cx, cy = 0, 0
-        for i = 1, #p, 2 do cx, cy = cx + p[i], cy + p[i + 1] end
-        cx, cy = cx / m, cy / m
+        local cx, cy = shapes.vertexMean(p)
         for i = 1, #p, 4 do p[i], p[i + 1] = cx + 0.3 * (p[i] - cx), cy + 0.3 * (p[i + 1] - cy) end
       end
       mismatches(p, bad)

@@ -31,6 +31,13 @@ function shapes.bounds(points)
   return xmin, ymin, xmax, ymax
 end
 
+--- The mean of the vertices of a flat array (summed in order, then divided): x, y.
+function shapes.vertexMean(points)
+  local sx, sy = 0, 0
+  for i = 1, #points - 1, 2 do sx, sy = sx + points[i], sy + points[i + 1] end
+  return sx / (#points / 2), sy / (#points / 2)
+end
+
 --- A new array with every coordinate multiplied by k (exact for k a power of two, barring
 -- overflow and underflow).
 function shapes.scale(points, k)
