@@ -1315,36 +1315,6 @@ else
   end
 end
 
--- The least projection nx (vx - ax) + ny (vy - ay) over the vertices of a convex polygon, with
--- the index of a vertex where it is found, for the edges of another convex polygon in turn
--- (PUC Lua's reachPast). Rotating calipers: as the edges' outward normals turn, the deepest
--- vertex moves on around `points`, `step` (2 or -2) at a time; so the first edge (deepest == 0)
--- scans every vertex and each next one walks on from the last deepest vertex while the
--- projection does not rise. A walk stopped early by rounding misses the least by less than the
--- projections' tolerance, and the SAT engine decides every depth within that of zero again over
--- all vertices, exactly. (On LuaJIT the walk's data-dependent exits became side traces that
--- cost more than they saved: compiling them took most of the time of a mixed collision workload.)
-local function deepestPast(points, n, ax, ay, nx, ny, deepest, step)
-  local lo
-  if deepest == 0 then
-    deepest, lo = 1, nx * (points[1] - ax) + ny * (points[2] - ay)
-    for i = 3, n - 1, 2 do
-      local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
-      if s < lo then deepest, lo = i, s end
-    end
-    return deepest, lo
-  end
-  lo = nx * (points[deepest] - ax) + ny * (points[deepest + 1] - ay)
-  for _ = 3, n, 2 do   -- at most m - 1 steps around a polygon of m vertices
-    local k = deepest + step
-    if k > n then k = 1 elseif k < 1 then k = n - 1 end
-    local s = nx * (points[k] - ax) + ny * (points[k + 1] - ay)
-    if s > lo then break end
-    deepest, lo = k, s
-  end
-  return deepest, lo
-end
-
 -- The projections above are taken relative to a vertex a of one polygon so that far from the
 -- origin they stay as accurate as near it. Their rounding error is at most
 -- 4 eps (spanX |nx| + spanY |ny|), where spanX and spanY bound every |vx - ax| and |vy - ay|;
@@ -1439,18 +1409,28 @@ end
 -- Returns false on a separating or touching axis; otherwise the least penetration's squared
 -- depth o (o / |n|^2) (neither overflows nor underflows in the exact range), its overlap
 -- o >= 0 along n (the depth is o / |n|), and the index of its edge's end b.
--- spanX, spanY: see projectionTolerance.
+-- The least projection lo's rounding error is below 8 eps (spanX |nx| + spanY |ny|) (see
+-- projectionTolerance), which is at most 8 eps |n| sqrt(spanX^2 + spanY^2) (Cauchy-Schwarz):
+-- so an edge whose squared depth lo^2 / |n|^2 exceeds tolSq = (16 eps)^2 (spanX^2 + spanY^2)
+-- has the sign of lo for sure, with room for the rounding of both squares, and one comparison
+-- with a number computed once per call replaces a tolerance per edge. Within it, vertexInside
+-- decides exactly.
 -- Two bodies. On LuaJIT one flat loop runs over every (edge, vertex) pair, projecting with max
 -- and min, and an edge's verdict is taken when its last vertex is projected: the nested loops
 -- (a loop of 6 to 8 steps per edge) often failed to become traces of their own ("leaving loop in
 -- root trace"), other traces then copied them unrolled, and side traces leaving those copies
 -- could not be compiled ("NYI: register coalescing too complex"); a loop of some 50 steps
 -- compiles, and the flat loop took 0.34 of the tutorial's time where the nested ones took 0.41
--- (`luajit bench/isolated.lua polygonsCollideV`). On PUC Lua, nested loops and the calipers
--- (deepestPast). The two agree but where the calipers' walk stops early by rounding (see there).
+-- (`luajit bench/isolated.lua polygonsCollideV`). On PUC Lua, rotating calipers: as the
+-- edges' outward normals turn, the vertex of other deepest past them moves on around it, 2 or
+-- -2 at a time; so the first edge scans every vertex and each next one walks on from the last
+-- deepest while the projection does not rise. A walk stopped early by rounding misses the least
+-- by less than the rounding error, so such an edge is within tolSq and decided exactly over all
+-- vertices; otherwise the two bodies agree. (On LuaJIT the walk's data-dependent exits became
+-- side traces that cost more than they saved.)
 local reachPast
 if JIT then
-  reachPast = function(edges, ne, turn, other, no, _, spanX, spanY)
+  reachPast = function(edges, ne, turn, other, no, _, tolSq)
     local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
     local ia, ib = ne - 1, 1
     local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
@@ -1462,18 +1442,17 @@ if JIT then
         i = i + 2
       else   -- the edge a -> b is done
         if nx ~= 0 or ny ~= 0 then   -- a repeated vertex gives no axis
-          local depth = -lo
-          local tol = 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))   -- projectionTolerance
-          if depth <= tol then
-            if depth < -tol or not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn,
-                                                other, no) then
+          local squaredDepth = lo * (lo / (nx * nx + ny * ny))
+          if squaredDepth <= tolSq then   -- decide exactly
+            if not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn, other, no) then
               return false
             end
-            depth = max(depth, 0.0)
+            if lo > 0 then lo, squaredDepth = 0.0, 0.0 end
+          elseif lo > 0 then   -- surely apart
+            return false
           end
-          local squaredDepth = depth * (depth / (nx * nx + ny * ny))
           if squaredDepth < leastSquared then   -- keep the least
-            leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+            leastSquared, leastOverlap, leastEnd = squaredDepth, -lo, ib
           end
         end
         -- the next edge (after the last, the first again: its normal is never used)
@@ -1487,10 +1466,10 @@ if JIT then
     return leastSquared, leastOverlap, leastEnd
   end
 else
-  reachPast = function(edges, ne, turn, other, no, turnOther, spanX, spanY)
+  reachPast = function(edges, ne, turn, other, no, turnOther, tolSq)
     local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
-    -- the calipers' state for deepestPast: the last deepest vertex of other (0: none yet) and
-    -- the way it moves as the normals turn: forward if other winds like edges
+    -- the calipers: the last deepest vertex of other (0: none yet), and the way it moves as the
+    -- normals turn: forward if other winds like edges
     local deepest, step = 0, turnOther == turn and 2 or -2
     local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
     for ib = 1, ne - 1, 2 do
@@ -1498,19 +1477,31 @@ else
       if bx ~= ax or by ~= ay then   -- a repeated vertex gives no axis
         local nx, ny = (by - ay) * turn, (ax - bx) * turn   -- outward
         local lo
-        deepest, lo = deepestPast(other, no, ax, ay, nx, ny, deepest, step)
-        local depth = -lo
-        -- projectionTolerance, inlined (math.abs and the call cost PUC Lua a third of this loop)
-        local tol = 16 * EPS * (spanX * (nx < 0 and -nx or nx) + spanY * (ny < 0 and -ny or ny))
-        if depth <= tol then
-          if depth < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no) then
-            return false
+        if deepest == 0 then   -- the first edge: every vertex
+          deepest, lo = 1, nx * (other[1] - ax) + ny * (other[2] - ay)
+          for i = 3, no - 1, 2 do
+            local s = nx * (other[i] - ax) + ny * (other[i + 1] - ay)
+            if s < lo then deepest, lo = i, s end
           end
-          if depth < 0 then depth = 0.0 end
+        else   -- walk on while the projection does not rise, at most m - 1 steps of m vertices
+          lo = nx * (other[deepest] - ax) + ny * (other[deepest + 1] - ay)
+          for _ = 3, no, 2 do
+            local k = deepest + step
+            if k > no then k = 1 elseif k < 1 then k = no - 1 end
+            local s = nx * (other[k] - ax) + ny * (other[k + 1] - ay)
+            if s > lo then break end
+            deepest, lo = k, s
+          end
         end
-        local squaredDepth = depth * (depth / (nx * nx + ny * ny))
+        local squaredDepth = lo * (lo / (nx * nx + ny * ny))
+        if squaredDepth <= tolSq then   -- decide exactly
+          if not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no) then return false end
+          if lo > 0 then lo, squaredDepth = 0.0, 0.0 end
+        elseif lo > 0 then   -- surely apart
+          return false
+        end
         if squaredDepth < leastSquared then   -- keep the least
-          leastSquared, leastOverlap, leastEnd = squaredDepth, depth, ib
+          leastSquared, leastOverlap, leastEnd = squaredDepth, -lo, ib
         end
       end
       ax, ay = bx, by
@@ -1705,9 +1696,13 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   end
   local squaredDepth, o, edgeEnd, far, owner, turn, lines, nl
   if both then
-    squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, spanX, spanY)
+    -- reachPast's tolerance, every axis decided exactly where the square would underflow (the
+    -- box of coordinates below about 2^-450 only)
+    local tolSq = 2^-98 * (spanX * spanX + spanY * spanY)   -- (16 eps)^2 (spanX^2 + spanY^2)
+    if tolSq < 2^-1000 then tolSq = huge end
+    squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, tolSq)
     if not squaredDepth then return false end
-    local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, spanX, spanY)
+    local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, tolSq)
     if not squaredDepth2 then return false end
     owner, turn, lines, nl = 1, turn1, p1, n1
     if squaredDepth2 < squaredDepth then   -- keep the least penetration
