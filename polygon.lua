@@ -219,10 +219,23 @@ do
   end
 
   crossExact = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-    local m = abs(ux0 + 0.0)
-    m = max(m, abs(uy0 + 0.0), abs(ux1 + 0.0), abs(uy1 + 0.0))
-    m = max(m, abs(vx0 + 0.0), abs(vy0 + 0.0), abs(vx1 + 0.0), abs(vy1 + 0.0))
-    local s = exactScale(m)
+    local s = 1.0
+    if JIT then
+      local m = abs(ux0 + 0.0)
+      m = max(m, abs(uy0 + 0.0), abs(ux1 + 0.0), abs(uy1 + 0.0))
+      m = max(m, abs(vx0 + 0.0), abs(vy0 + 0.0), abs(vx1 + 0.0), abs(vy1 + 0.0))
+      s = exactScale(m)
+    else   -- every |coordinate| is at most 2^500 (s = 1) when their squares sum to at most
+      -- 2^1000: products instead of ten C calls to abs and max
+      local a, b, c, d = ux0 + 0.0, uy0 + 0.0, ux1 + 0.0, uy1 + 0.0
+      local e, f, g, h = vx0 + 0.0, vy0 + 0.0, vx1 + 0.0, vy1 + 0.0
+      local squares = a * a + b * b + c * c + d * d + e * e + f * f + g * g + h * h
+      if not (squares <= 2^1000) then   -- luacheck: ignore 581 (NaN too)
+        local m = abs(a)
+        m = max(m, abs(b), abs(c), abs(d), abs(e), abs(f), abs(g), abs(h))
+        s = exactScale(m)
+      end
+    end
     local det, detsum, tails
     do
       local axh, axl = twoDiff(ux1 * s, ux0 * s)
