@@ -364,7 +364,8 @@ else
       sum = sum + (px + x) * (y - py)
       if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
       if y < ymin then ymin = y elseif y > ymax then ymax = y end
-      px, py = x, y
+      px = x   -- (not px, py = x, y: one move fewer on Lua 5.4)
+      py = y
     end
     sum = sum + px * (y1 - py)
     local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
@@ -1528,29 +1529,44 @@ else
     local fx, fy = dx - dnx, dy - dny
     local left1, left2 = n1 / 2, n2 / 2
     local back = -turn1
+    local edgeEnd, owner
+    -- (one assignment per statement in this loop: Lua 5.4 gives a multiple assignment a move
+    -- through a temporary per value, which here was a tenth of the loop)
     for _ = 1, left1 + left2 do
       -- the next edge's outward normal n, the least projection lo on it of the other polygon
       -- (from its current vertex), the edge's end and owner; then its polygon moves on
-      local edgeEnd, owner
       local turnOn = (ex * fy - ey * fx) * turn1   -- > 0: f turns on from e
       if left2 == 0 or left1 > 0 and (turnOn > 0 or turnOn == 0 and (fx ~= 0 or fy ~= 0)) then
-        nx, ny = ey * turn1, ex * back
+        nx = ey * turn1
+        ny = ex * back
         lo = nx * (dx - cx) + ny * (dy - cy)
-        edgeEnd, owner = kn, 1
-        left1, cx, cy = left1 - 1, cnx, cny
+        edgeEnd = kn
+        owner = 1
+        left1 = left1 - 1
+        cx = cnx
+        cy = cny
         kn = kn + 2
         if kn > n1 then kn = 1 end
-        cnx, cny = p1[kn] + 0.0, p1[kn + 1] + 0.0
-        ex, ey = cnx - cx, cny - cy
+        cnx = p1[kn] + 0.0
+        cny = p1[kn + 1] + 0.0
+        ex = cnx - cx
+        ey = cny - cy
       else   -- the edge d -> dn of p2, which is -f
-        nx, ny = fy * back, fx * turn1
+        nx = fy * back
+        ny = fx * turn1
         lo = nx * (cx - dx) + ny * (cy - dy)
-        edgeEnd, owner = step > 0 and dn or d, 2
-        left2, d, dx, dy = left2 - 1, dn, dnx, dny
+        edgeEnd = step > 0 and dn or d
+        owner = 2
+        left2 = left2 - 1
+        d = dn
+        dx = dnx
+        dy = dny
         dn = d + step
         if dn > n2 then dn = 1 elseif dn < 1 then dn = n2 - 1 end
-        dnx, dny = p2[dn] + 0.0, p2[dn + 1] + 0.0
-        fx, fy = dx - dnx, dy - dny
+        dnx = p2[dn] + 0.0
+        dny = p2[dn + 1] + 0.0
+        fx = dx - dnx
+        fy = dy - dny
       end
       -- (a repeated vertex gives no axis: n = 0, lo = 0, and the squared depth 0 / 0 is NaN,
       -- which every comparison below passes by)
