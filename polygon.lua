@@ -59,7 +59,7 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- do not overlap, built from TwoSum and TwoProduct (Dekker's split). The exact path allocates
 -- nothing: it reuses one scratch array (and when the differences are exact, the common case,
 -- cross needs no loop at all). Hot loops that inline cross's filter say so where they do it,
--- with the measured reason (insideFilter, lineShortfall, polygonType); they call cross where
+-- with the measured reason (vertexInside, lineShortfall, polygonType); they call cross where
 -- the filter cannot decide, or, in separatingPush, lengthen the push until it can.
 --
 -- LuaJIT and the PUC interpreters want different code: PUC Lua pays for every call (math.min
@@ -1342,67 +1342,58 @@ local function projectionTolerance(spanX, spanY, nx, ny)
   return 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))
 end
 
--- The first pass of vertexInside, over e x (p - c) for the vertices p of points (e already
--- turned by the side's sign): the largest det - bound (> 0: some vertex is certainly inside) and
--- the largest det + bound (<= 0: none can be), bound being cross's error bound, cross's filter
--- inlined (a call per vertex is most of this loop's time on PUC Lua). On LuaJIT with max and
--- abs and no branch: the branches' side exits, taken from traces that had unrolled this loop,
--- failed to compile ("NYI: register coalescing too complex", retried on every call). The two
--- bodies compute the same numbers. No finite subtraction rounds across 0, so the signs of
--- det - bound and det + bound are exact.
-local insideFilter
+-- The SAT engine's one exact fallback: whether a vertex of points lies strictly on the side
+-- `inside` (1 or -1, the sign of the cross product) of the line through c parallel to a -> b
+-- (a and b converted to doubles): whether e x (p - c) has that sign for some vertex p, with e
+-- = b - a turned by it. Cross's filter, inlined, decides almost every vertex: det = l - r is
+-- surely > 0 when det - bound > 0 and surely not when det + bound <= 0 (bound being cross's
+-- error bound; no finite subtraction rounds across 0, so those signs are exact); the vertices
+-- between go to the exact kernel. The sign is multiplied by the sign +-1, never by an area, so
+-- nothing underflows.
+-- Two bodies giving the same answer. On LuaJIT a first pass keeps the largest det - bound and
+-- det + bound with max and abs, no branch (the branches' side exits, taken from traces that had
+-- unrolled this loop, failed to compile: "NYI: register coalescing too complex"), and when it
+-- cannot decide, a second pass with no early exit (an exit in it made LuaJIT abort the loop's
+-- trace, "leaving loop in root trace") sends every vertex to crossExact, whose stage B decides
+-- all but exactly collinear ones with inexact differences (through cross, the vertices near the
+-- line took its filter's side exit, and those side traces failed to compile too). On PUC Lua one
+-- pass returns at the first vertex surely inside, and calls cross only for the vertices the
+-- filter cannot place (on a touching pair's shared edge the second pass took a third of this).
+local vertexInside
 if JIT then
-  insideFilter = function(ex, ey, cx, cy, points, n)
+  vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
+    cx, cy = cx + 0.0, cy + 0.0
+    local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
     local sure, maybe = -huge, -huge
     for i = 1, n - 1, 2 do
       local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
       local det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
       sure, maybe = max(sure, det - bound), max(maybe, det + bound)
     end
-    return sure, maybe
+    if sure > 0 then return true end
+    if maybe <= 0 then return false end
+    local found = 0.0
+    for i = 1, n - 1, 2 do
+      found = max(found, crossExact(ax, ay, bx, by, cx, cy, points[i] + 0.0, points[i + 1] + 0.0)
+        * inside)
+    end
+    return found > 0
   end
 else
-  insideFilter = function(ex, ey, cx, cy, points, n)
-    local sure, maybe = -huge, -huge
+  vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
+    cx, cy = cx + 0.0, cy + 0.0
+    local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
     for i = 1, n - 1, 2 do
-      local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
-      local det, bound = l - r, CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-      if det - bound > sure then sure = det - bound end
-      if det + bound > maybe then maybe = det + bound end
-    end
-    return sure, maybe
-  end
-end
-
--- The SAT engine's one exact fallback: whether a vertex of points lies strictly on the side
--- `inside` (1 or -1, the sign of the cross product) of the line through c parallel to a -> b
--- (a and b converted to doubles). The filter decides almost every call; the vertices it cannot
--- place are decided exactly, in a loop with no early exit (an exit inside it made LuaJIT abort
--- the loop's trace, "leaving loop in root trace"). On LuaJIT that loop sends every vertex to
--- crossExact, whose stage B decides all but exactly collinear ones with inexact differences:
--- through cross, the vertices near the line took its filter's side exit, and the side traces
--- there, inside the SAT's traces, failed to compile ("NYI: register coalescing too complex").
--- The sign is multiplied by the sign +-1, never by an area, so nothing underflows.
-local function vertexInside(ax, ay, bx, by, cx, cy, inside, points, n)
-  cx, cy = cx + 0.0, cy + 0.0
-  local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
-  local sure, maybe = insideFilter(ex, ey, cx, cy, points, n)
-  if sure > 0 then return true end
-  if maybe <= 0 then return false end
-  local found = 0.0
-  for i = 1, n - 1, 2 do
-    local px, py = points[i] + 0.0, points[i + 1] + 0.0
-    if JIT then   -- every vertex through crossExact: no filter branch to leave the loop by
-      found = max(found, crossExact(ax, ay, bx, by, cx, cy, px, py) * inside)
-    else          -- only the vertices the filter cannot place (a call costs PUC Lua)
+      local px, py = points[i] + 0.0, points[i + 1] + 0.0
       local l, r = ex * (py - cy), ey * (px - cx)
-      if l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r)) > 0 then
-        local side = cross(ax, ay, bx, by, cx, cy, px, py) * inside
-        if side > found then found = side end
+      local det, bound = l - r, CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+      if det - bound > 0 then return true end
+      if det + bound > 0 and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
+        return true
       end
     end
+    return false
   end
-  return found > 0
 end
 
 -- The index of a vertex of points deepest on the side `inside` of the edge a -> b, decided
