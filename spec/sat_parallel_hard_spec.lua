@@ -1,8 +1,9 @@
--- Hard cases: convex pairs whose edges are parallel or nearly so, edge against edge. On PUC Lua
--- the SAT walks both polygons' edges at once in the order of their normals' angles, deciding
--- that order by the sign of a rounded cross product, so nearly parallel edges of the two
--- polygons are exactly where the order can come out wrong; ties (exactly parallel edges) are
--- where the least depth must still go to polygon 1, then to the lower edge end.
+-- Hard cases: convex pairs whose edges are parallel or nearly so, edge against edge, and pairs of
+-- many vertices. On PUC Lua the SAT walks both polygons' edges at once in the order of their
+-- normals' angles, deciding that order by the sign of a rounded cross product, so nearly
+-- parallel edges of the two polygons are exactly where the order can come out wrong; ties
+-- (exactly parallel edges) are where the least depth must still go to polygon 1, then to the
+-- lower edge end; and many vertices against few make long runs of one polygon's edges.
 -- A centrally symmetric polygon A (a regular 4-, 6- or 8-gon, or a rectangle) and a copy B of it
 -- turned by a tiny angle about its own centre (0, 1e-16 to 1e-7 radians) and moved along the
 -- normal of one of A's edges so that the two edges overlap, touch, or miss by a few ulps, at
@@ -83,6 +84,53 @@ describe("convex pairs with parallel and nearly parallel edges", function()
     assert(colliding > 150, "too few colliding pairs to say anything: " .. colliding)
     assert(answers.count == 0, answers:message())
     assert(pushes.count == 0, pushes:message())
+    assert(separations.count == 0, separations:message())
+    assert(excesses.count == 0, excesses:message())
+  end)
+
+  it("of many vertices and unequal counts collide and separate as the oracle says", function()
+    -- ellipses of 3 to 40 vertices each (the calipers walk many edges of one polygon between
+    -- two of the other), overlapping deeply, slightly, or pushed out and back by a few ulps
+    local rng = prng.new(90210)
+    local answers = tally.new("polygonsCollide and polygonsCollideV as the oracle says")
+    local separations = tally.new("moved pair apart for the module and the oracle")
+    local excesses = tally.new("push no longer than the exact depth by 8 eps M")
+    local colliding = 0
+    for _, offset in ipairs({ 1, 1e3, 1e6 }) do
+      for _ = 1, 12 do
+        local cx, cy = offset * rng:range(-1, 1), offset * rng:range(-1, 1)
+        local size = rng:range(1, 30)
+        local a = shapes.convex(rng, rng:int(3, 40), cx, cy, size, 0.4)
+        local angle, reach = rng:range(0, 2 * math.pi), rng:range(0.2, 2.2) * size
+        local b = shapes.convex(rng, rng:int(3, 40), cx + reach * math.cos(angle),
+          cy + reach * math.sin(angle), rng:range(0.3, 1.5) * size, 0.4)
+        if rng:int(0, 1) == 1 then b = shapes.reverse(b) end
+        local cases = { { a, b }, { b, a } }
+        local o, dx, dy = polygon.polygonsCollideV(a, b)
+        if o then   -- the pushed copy moved back by a few ulps: overlapping by a hair
+          local step = rng:int(1, 4) * 2 * EPS * shapes.largestMagnitude(a, b)
+          cases[3] = { a, translate(b, dx - (dx > 0 and step or dx < 0 and -step or 0),
+            dy - (dy > 0 and step or dy < 0 and -step or 0)) }
+        end
+        for _, pair in ipairs(cases) do
+          local p, q = pair[1], pair[2]
+          local hit = oracle.collides(p, q, true)
+          local po, pdx, pdy = polygon.polygonsCollideV(p, q)
+          answers:check(polygon.polygonsCollide(p, q) == hit and (po ~= false) == hit, p, q)
+          if po then
+            colliding = colliding + 1
+            local moved = translate(q, pdx, pdy)
+            separations:check(not polygon.polygonsCollide(p, moved)
+              and not oracle.collides(p, moved, true), p, q, pdx, pdy)
+            local big = shapes.largestMagnitude(p, q)
+            excesses:check(oracle.depthAtLeast(p, q, true, po, 8 * EPS * big), p, q, po)
+          end
+        end
+      end
+    end
+    answers:report(); separations:report(); excesses:report()
+    assert(colliding > 40, "too few colliding pairs to say anything: " .. colliding)
+    assert(answers.count == 0, answers:message())
     assert(separations.count == 0, separations:message())
     assert(excesses.count == 0, excesses:message())
   end)
