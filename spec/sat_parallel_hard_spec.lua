@@ -35,14 +35,41 @@ local function symmetric(m, cx, cy, r, a0)
   return points
 end
 
+-- The tallies of one test, and the check of one ordered pair (p, q) against the oracle.
+local function newTallies()
+  return {
+    answers = tally.new("polygonsCollide and polygonsCollideV as the oracle says"),
+    separations = tally.new("moved pair apart for the module and the oracle"),
+    excesses = tally.new("push no longer than the exact depth by 8 eps M"),
+    colliding = 0,
+  }
+end
+
+local function checkPair(t, p, q)
+  local hit = oracle.collides(p, q, true)
+  local o, dx, dy = polygon.polygonsCollideV(p, q)
+  t.answers:check(polygon.polygonsCollide(p, q) == hit and (o ~= false) == hit, p, q)
+  if not o then return end
+  t.colliding = t.colliding + 1
+  local moved = translate(q, dx, dy)
+  t.separations:check(not polygon.polygonsCollide(p, moved)
+    and not oracle.collides(p, moved, true), p, q, dx, dy)
+  local big = shapes.largestMagnitude(p, q)
+  t.excesses:check(oracle.depthAtLeast(p, q, true, o, 8 * EPS * big), p, q, o)
+end
+
+local function assertTallies(t, least)
+  t.answers:report(); t.separations:report(); t.excesses:report()
+  assert(t.colliding > least, "too few colliding pairs to say anything: " .. t.colliding)
+  assert(t.answers.count == 0, t.answers:message())
+  assert(t.separations.count == 0, t.separations:message())
+  assert(t.excesses.count == 0, t.excesses:message())
+end
+
 describe("convex pairs with parallel and nearly parallel edges", function()
   it("collide, and are pushed apart in one step, as the oracle says", function()
     local rng = prng.new(7051)
-    local answers = tally.new("polygonsCollide as the oracle says")
-    local pushes = tally.new("polygonsCollideV: false exactly when not colliding")
-    local separations = tally.new("moved pair apart for the module and the oracle")
-    local excesses = tally.new("push no longer than the exact depth by 8 eps M")
-    local colliding = 0
+    local t = newTallies()
     for _, offset in ipairs({ 1, 1e3, 1e6, 1e9 }) do
       for _, turn in ipairs({ 0, 1e-16, 1e-13, 1e-10, 1e-7 }) do
         for _ = 1, 3 do
@@ -61,41 +88,20 @@ describe("convex pairs with parallel and nearly parallel edges", function()
             local reach = 2 * apothem + gap
             local b = symmetric(m, cx + reach * nx, cy + reach * ny, r, a0 + turn)
             if rng:int(0, 1) == 1 then b = shapes.reverse(b) end
-            for _, pair in ipairs({ { a, b }, { b, a } }) do
-              local p, q = pair[1], pair[2]
-              local hit = oracle.collides(p, q, true)
-              answers:check(polygon.polygonsCollide(p, q) == hit, p, q)
-              local o, dx, dy = polygon.polygonsCollideV(p, q)
-              pushes:check((o ~= false) == hit, p, q)
-              if o then
-                colliding = colliding + 1
-                local moved = translate(q, dx, dy)
-                separations:check(not polygon.polygonsCollide(p, moved)
-                  and not oracle.collides(p, moved, true), p, q, dx, dy)
-                local big = shapes.largestMagnitude(p, q)
-                excesses:check(oracle.depthAtLeast(p, q, true, o, 8 * EPS * big), p, q, o)
-              end
-            end
+            checkPair(t, a, b)
+            checkPair(t, b, a)
           end
         end
       end
     end
-    answers:report(); pushes:report(); separations:report(); excesses:report()
-    assert(colliding > 150, "too few colliding pairs to say anything: " .. colliding)
-    assert(answers.count == 0, answers:message())
-    assert(pushes.count == 0, pushes:message())
-    assert(separations.count == 0, separations:message())
-    assert(excesses.count == 0, excesses:message())
+    assertTallies(t, 150)
   end)
 
   it("of many vertices and unequal counts collide and separate as the oracle says", function()
     -- ellipses of 3 to 40 vertices each (the calipers walk many edges of one polygon between
     -- two of the other), overlapping deeply, slightly, or pushed out and back by a few ulps
     local rng = prng.new(90210)
-    local answers = tally.new("polygonsCollide and polygonsCollideV as the oracle says")
-    local separations = tally.new("moved pair apart for the module and the oracle")
-    local excesses = tally.new("push no longer than the exact depth by 8 eps M")
-    local colliding = 0
+    local t = newTallies()
     for _, offset in ipairs({ 1, 1e3, 1e6 }) do
       for _ = 1, 12 do
         local cx, cy = offset * rng:range(-1, 1), offset * rng:range(-1, 1)
@@ -112,27 +118,10 @@ describe("convex pairs with parallel and nearly parallel edges", function()
           cases[3] = { a, translate(b, dx - (dx > 0 and step or dx < 0 and -step or 0),
             dy - (dy > 0 and step or dy < 0 and -step or 0)) }
         end
-        for _, pair in ipairs(cases) do
-          local p, q = pair[1], pair[2]
-          local hit = oracle.collides(p, q, true)
-          local po, pdx, pdy = polygon.polygonsCollideV(p, q)
-          answers:check(polygon.polygonsCollide(p, q) == hit and (po ~= false) == hit, p, q)
-          if po then
-            colliding = colliding + 1
-            local moved = translate(q, pdx, pdy)
-            separations:check(not polygon.polygonsCollide(p, moved)
-              and not oracle.collides(p, moved, true), p, q, pdx, pdy)
-            local big = shapes.largestMagnitude(p, q)
-            excesses:check(oracle.depthAtLeast(p, q, true, po, 8 * EPS * big), p, q, po)
-          end
-        end
+        for _, pair in ipairs(cases) do checkPair(t, pair[1], pair[2]) end
       end
     end
-    answers:report(); separations:report(); excesses:report()
-    assert(colliding > 40, "too few colliding pairs to say anything: " .. colliding)
-    assert(answers.count == 0, answers:message())
-    assert(separations.count == 0, separations:message())
-    assert(excesses.count == 0, excesses:message())
+    assertTallies(t, 40)
   end)
 
   it("give a tie of equal depths to the first polygon, then to its lower edge end", function()
