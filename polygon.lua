@@ -860,17 +860,22 @@ if JIT then
   end
 else
   -- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
-  -- function with a branchy loop, one comparison per vertex in the common case. The turns at
+  -- function with a branchy loop, one comparison per turn in the common case. The turns at
   -- the last vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y
   -- so that every turn of a convex polygon is positive, and a second turn against it ends the
   -- call early (most concave polygons turn both ways within their first few vertices). The loop
-  -- is not unrolled: unrolled by two (no moves of the vertex and edge, but a start that depends
-  -- on the parity of the vertex count) it took 1.06 to 1.08 times as long on Lua 5.4, in 61
-  -- interleaved rounds on bench/workloads.lua's ordinary polygons. The filter
-  -- bounds every |l + r| by the square root of the sum of their squares and compares squares
-  -- (NaN or overflow only make it fail; squares that underflow come with an lo that does too).
+  -- takes two turns per step, the second writing the vertex and edge the first reads, so no
+  -- value is moved; with an odd number of vertices one turn is left after it. The vertex the
+  -- first turn reads is not converted (its differences with the converted one convert it).
+  -- The filter bounds every |l + r| by the square root of the sum of their squares and
+  -- compares squares (NaN or overflow only make it fail; squares that underflow come with an
+  -- lo that does too). Windings are counted without a direction variable: with every turn
+  -- positive and below a half turn, the edges' direction turns one way and leaves the half
+  -- plane dx > 0 exactly once per winding (a turn cannot cross the half plane dx <= 0, a half
+  -- turn wide), so the turns from an edge with dx > 0 to one with dx <= 0 count the windings.
   polygonType = function(points)
-    local n = type(points) == "table" and #points or -1
+    if type(points) ~= "table" then checkPoints(points, "polygonType") end
+    local n = #points
     if n % 2 ~= 0 then checkPoints(points, "polygonType") end
     if n < 6 then return nil end
     local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
@@ -889,17 +894,11 @@ else
     local firstTurn = s
     local e = l + r   -- the first turn's error bound is CROSS_BOUND |e|
     local firstBound = e * e
-    -- dir has the sign of the x direction of the last edge before vertex 1 that has one; only
-    -- the signs of products fx * dir are read, which in the exact range are at least 2^-998
-    -- (a NaN dir leaves a NaN coordinate that the turns carry to the careful walk)
-    local dir = ex
-    if dir == 0 then
-      dir = (points[n - 3] + 0.0) - points[n - 5]
-      if dir == 0 then s = 0 end
-    end
     -- A turn s <= 0 (or NaN) ends the walk: concave when it and the first turn are certain,
-    -- as is a first turn of 0 or NaN or no x direction.
+    -- as is a first turn of 0 or NaN.
     if s > 0 then
+      local windings = 0
+      if fx <= 0 and ex > 0 then windings = 1 end
       cx = points[3] + 0.0   -- the turn at vertex 1, from edge f to edge e
       cy = points[4] * ySign
       ex = cx - qx
@@ -908,15 +907,13 @@ else
       r = fy * ex
       s = l - r
       if s > 0 then
-        local flips = 0
-        if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
         local lo = firstTurn
         if s < lo then lo = s end
         e = l + r
         local errSq = firstBound + e * e
-        if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
-        for i = 5, n - 1, 2 do
-          qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
+        if ex <= 0 and fx > 0 then windings = windings + 1 end
+        for i = 5, n - 3, 4 do
+          qx = points[i]               -- the turn at c, from edge e to edge f
           qy = points[i + 1] * ySign
           fx = qx - cx
           fy = qy - cy
@@ -929,23 +926,46 @@ else
           end
           e = l + r
           errSq = errSq + e * e
-          if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
-          cx = qx
-          cy = qy
-          ex = fx
-          ey = fy
+          if fx <= 0 and ex > 0 then windings = windings + 1 end
+          cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
+          cy = points[i + 3] * ySign
+          ex = cx - qx
+          ey = cy - qy
+          l = fx * ey
+          r = fy * ex
+          s = l - r
+          if s < lo then
+            if not (s > 0) then break end   -- luacheck: ignore 581
+            lo = s
+          end
+          e = l + r
+          errSq = errSq + e * e
+          if ex <= 0 and fx > 0 then windings = windings + 1 end
+        end
+        if n % 4 == 2 and s > 0 then   -- an odd number of vertices: the turn at m - 1 is left
+          qx = points[n - 1]
+          qy = points[n] * ySign
+          fx = qx - cx
+          fy = qy - cy
+          l = ex * fy
+          r = ey * fx
+          s = l - r
+          if s < lo then lo = s end
+          e = l + r
+          errSq = errSq + e * e
+          if fx <= 0 and ex > 0 then windings = windings + 1 end
         end
         if s > 0 and lo * lo > TURN_BOUND_SQ * errSq then
-          if flips == 2 then return "convex" end
+          if windings == 1 then return "convex" end
           return "concave"
         end
       end
-      if not (s > 0) then   -- luacheck: ignore 581
-        -- both turns certain (compared squared: underflow or overflow only fails the test)
-        e = l + r
-        if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
-          return "concave"
-        end
+    end
+    if not (s > 0) then   -- luacheck: ignore 581
+      -- both turns certain (compared squared: underflow or overflow only fails the test)
+      e = l + r
+      if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
+        return "concave"
       end
     end
     local kind = typeCareful(points, n)
