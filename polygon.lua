@@ -618,52 +618,50 @@ function polygon.polygonAreaAccurate(points)
   local m = n / 2
   if m <= 64 and not JIT then
     -- First, on PUC Lua for up to 64 vertices, a cheaper error-free split (Rump, Ogita and Oishi's
-    -- ExtractScalar): with quanta qx, qy, powers of two near 2^-20 times the polygon's size,
+    -- ExtractScalar): with a quantum q, a power of two near 2^-20 times the polygon's size,
     -- (v + sigma) - sigma for sigma = 2^53 q is v rounded to a multiple of q, exactly, and the
     -- rest v - that is exact and at most q, while |v| <= sigma / 2. Twice the area is
     -- sum over edges i -> j of (X_i + X_j)(y_j - y_i), X = x - (x_1 rounded): of the rounded
-    -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of qx and qy, and so is
-    -- every sum of their products, while below 2^53 qx qy: that sum is exact. The rest,
+    -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of q, and so is every
+    -- sum of their products, while below 2^53 q^2: that sum is exact. The rest,
     -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point. About
-    -- 28 instructions per vertex against Dot2's 43 below (Lua 5.4; 406 per call against 468
-    -- on bench/workloads.lua's ordinary polygons, 2.95 times polygonArea's time against 3.23 in
-    -- lua5.4 bench/run.lua --only '^polygonAreaAccurate [of]'). On LuaJIT, where Dot2 meets
+    -- 24 instructions per vertex against Dot2's 42 below (Lua 5.4). On LuaJIT, where Dot2 meets
     -- its target on these polygons, the side traces leaving this loop aborted ("NYI: register
     -- coalescing too complex") and calls ran a thousand times as long. The tests after the
     -- loop (sums of squares, Cauchy-Schwarz) prove that every rounded part was exact and that
-    -- the float part is off by less than a quarter ulp of the result; otherwise (quanta guessed badly from
-    -- vertices 1, m and the middle one, a sliver, a polygon far from the origin for its size,
-    -- NaN) Dot2 below decides.
+    -- the float part is off by less than a quarter ulp of the result; otherwise (a quantum
+    -- guessed badly from vertices 1, m and the middle one, a sliver, a polygon far from the
+    -- origin for its size, NaN) Dot2 below decides. One quantum serves both axes: with one per
+    -- axis the guess cost 20 more instructions a call, and a polygon far narrower than long
+    -- only fails the tests sooner.
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
-    local gx, gy = points[k] - x1, points[k + 1] - y1
-    local ex, ey = points[n - 1] - x1, points[n] - y1
-    if gx < 0 then gx = -gx end   -- (abs is a call on PUC Lua)
-    if gy < 0 then gy = -gy end
-    if ex < 0 then gx = gx - ex else gx = gx + ex end
-    if ey < 0 then gy = gy - ey else gy = gy + ey end
-    -- the three vertices may line up along one axis: no guess below 2^-6 of the other
-    if gx < gy * 2^-6 then gx = gy * 2^-6 elseif gy < gx * 2^-6 then gy = gx * 2^-6 end
-    if gx >= 2^-120 and gx <= 2^120 and gy >= 2^-120 and gy <= 2^120 then
+    -- the guess g = |x_k - x_1| + |y_k - y_1| + |x_m - x_1| + |y_m - y_1| (abs is a call on PUC)
+    local g = points[k] - x1
+    if g < 0 then g = -g end
+    local d = points[k + 1] - y1
+    if d < 0 then g = g - d else g = g + d end
+    d = points[n - 1] - x1
+    if d < 0 then g = g - d else g = g + d end
+    d = points[n] - y1
+    if d < 0 then g = g - d else g = g + d end
+    if g >= 2^-120 and g <= 2^120 then
       -- the power of two above g: (g 2^53 + g) - g 2^53 rounds to it, or to 0 when g is one
-      local t = gx * 2^53
-      local qx = (t + gx) - t
-      if qx == 0 then qx = gx end
-      t = gy * 2^53
-      local qy = (t + gy) - t
-      if qy == 0 then qy = gy end
-      qx, qy = qx * 2^-20, qy * 2^-20
-      local sigmaX, sigmaY = qx * 2^53, qy * 2^53
-      local x0h = (x1 + sigmaX) - sigmaX
+      local t = g * 2^53
+      local q = (t + g) - t
+      if q == 0 then q = g end
+      q = q * 2^-20
+      local sigma = q * 2^53
+      local x0h = (x1 + sigma) - sigma
       -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
       local x, y = points[n - 1], points[n]
-      local xh, yh = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+      local xh, yh = (x + sigma) - sigma, (y + sigma) - sigma
       local xHi, xLo, yLo = xh - x0h, x - xh, y - yh
       local hi, lo, sSq, dSq = 0.0, 0.0, 0.0, 0.0
       local start = 1
       if m % 2 == 1 then   -- an odd number of edges: one before the pairs
         x, y = points[1], points[2]
-        local x2h, y2h = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+        local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
         local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
         local sh, dh = xHi + x2Hi, y2h - yh
         local dl = y2Lo - yLo
@@ -671,44 +669,43 @@ function polygon.polygonAreaAccurate(points)
         sSq, dSq = sh * sh, dh * dh
         xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
       end
-      -- two edges per step (no moves between them; one addition to each sum per step)
+      -- two edges per step, the second writing the parts the first reads (no moves), one
+      -- addition to each sum per step
       for i = start, n - 3, 4 do
         x = points[i]
         y = points[i + 1]
-        local x2h, y2h = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+        local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
         local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
         local sh, dh = xHi + x2Hi, y2h - yh
         local dl = y2Lo - yLo
+        local lo1 = sh * dl + (xLo + x2Lo) * (dh + dl)
         x = points[i + 2]
         y = points[i + 3]
-        xh = (x + sigmaX) - sigmaX
-        local y3h = (y + sigmaY) - sigmaY
-        local x3Hi, x3Lo, y3Lo = xh - x0h, x - xh, y - y3h
-        local sh2, dh2 = x2Hi + x3Hi, y3h - y2h
-        local dl2 = y3Lo - y2Lo
+        xh = (x + sigma) - sigma
+        yh = (y + sigma) - sigma
+        xHi = xh - x0h
+        xLo = x - xh
+        yLo = y - yh
+        local sh2, dh2 = x2Hi + xHi, yh - y2h
+        local dl2 = yLo - y2Lo
         hi = hi + (sh * dh + sh2 * dh2)
-        lo = lo + ((sh * dl + (xLo + x2Lo) * (dh + dl)) + (sh2 * dl2 + (x2Lo + x3Lo) * (dh2 + dl2)))
+        lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
         sSq = sSq + (sh * sh + sh2 * sh2)
         dSq = dSq + (dh * dh + dh2 * dh2)
-        xHi = x3Hi
-        xLo = x3Lo
-        yh = y3h
-        yLo = y3Lo
       end
       local twice = hi + lo
-      local qxSq, qySq = qx * qx, qy * qy
-      -- Every |X| and |y - y_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1,
-      -- below sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is
-      -- then below sigma / 2, and every sh, dh exact. sum |sh dh| <= sqrt(sSq dSq) <= 2^50
-      -- qx qy keeps every partial sum of hi exact. The float part's error is below
-      -- (m + 6) eps B, B = 2 qy sum |sh| + 2 qx sum |dh| + 4 m qx qy (|yl|, |Xl| <= q; m
-      -- additions and 6 roundings per term); B^2 <= 12 m (qy^2 sSq + qx^2 dSq + 4 m qx^2 qy^2),
-      -- and 4 (m + 6) B <= |twice| is tested squared, 16 * 12 rounded up to 256. The
-      -- factors of 4 between 2^50 and 2^53 cover the rounding of the sums of squares.
-      if x1 * x1 + m * sSq <= 2^100 * qxSq and y1 * y1 + m * dSq <= 2^100 * qySq
-        and sSq * dSq <= 2^100 * (qxSq * qySq)
-        and 256 * (m + 6) * (m + 6) * m * (qySq * sSq + qxSq * dSq + 4 * m * qxSq * qySq)
-          < twice * twice then
+      local qSq = q * q
+      -- Every |Xh| and |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from
+      -- vertex 1, below sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every
+      -- |v| is then below sigma / 2, and every sh, dh exact. sum |sh dh| <= sqrt(sSq dSq) <=
+      -- 2^50 q^2 keeps every partial sum of hi exact. The float part's error is below
+      -- (m + 6) eps B, B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 (|yl|, |Xl| <= q; m
+      -- additions and 6 roundings per term); B^2 <= 12 m q^2 (sSq + dSq + 4 m q^2), and
+      -- 4 (m + 6) B <= |twice| is tested squared, 16 * 12 rounded up to 256. The factors of 4
+      -- between 2^50 and 2^53 cover the rounding of the sums of squares.
+      local limit = 2^100 * qSq
+      if x1 * x1 + m * sSq <= limit and y1 * y1 + m * dSq <= limit and sSq * dSq <= limit * qSq
+        and 256 * (m + 6) * (m + 6) * m * qSq * (sSq + dSq + 4 * m * qSq) < twice * twice then
         return (twice < 0 and -twice or twice) * 0.5
       end
     end
