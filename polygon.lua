@@ -625,25 +625,23 @@ function polygon.polygonAreaAccurate(points)
     -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of q, and so is every
     -- sum of their products, while below 2^53 q^2: that sum is exact. The rest,
     -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point. About
-    -- 24 instructions per vertex against Dot2's 42 below (Lua 5.4). On LuaJIT, where Dot2 meets
+    -- 26 instructions per vertex against Dot2's 42 below (Lua 5.4). On LuaJIT, where Dot2 meets
     -- its target on these polygons, the side traces leaving this loop aborted ("NYI: register
     -- coalescing too complex") and calls ran a thousand times as long. The tests after the
     -- loop (sums of squares, Cauchy-Schwarz) prove that every rounded part was exact and that
     -- the float part is off by less than a quarter ulp of the result; otherwise (a quantum
-    -- guessed badly from vertices 1, m and the middle one, a sliver, a polygon far from the
-    -- origin for its size, NaN) Dot2 below decides. One quantum serves both axes: with one per
-    -- axis the guess cost 20 more instructions a call, and a polygon far narrower than long
-    -- only fails the tests sooner.
+    -- guessed badly from vertex 1 and the middle one, a sliver, a polygon far from the origin
+    -- for its size, NaN) Dot2 below decides. One quantum serves both axes, guessed from one
+    -- pair of vertices: from two pairs (1 and m too) the guess cost 10 more Lua 5.4
+    -- instructions a call (368 against 358 on bench/workloads.lua's ordinary polygons, each of
+    -- which passes the tests either way); a polygon far narrower than long, or whose middle
+    -- vertex lies near vertex 1, only fails the tests sooner.
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
-    -- the guess g = |x_k - x_1| + |y_k - y_1| + |x_m - x_1| + |y_m - y_1| (abs is a call on PUC)
+    -- the guess g = |x_k - x_1| + |y_k - y_1| (abs is a call on PUC)
     local g = points[k] - x1
     if g < 0 then g = -g end
     local d = points[k + 1] - y1
-    if d < 0 then g = g - d else g = g + d end
-    d = points[n - 1] - x1
-    if d < 0 then g = g - d else g = g + d end
-    d = points[n] - y1
     if d < 0 then g = g - d else g = g + d end
     if g >= 2^-120 and g <= 2^120 then
       -- the power of two above g: (g 2^53 + g) - g 2^53 rounds to it, or to 0 when g is one
@@ -657,7 +655,7 @@ function polygon.polygonAreaAccurate(points)
       local x, y = points[n - 1], points[n]
       local xh, yh = (x + sigma) - sigma, (y + sigma) - sigma
       local xHi, xLo, yLo = xh - x0h, x - xh, y - yh
-      local hi, lo, sSq, dSq = 0.0, 0.0, 0.0, 0.0
+      local hi, lo, sqSum = 0.0, 0.0, 0.0   -- sqSum: the sum of sh^2 + dh^2
       local start = 1
       if m % 2 == 1 then   -- an odd number of edges: one before the pairs
         x, y = points[1], points[2]
@@ -666,7 +664,7 @@ function polygon.polygonAreaAccurate(points)
         local sh, dh = xHi + x2Hi, y2h - yh
         local dl = y2Lo - yLo
         hi, lo = sh * dh, sh * dl + (xLo + x2Lo) * (dh + dl)
-        sSq, dSq = sh * sh, dh * dh
+        sqSum = sh * sh + dh * dh
         xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
       end
       -- two edges per step, the second writing the parts the first reads (no moves), one
@@ -690,22 +688,22 @@ function polygon.polygonAreaAccurate(points)
         local dl2 = yLo - y2Lo
         hi = hi + (sh * dh + sh2 * dh2)
         lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
-        sSq = sSq + (sh * sh + sh2 * sh2)
-        dSq = dSq + (dh * dh + dh2 * dh2)
+        sqSum = sqSum + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
       end
       local twice = hi + lo
       local qSq = q * q
-      -- Every |Xh| and |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from
-      -- vertex 1, below sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every
-      -- |v| is then below sigma / 2, and every sh, dh exact. sum |sh dh| <= sqrt(sSq dSq) <=
-      -- 2^50 q^2 keeps every partial sum of hi exact. The float part's error is below
-      -- (m + 6) eps B, B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 (|yl|, |Xl| <= q; m
-      -- additions and 6 roundings per term); B^2 <= 12 m q^2 (sSq + dSq + 4 m q^2), and
-      -- 4 (m + 6) B <= |twice| is tested squared, 16 * 12 rounded up to 256. The factors of 4
-      -- between 2^50 and 2^53 cover the rounding of the sums of squares.
+      -- With sSq = sum sh^2 and dSq = sum dh^2 (sqSum = sSq + dSq): every |Xh| and
+      -- |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1, below
+      -- sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is then
+      -- below sigma / 2, and every sh, dh exact (the first test). sum |sh dh| <= sqrt(sSq dSq)
+      -- <= sqSum / 2 <= 2^50 q^2 keeps every partial sum of hi exact (the second). The float
+      -- part's error is below (m + 6) eps B, B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 (|yl|,
+      -- |Xl| <= q; m additions and 6 roundings per term); B^2 <= 12 m q^2 (sqSum + 4 m q^2),
+      -- and 4 (m + 6) B <= |twice| is tested squared, 16 * 12 rounded up to 256 (the third).
+      -- The factors of 4 between 2^50 and 2^53 cover the rounding of the sums of squares.
       local limit = 2^100 * qSq
-      if x1 * x1 + m * sSq <= limit and y1 * y1 + m * dSq <= limit and sSq * dSq <= limit * qSq
-        and 256 * (m + 6) * (m + 6) * m * qSq * (sSq + dSq + 4 * m * qSq) < twice * twice then
+      if x1 * x1 + y1 * y1 + m * sqSum <= limit and sqSum <= 2^51 * qSq
+        and 256 * (m + 6) * (m + 6) * m * qSq * (sqSum + 4 * m * qSq) < twice * twice then
         return (twice < 0 and -twice or twice) * 0.5
       end
     end
