@@ -598,8 +598,8 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- On PUC Lua, for up to 64 vertices, first an error-free split (below), whose tests after its
--- loop say whether it is within the bound; otherwise, and always on LuaJIT:
+-- On PUC Lua, and on LuaJIT beyond 64 vertices, first an error-free split (below), whose tests
+-- after its loop say whether it is within the bound; otherwise (and on LuaJIT up to 64 vertices):
 -- a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
 -- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
@@ -616,18 +616,22 @@ function polygon.polygonAreaAccurate(points)
   local n = #points
   if n < 6 then return nil end
   local m = n / 2
-  if m <= 64 and not JIT then
-    -- First, on PUC Lua for up to 64 vertices, a cheaper error-free split (Rump, Ogita and Oishi's
-    -- ExtractScalar): with a quantum q, a power of two near 2^-20 times the polygon's size,
+  if not JIT or m > 64 then
+    -- First a cheaper error-free split (Rump, Ogita and Oishi's ExtractScalar), on PUC Lua and
+    -- on LuaJIT beyond 64 vertices: with a quantum q, a power of two near 2^-20 (2^-21 beyond
+    -- 64 vertices) times the polygon's size,
     -- (v + sigma) - sigma for sigma = 2^53 q is v rounded to a multiple of q, exactly, and the
     -- rest v - that is exact and at most q, while |v| <= sigma / 2. Twice the area is
     -- sum over edges i -> j of (X_i + X_j)(y_j - y_i), X = x - (x_1 rounded): of the rounded
     -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of q, and so is every
     -- sum of their products, while below 2^53 q^2: that sum is exact. The rest,
     -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point. About
-    -- 26 instructions per vertex against Dot2's 42 below (Lua 5.4). On LuaJIT, where Dot2 meets
-    -- its target on these polygons, the side traces leaving this loop aborted ("NYI: register
-    -- coalescing too complex") and calls ran a thousand times as long. The tests after the
+    -- 26 instructions per vertex against Dot2's 42 below (Lua 5.4; at 1,000 vertices 28 a vertex
+    -- with the blocks below, against polygonArea's 9.5). On LuaJIT, where Dot2 meets its target
+    -- up to 16 vertices, the side traces leaving this loop aborted on such short polygons ("NYI:
+    -- register coalescing too complex") and calls ran a thousand times as long; at 1,000
+    -- vertices the split takes 3.7 us against Dot2's 5.5 (luajit, bench/workloads.lua's large
+    -- polygons), and the exits are rare. The tests after the
     -- loop (sums of squares, Cauchy-Schwarz) prove that every rounded part was exact and that
     -- the float part is off by less than a quarter ulp of the result; otherwise (a quantum
     -- guessed badly from vertex 1 and the middle one, a sliver, a polygon far from the origin
@@ -648,14 +652,17 @@ function polygon.polygonAreaAccurate(points)
       local t = g * 2^53
       local q = (t + g) - t
       if q == 0 then q = g end
-      q = q * 2^-20
+      -- 2^-20 of the guess; 2^-21 beyond 64 vertices, where the third test (below) grows
+      -- with m and needs the finer quantum for the benchmark's stars of 1,000 vertices
+      if m > 64 then q = q * 2^-21 else q = q * 2^-20 end
       local sigma = q * 2^53
       local x0h = (x1 + sigma) - sigma
       -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
       local x, y = points[n - 1], points[n]
       local xh, yh = (x + sigma) - sigma, (y + sigma) - sigma
       local xHi, xLo, yLo = xh - x0h, x - xh, y - yh
-      local hi, lo, sqSum = 0.0, 0.0, 0.0   -- sqSum: the sum of sh^2 + dh^2
+      -- hi, lo and sqB (the sum of sh^2 + dh^2) of the current block of edges
+      local hi, lo, sqB = 0.0, 0.0, 0.0
       local start = 1
       if m % 2 == 1 then   -- an odd number of edges: one before the pairs
         x, y = points[1], points[2]
@@ -664,46 +671,105 @@ function polygon.polygonAreaAccurate(points)
         local sh, dh = xHi + x2Hi, y2h - yh
         local dl = y2Lo - yLo
         hi, lo = sh * dh, sh * dl + (xLo + x2Lo) * (dh + dl)
-        sqSum = sh * sh + dh * dh
+        sqB = sh * sh + dh * dh
         xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
       end
-      -- two edges per step, the second writing the parts the first reads (no moves), one
-      -- addition to each sum per step
-      for i = start, n - 3, 4 do
-        x = points[i]
-        y = points[i + 1]
-        local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
-        local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
-        local sh, dh = xHi + x2Hi, y2h - yh
-        local dl = y2Lo - yLo
-        local lo1 = sh * dl + (xLo + x2Lo) * (dh + dl)
-        x = points[i + 2]
-        y = points[i + 3]
-        xh = (x + sigma) - sigma
-        yh = (y + sigma) - sigma
-        xHi = xh - x0h
-        xLo = x - xh
-        yLo = y - yh
-        local sh2, dh2 = x2Hi + xHi, yh - y2h
-        local dl2 = yLo - y2Lo
-        hi = hi + (sh * dh + sh2 * dh2)
-        lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
-        sqSum = sqSum + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
+      -- twice the area, the sum of every sh^2 + dh^2 and the largest sqB of a block
+      local twice, sqSum, sqMax
+      if m <= 64 then   -- one block
+        -- two edges per step, the second writing the parts the first reads (no moves), one
+        -- addition to each sum per step
+        for i = start, n - 3, 4 do
+          x = points[i]
+          y = points[i + 1]
+          local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
+          local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
+          local sh, dh = xHi + x2Hi, y2h - yh
+          local dl = y2Lo - yLo
+          local lo1 = sh * dl + (xLo + x2Lo) * (dh + dl)
+          x = points[i + 2]
+          y = points[i + 3]
+          xh = (x + sigma) - sigma
+          yh = (y + sigma) - sigma
+          xHi = xh - x0h
+          xLo = x - xh
+          yLo = y - yh
+          local sh2, dh2 = x2Hi + xHi, yh - y2h
+          local dl2 = yLo - y2Lo
+          hi = hi + (sh * dh + sh2 * dh2)
+          lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
+          sqB = sqB + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
+        end
+        twice, sqSum, sqMax = hi + lo, sqB, sqB
+      else
+        -- Blocks of 16 edges (17 for the first with an odd number of edges), each block's hi
+        -- and lo added exactly (TwoSum) to sum + err: a block sums as the one above (the same
+        -- steps, written out again: a call per block cost the small polygons 20 instructions).
+        local sum, err, top = 0.0, 0.0, 0.0   -- top: the sum of every |hi| and |lo| added
+        sqSum, sqMax = 0.0, 0.0
+        local stop = start + 28   -- the block's eighth step
+        while true do
+          if stop > n - 3 then stop = n - 3 end
+          for i = start, stop, 4 do
+            x = points[i]
+            y = points[i + 1]
+            local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
+            local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
+            local sh, dh = xHi + x2Hi, y2h - yh
+            local dl = y2Lo - yLo
+            local lo1 = sh * dl + (xLo + x2Lo) * (dh + dl)
+            x = points[i + 2]
+            y = points[i + 3]
+            xh = (x + sigma) - sigma
+            yh = (y + sigma) - sigma
+            xHi = xh - x0h
+            xLo = x - xh
+            yLo = y - yh
+            local sh2, dh2 = x2Hi + xHi, yh - y2h
+            local dl2 = yLo - y2Lo
+            hi = hi + (sh * dh + sh2 * dh2)
+            lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
+            sqB = sqB + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
+          end
+          local part = sum + hi   -- sum + hi = part + (TwoSum error), then the same for lo
+          local bv = part - sum
+          err = err + ((sum - (part - bv)) + (hi - bv))
+          sum = part + lo
+          bv = sum - part
+          err = err + ((part - (sum - bv)) + (lo - bv))
+          top = top + (hi < 0 and -hi or hi) + (lo < 0 and -lo or lo)
+          sqSum = sqSum + sqB
+          if sqB > sqMax then sqMax = sqB end
+          if stop == n - 3 then break end
+          hi, lo, sqB = 0.0, 0.0, 0.0
+          start = stop + 4
+          stop = stop + 32
+        end
+        twice = sum + err
+        -- err's own roundings: at most f = m / 4 + 4 additions (four per block) of terms
+        -- below eps top each, so below f^2 eps^2 top; kept below eps |twice| / 64, which the
+        -- third test's rounding up leaves room for (and NaN fails this)
+        local f = m / 4 + 4
+        if not (f * f * top <= 2^47 * (twice < 0 and -twice or twice)) then   -- luacheck: ignore 581
+          twice = 0.0   -- the third test fails: Dot2 below decides
+        end
       end
-      local twice = hi + lo
       local qSq = q * q
-      -- With sSq = sum sh^2 and dSq = sum dh^2 (sqSum = sSq + dSq): every |Xh| and
-      -- |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1, below
+      local b = m > 64 and 17 or m   -- the most edges in a block
+      -- With sSq = sum sh^2 and dSq = sum dh^2 over all edges (sqSum = sSq + dSq): every |Xh|
+      -- and |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1, below
       -- sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is then
-      -- below sigma / 2, and every sh, dh exact (the first test). sum |sh dh| <= sqrt(sSq dSq)
-      -- <= sqSum / 2 <= 2^50 q^2 keeps every partial sum of hi exact (the second). The float
-      -- part's error is below (m + 6) eps B, B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 (|yl|,
-      -- |Xl| <= q; m additions and 6 roundings per term); B^2 <= 12 m q^2 (sqSum + 4 m q^2),
-      -- and 4 (m + 6) B <= |twice| is tested squared, 16 * 12 rounded up to 256 (the third).
-      -- The factors of 4 between 2^50 and 2^53 cover the rounding of the sums of squares.
+      -- below sigma / 2, and every sh, dh exact (the first test). In each block
+      -- sum |sh dh| <= sqrt(sSq dSq) <= sqB / 2 <= 2^50 q^2 keeps every partial sum of its hi
+      -- exact (the second). The float part's error is below (b + 6) eps B, b the most edges
+      -- in a block (b additions and 6 roundings per term; the blocks' sums are added exactly),
+      -- B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 over all edges (|yl|, |Xl| <= q);
+      -- B^2 <= 12 m q^2 (sqSum + 4 m q^2), and 4 (b + 6) B <= |twice| is tested squared,
+      -- 16 * 12 rounded up to 256 (the third). The factors of 4 between 2^50 and 2^53 cover
+      -- the rounding of the sums of squares.
       local limit = 2^100 * qSq
-      if x1 * x1 + y1 * y1 + m * sqSum <= limit and sqSum <= 2^51 * qSq
-        and 256 * (m + 6) * (m + 6) * m * qSq * (sqSum + 4 * m * qSq) < twice * twice then
+      if x1 * x1 + y1 * y1 + m * sqSum <= limit and sqMax <= 2^51 * qSq
+        and 256 * (b + 6) * (b + 6) * m * qSq * (sqSum + 4 * m * qSq) < twice * twice then
         return (twice < 0 and -twice or twice) * 0.5
       end
     end
