@@ -161,7 +161,8 @@ end)
 -- catch every case where the guess was wrong (the other vertices far beyond the guessed size,
 -- so that the rounded sums are not exact), where the polygon lies far from the origin for its
 -- size (the rounding is then no longer exact), and where the small parts' float sum is too
--- rough for one ulp (slivers, very flat boxes); the answer is within one ulp of the exact area either way.
+-- rough for one ulp (slivers, very flat boxes); the answer is within one ulp of the exact area
+-- either way.
 describe("polygonAreaAccurate's split path against the exact area", function()
   local function polygonOf(r, kind, mLo, mHi)
     local m, p = r:int(mLo or 3, mHi or 64), {}
