@@ -618,7 +618,7 @@ function polygon.polygonAreaAccurate(points)
   local m = n / 2
   if not JIT or m > 64 then
     -- First a cheaper error-free split (Rump, Ogita and Oishi's ExtractScalar), on PUC Lua and
-    -- on LuaJIT beyond 64 vertices: with a quantum q, a power of two near 2^-20 (2^-21 beyond
+    -- on LuaJIT beyond 64 vertices: with a quantum q, a power of two near 2^-20 (2^-22 beyond
     -- 64 vertices) times the polygon's size,
     -- (v + sigma) - sigma for sigma = 2^53 q is v rounded to a multiple of q, exactly, and the
     -- rest v - that is exact and at most q, while |v| <= sigma / 2. Twice the area is
@@ -652,9 +652,10 @@ function polygon.polygonAreaAccurate(points)
       local t = g * 2^53
       local q = (t + g) - t
       if q == 0 then q = g end
-      -- 2^-20 of the guess; 2^-21 beyond 64 vertices, where the third test (below) grows
-      -- with m and needs the finer quantum for the benchmark's stars of 1,000 vertices
-      if m > 64 then q = q * 2^-21 else q = q * 2^-20 end
+      -- 2^-20 of the guess; 2^-22 beyond 64 vertices, where the third test (below) grows
+      -- with m and the block's length and needs the finer quantum for the benchmark's stars of
+      -- 1,000 vertices
+      if m > 64 then q = q * 2^-22 else q = q * 2^-20 end
       local sigma = q * 2^53
       local x0h = (x1 + sigma) - sigma
       -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
@@ -702,12 +703,12 @@ function polygon.polygonAreaAccurate(points)
         end
         twice, sqSum, sqMax = hi + lo, sqB, sqB
       else
-        -- Blocks of 16 edges (17 for the first with an odd number of edges), each block's hi
+        -- Blocks of 32 edges (33 for the first with an odd number of edges), each block's hi
         -- and lo added exactly (TwoSum) to sum + err: a block sums as the one above (the same
         -- steps, written out again: a call per block cost the small polygons 20 instructions).
-        local sum, err, top = 0.0, 0.0, 0.0   -- top: the sum of every |hi| and |lo| added
+        local sum, err = 0.0, 0.0
         sqSum, sqMax = 0.0, 0.0
-        local stop = start + 28   -- the block's eighth step
+        local stop = start + 60   -- the block's sixteenth step
         while true do
           if stop > n - 3 then stop = n - 3 end
           for i = start, stop, 4 do
@@ -737,25 +738,27 @@ function polygon.polygonAreaAccurate(points)
           sum = part + lo
           bv = sum - part
           err = err + ((part - (sum - bv)) + (lo - bv))
-          top = top + (hi < 0 and -hi or hi) + (lo < 0 and -lo or lo)
           sqSum = sqSum + sqB
           if sqB > sqMax then sqMax = sqB end
           if stop == n - 3 then break end
           hi, lo, sqB = 0.0, 0.0, 0.0
           start = stop + 4
-          stop = stop + 32
+          stop = stop + 64
         end
         twice = sum + err
-        -- err's own roundings: at most f = m / 4 + 4 additions (four per block) of terms
-        -- below eps top each, so below f^2 eps^2 top; kept below eps |twice| / 64, which the
-        -- third test's rounding up leaves room for (and NaN fails this)
-        local f = m / 4 + 4
-        if not (f * f * top <= 2^47 * (twice < 0 and -twice or twice)) then   -- luacheck: ignore 581
+        -- err's own roundings: at most f = m / 8 + 4 additions (four per block) of terms below
+        -- eps top each, top the sum of every |hi| and |lo| added: |hi| <= sqB / 2 (as below)
+        -- and each term of lo is below 2 q |sh| + 2 q |dh| + 4 q^2 <= sh^2 + dh^2 + 6 q^2, so
+        -- top <= 2 sqSum + 8 m q^2 (rounding included). So they are below f^2 eps^2 top, kept
+        -- below eps |twice| / 64, which the third test's rounding up leaves room for (NaN fails)
+        local f = m / 8 + 4
+        local errBound = f * f * (2 * sqSum + 8 * m * q * q)
+        if not (errBound <= 2^47 * (twice < 0 and -twice or twice)) then   -- luacheck: ignore 581
           twice = 0.0   -- the third test fails: Dot2 below decides
         end
       end
       local qSq = q * q
-      local b = m > 64 and 17 or m   -- the most edges in a block
+      local b = m > 64 and 33 or m   -- the most edges in a block
       -- With sSq = sum sh^2 and dSq = sum dh^2 over all edges (sqSum = sSq + dSq): every |Xh|
       -- and |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1, below
       -- sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is then
