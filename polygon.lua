@@ -598,8 +598,8 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- On PUC Lua, and on LuaJIT beyond 64 vertices, first an error-free split (below), whose tests
--- after its loop say whether it is within the bound; otherwise (and on LuaJIT up to 64 vertices):
+-- Up to 2,048 vertices on PUC Lua, and from 65 to 2,048 on LuaJIT, first an error-free split
+-- (below), whose tests after its loop say whether it is within the bound; otherwise:
 -- a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
 -- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
@@ -616,7 +616,8 @@ function polygon.polygonAreaAccurate(points)
   local n = #points
   if n < 6 then return nil end
   local m = n / 2
-  if not JIT or m > 64 then
+  -- (beyond 2,048 vertices the third test below, growing as m^2, fails for most polygons)
+  if (not JIT or m > 64) and m <= 2048 then
     -- First a cheaper error-free split (Rump, Ogita and Oishi's ExtractScalar), on PUC Lua and
     -- on LuaJIT beyond 64 vertices: with a quantum q, a power of two near 2^-20 (2^-22 beyond
     -- 64 vertices) times the polygon's size,
