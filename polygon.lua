@@ -616,8 +616,8 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- On PUC Lua, for up to 64 vertices, first an error-free split (below), whose tests after its
--- loop say whether it is within the bound; otherwise, and always on LuaJIT:
+-- Up to 2,048 vertices on PUC Lua, and from 65 to 2,048 on LuaJIT, first an error-free split
+-- (below), whose tests after its loop say whether it is within the bound; otherwise:
 -- a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
 -- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
@@ -634,99 +634,164 @@ function polygon.polygonAreaAccurate(points)
   local n = #points
   if n < 6 then return nil end
   local m = n / 2
-  if m <= 64 and not JIT then
-    -- First, on PUC Lua for up to 64 vertices, a cheaper error-free split (Rump, Ogita and Oishi's
-    -- ExtractScalar): with quanta qx, qy, powers of two near 2^-20 times the polygon's size,
+  -- (beyond 2,048 vertices the third test below, growing as m^2, fails for most polygons)
+  if (not JIT or m > 64) and m <= 2048 then
+    -- First a cheaper error-free split (Rump, Ogita and Oishi's ExtractScalar), on PUC Lua and
+    -- on LuaJIT beyond 64 vertices: with a quantum q, a power of two near 2^-20 (2^-22 beyond
+    -- 64 vertices) times the polygon's size,
     -- (v + sigma) - sigma for sigma = 2^53 q is v rounded to a multiple of q, exactly, and the
     -- rest v - that is exact and at most q, while |v| <= sigma / 2. Twice the area is
     -- sum over edges i -> j of (X_i + X_j)(y_j - y_i), X = x - (x_1 rounded): of the rounded
-    -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of qx and qy, and so is
-    -- every sum of their products, while below 2^53 qx qy: that sum is exact. The rest,
+    -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of q, and so is every
+    -- sum of their products, while below 2^53 q^2: that sum is exact. The rest,
     -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point. About
-    -- 28 instructions per vertex against Dot2's 43 below (Lua 5.4; 406 per call against 468
-    -- on bench/workloads.lua's ordinary polygons, 2.95 times polygonArea's time against 3.23 in
-    -- lua5.4 bench/run.lua --only '^polygonAreaAccurate [of]'). On LuaJIT, where Dot2 meets
-    -- its target on these polygons, the side traces leaving this loop aborted ("NYI: register
-    -- coalescing too complex") and calls ran a thousand times as long. The tests after the
+    -- 26 instructions per vertex against Dot2's 42 below (Lua 5.4; at 1,000 vertices 28 a vertex
+    -- with the blocks below, against polygonArea's 9.5). On LuaJIT, where Dot2 meets its target
+    -- up to 16 vertices, the side traces leaving this loop aborted on such short polygons ("NYI:
+    -- register coalescing too complex") and calls ran a thousand times as long; at 1,000
+    -- vertices the split takes 3.7 us against Dot2's 5.5 (luajit, bench/workloads.lua's large
+    -- polygons), and the exits are rare. The tests after the
     -- loop (sums of squares, Cauchy-Schwarz) prove that every rounded part was exact and that
-    -- the float part is off by less than a quarter ulp of the result; otherwise (quanta guessed badly from
-    -- vertices 1, m and the middle one, a sliver, a polygon far from the origin for its size,
-    -- NaN) Dot2 below decides.
+    -- the float part is off by less than a quarter ulp of the result; otherwise (a quantum
+    -- guessed badly from vertex 1 and the middle one, a sliver, a polygon far from the origin
+    -- for its size, NaN) Dot2 below decides. One quantum serves both axes, guessed from one
+    -- pair of vertices: from two pairs (1 and m too) the guess cost 10 more Lua 5.4
+    -- instructions a call (368 against 358 on bench/workloads.lua's ordinary polygons, each of
+    -- which passes the tests either way); a polygon far narrower than long, or whose middle
+    -- vertex lies near vertex 1, only fails the tests sooner.
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
-    local gx, gy = points[k] - x1, points[k + 1] - y1
-    local ex, ey = points[n - 1] - x1, points[n] - y1
-    if gx < 0 then gx = -gx end   -- (abs is a call on PUC Lua)
-    if gy < 0 then gy = -gy end
-    if ex < 0 then gx = gx - ex else gx = gx + ex end
-    if ey < 0 then gy = gy - ey else gy = gy + ey end
-    -- the three vertices may line up along one axis: no guess below 2^-6 of the other
-    if gx < gy * 2^-6 then gx = gy * 2^-6 elseif gy < gx * 2^-6 then gy = gx * 2^-6 end
-    if gx >= 2^-120 and gx <= 2^120 and gy >= 2^-120 and gy <= 2^120 then
+    -- the guess g = |x_k - x_1| + |y_k - y_1| (abs is a call on PUC)
+    local g = points[k] - x1
+    if g < 0 then g = -g end
+    local d = points[k + 1] - y1
+    if d < 0 then g = g - d else g = g + d end
+    if g >= 2^-120 and g <= 2^120 then
       -- the power of two above g: (g 2^53 + g) - g 2^53 rounds to it, or to 0 when g is one
-      local t = gx * 2^53
-      local qx = (t + gx) - t
-      if qx == 0 then qx = gx end
-      t = gy * 2^53
-      local qy = (t + gy) - t
-      if qy == 0 then qy = gy end
-      qx, qy = qx * 2^-20, qy * 2^-20
-      local sigmaX, sigmaY = qx * 2^53, qy * 2^53
-      local x0h = (x1 + sigmaX) - sigmaX
+      local t = g * 2^53
+      local q = (t + g) - t
+      if q == 0 then q = g end
+      -- 2^-20 of the guess; 2^-22 beyond 64 vertices, where the third test (below) grows
+      -- with m and the block's length and needs the finer quantum for the benchmark's stars of
+      -- 1,000 vertices
+      if m > 64 then q = q * 2^-22 else q = q * 2^-20 end
+      local sigma = q * 2^53
+      local x0h = (x1 + sigma) - sigma
       -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
       local x, y = points[n - 1], points[n]
-      local xh, yh = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+      local xh, yh = (x + sigma) - sigma, (y + sigma) - sigma
       local xHi, xLo, yLo = xh - x0h, x - xh, y - yh
-      local hi, lo, sSq, dSq = 0.0, 0.0, 0.0, 0.0
+      -- hi, lo and sqB (the sum of sh^2 + dh^2) of the current block of edges
+      local hi, lo, sqB = 0.0, 0.0, 0.0
       local start = 1
       if m % 2 == 1 then   -- an odd number of edges: one before the pairs
         x, y = points[1], points[2]
-        local x2h, y2h = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
+        local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
         local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
         local sh, dh = xHi + x2Hi, y2h - yh
         local dl = y2Lo - yLo
         hi, lo = sh * dh, sh * dl + (xLo + x2Lo) * (dh + dl)
-        sSq, dSq = sh * sh, dh * dh
+        sqB = sh * sh + dh * dh
         xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
       end
-      -- two edges per step (no moves between them; one addition to each sum per step)
-      for i = start, n - 3, 4 do
-        x = points[i]
-        y = points[i + 1]
-        local x2h, y2h = (x + sigmaX) - sigmaX, (y + sigmaY) - sigmaY
-        local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
-        local sh, dh = xHi + x2Hi, y2h - yh
-        local dl = y2Lo - yLo
-        x = points[i + 2]
-        y = points[i + 3]
-        xh = (x + sigmaX) - sigmaX
-        local y3h = (y + sigmaY) - sigmaY
-        local x3Hi, x3Lo, y3Lo = xh - x0h, x - xh, y - y3h
-        local sh2, dh2 = x2Hi + x3Hi, y3h - y2h
-        local dl2 = y3Lo - y2Lo
-        hi = hi + (sh * dh + sh2 * dh2)
-        lo = lo + ((sh * dl + (xLo + x2Lo) * (dh + dl)) + (sh2 * dl2 + (x2Lo + x3Lo) * (dh2 + dl2)))
-        sSq = sSq + (sh * sh + sh2 * sh2)
-        dSq = dSq + (dh * dh + dh2 * dh2)
-        xHi = x3Hi
-        xLo = x3Lo
-        yh = y3h
-        yLo = y3Lo
+      -- twice the area, the sum of every sh^2 + dh^2 and the largest sqB of a block
+      local twice, sqSum, sqMax
+      if m <= 64 then   -- one block
+        -- two edges per step, the second writing the parts the first reads (no moves), one
+        -- addition to each sum per step
+        for i = start, n - 3, 4 do
+          x = points[i]
+          y = points[i + 1]
+          local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
+          local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
+          local sh, dh = xHi + x2Hi, y2h - yh
+          local dl = y2Lo - yLo
+          local lo1 = sh * dl + (xLo + x2Lo) * (dh + dl)
+          x = points[i + 2]
+          y = points[i + 3]
+          xh = (x + sigma) - sigma
+          yh = (y + sigma) - sigma
+          xHi = xh - x0h
+          xLo = x - xh
+          yLo = y - yh
+          local sh2, dh2 = x2Hi + xHi, yh - y2h
+          local dl2 = yLo - y2Lo
+          hi = hi + (sh * dh + sh2 * dh2)
+          lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
+          sqB = sqB + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
+        end
+        twice, sqSum, sqMax = hi + lo, sqB, sqB
+      else
+        -- Blocks of 32 edges (33 for the first with an odd number of edges), each block's hi
+        -- and lo added exactly (TwoSum) to sum + err: a block sums as the one above (the same
+        -- steps, written out again: a call per block cost the small polygons 20 instructions).
+        local sum, err = 0.0, 0.0
+        sqSum, sqMax = 0.0, 0.0
+        local stop = start + 60   -- the block's sixteenth step
+        while true do
+          if stop > n - 3 then stop = n - 3 end
+          for i = start, stop, 4 do
+            x = points[i]
+            y = points[i + 1]
+            local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
+            local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
+            local sh, dh = xHi + x2Hi, y2h - yh
+            local dl = y2Lo - yLo
+            local lo1 = sh * dl + (xLo + x2Lo) * (dh + dl)
+            x = points[i + 2]
+            y = points[i + 3]
+            xh = (x + sigma) - sigma
+            yh = (y + sigma) - sigma
+            xHi = xh - x0h
+            xLo = x - xh
+            yLo = y - yh
+            local sh2, dh2 = x2Hi + xHi, yh - y2h
+            local dl2 = yLo - y2Lo
+            hi = hi + (sh * dh + sh2 * dh2)
+            lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
+            sqB = sqB + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
+          end
+          local part = sum + hi   -- sum + hi = part + (TwoSum error), then the same for lo
+          local bv = part - sum
+          err = err + ((sum - (part - bv)) + (hi - bv))
+          sum = part + lo
+          bv = sum - part
+          err = err + ((part - (sum - bv)) + (lo - bv))
+          sqSum = sqSum + sqB
+          if sqB > sqMax then sqMax = sqB end
+          if stop == n - 3 then break end
+          hi, lo, sqB = 0.0, 0.0, 0.0
+          start = stop + 4
+          stop = stop + 64
+        end
+        twice = sum + err
+        -- err's own roundings: at most f = m / 8 + 4 additions (four per block) of terms below
+        -- eps top each, top the sum of every |hi| and |lo| added: |hi| <= sqB / 2 (as below)
+        -- and each term of lo is below 2 q |sh| + 2 q |dh| + 4 q^2 <= sh^2 + dh^2 + 6 q^2, so
+        -- top <= 2 sqSum + 8 m q^2 (rounding included). So they are below f^2 eps^2 top, kept
+        -- below eps |twice| / 64, which the third test's rounding up leaves room for (NaN fails)
+        local f = m / 8 + 4
+        local errBound = f * f * (2 * sqSum + 8 * m * q * q)
+        if not (errBound <= 2^47 * (twice < 0 and -twice or twice)) then   -- luacheck: ignore 581
+          twice = 0.0   -- the third test fails: Dot2 below decides
+        end
       end
-      local twice = hi + lo
-      local qxSq, qySq = qx * qx, qy * qy
-      -- Every |X| and |y - y_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1,
-      -- below sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is
-      -- then below sigma / 2, and every sh, dh exact. sum |sh dh| <= sqrt(sSq dSq) <= 2^50
-      -- qx qy keeps every partial sum of hi exact. The float part's error is below
-      -- (m + 6) eps B, B = 2 qy sum |sh| + 2 qx sum |dh| + 4 m qx qy (|yl|, |Xl| <= q; m
-      -- additions and 6 roundings per term); B^2 <= 12 m (qy^2 sSq + qx^2 dSq + 4 m qx^2 qy^2),
-      -- and 4 (m + 6) B <= |twice| is tested squared, 16 * 12 rounded up to 256. The
-      -- factors of 4 between 2^50 and 2^53 cover the rounding of the sums of squares.
-      if x1 * x1 + m * sSq <= 2^100 * qxSq and y1 * y1 + m * dSq <= 2^100 * qySq
-        and sSq * dSq <= 2^100 * (qxSq * qySq)
-        and 256 * (m + 6) * (m + 6) * m * (qySq * sSq + qxSq * dSq + 4 * m * qxSq * qySq)
-          < twice * twice then
+      local qSq = q * q
+      local b = m > 64 and 33 or m   -- the most edges in a block
+      -- With sSq = sum sh^2 and dSq = sum dh^2 over all edges (sqSum = sSq + dSq): every |Xh|
+      -- and |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1, below
+      -- sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is then
+      -- below sigma / 2, and every sh, dh exact (the first test). In each block
+      -- sum |sh dh| <= sqrt(sSq dSq) <= sqB / 2 <= 2^50 q^2 keeps every partial sum of its hi
+      -- exact (the second). The float part's error is below (b + 6) eps B, b the most edges
+      -- in a block (b additions and 6 roundings per term; the blocks' sums are added exactly),
+      -- B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 over all edges (|yl|, |Xl| <= q);
+      -- B^2 <= 12 m q^2 (sqSum + 4 m q^2), and 4 (b + 6) B <= |twice| is tested squared,
+      -- 16 * 12 rounded up to 256 (the third). The factors of 4 between 2^50 and 2^53 cover
+      -- the rounding of the sums of squares.
+      local limit = 2^100 * qSq
+      if x1 * x1 + y1 * y1 + m * sqSum <= limit and sqMax <= 2^51 * qSq
+        and 256 * (b + 6) * (b + 6) * m * qSq * (sqSum + 4 * m * qSq) < twice * twice then
         return (twice < 0 and -twice or twice) * 0.5
       end
     end
@@ -846,11 +911,33 @@ if JIT then
   -- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
   -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
   -- NaN or infinite, so nothing is certain.
+  -- The turns at the last vertex and at vertex 1 are taken before the loop, and when they
+  -- disagree the call ends there, as on PUC Lua (44 of the 100 stars among bench/run.lua's
+  -- ordinary polygons end there). Only four sums cross that branch: its side
+  -- trace inherits little (with the first turns' differences and products alive there too it
+  -- failed to compile in 1 of 4 runs, "NYI: register coalescing too complex").
   local function typeFiltered(points, n)
     local cx, cy = points[n - 1], points[n]
     local ex, ey = cx - points[n - 3], cy - points[n - 2]
-    local lo, hi, errSum, dirAgree = huge, -huge, 0, 0
-    for i = 1, n - 1, 2 do
+    local lo, hi, errSum, dirAgree
+    do
+      local qx, qy = points[1], points[2]
+      local fx, fy = qx - cx, qy - cy
+      local gx, gy = points[3] - qx, points[4] - qy
+      local l, r = ex * fy, ey * fx
+      local l2, r2 = fx * gy, fy * gx
+      local s, s2 = l - r, l2 - r2   -- the turns at the last vertex and at vertex 1
+      lo, hi, errSum = min(s, s2), max(s, s2), abs(l + r) + abs(l2 + r2)
+      dirAgree = min(1, max(-1, ex * fx * 2^1000)) + min(1, max(-1, fx * gx * 2^1000))
+    end
+    if lo * hi < 0 then
+      local bound = CROSS_BOUND * errSum
+      if lo < -bound and hi > bound then return "concave" end
+      return false
+    end
+    cx, cy = points[3], points[4]
+    ex, ey = cx - points[1], cy - points[2]
+    for i = 5, n - 1, 2 do
       local qx, qy = points[i], points[i + 1]
       local fx, fy = qx - cx, qy - cy
       local l, r = ex * fy, ey * fx
@@ -878,17 +965,27 @@ if JIT then
   end
 else
   -- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
-  -- function with a branchy loop, one comparison per vertex in the common case. The turns at
+  -- function with a branchy loop, one comparison per turn in the common case. The turns at
   -- the last vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y
   -- so that every turn of a convex polygon is positive, and a second turn against it ends the
   -- call early (most concave polygons turn both ways within their first few vertices). The loop
-  -- is not unrolled: unrolled by two (no moves of the vertex and edge, but a start that depends
-  -- on the parity of the vertex count) it took 1.06 to 1.08 times as long on Lua 5.4, in 61
-  -- interleaved rounds on bench/workloads.lua's ordinary polygons. The filter
-  -- bounds every |l + r| by the square root of the sum of their squares and compares squares
-  -- (NaN or overflow only make it fail; squares that underflow come with an lo that does too).
+  -- takes two turns per step, the second writing the vertex and edge the first reads, so no
+  -- value is moved; with an odd number of vertices one turn is left after it. The vertex the
+  -- first turn reads is not converted (its differences with the converted one convert it).
+  -- The filter bounds every |l + r| by the square root of the sum of their squares and
+  -- compares squares (NaN or overflow only make it fail; squares that underflow come with an
+  -- lo that does too). Windings are counted without a direction variable: with every turn
+  -- positive and below a half turn, the edges' direction turns one way and leaves the half
+  -- plane dx > 0 exactly once per winding (a turn cannot cross the half plane dx <= 0, a half
+  -- turn wide), so the turns from an edge with dx > 0 to one with dx <= 0 count the windings.
+  -- Lua 5.4 instructions per call on bench/workloads.lua's ordinary polygons (a debug.sethook
+  -- count hook): 180 with one turn per step, its moves and a direction variable, 153 so (the
+  -- tutorial's 132), lua5.4 bench/run.lua --only '^polygonType ord$' 1.5-1.6 -> 1.35-1.4;
+  -- walking a polygon with a negative first turn backwards instead of flipping y took 167
+  -- (a longer start than the loop saves on 4 to 16 vertices).
   polygonType = function(points)
-    local n = type(points) == "table" and #points or -1
+    if type(points) ~= "table" then checkPoints(points, "polygonType") end
+    local n = #points
     if n % 2 ~= 0 then checkPoints(points, "polygonType") end
     if n < 6 then return nil end
     local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
@@ -907,17 +1004,11 @@ else
     local firstTurn = s
     local e = l + r   -- the first turn's error bound is CROSS_BOUND |e|
     local firstBound = e * e
-    -- dir has the sign of the x direction of the last edge before vertex 1 that has one; only
-    -- the signs of products fx * dir are read, which in the exact range are at least 2^-998
-    -- (a NaN dir leaves a NaN coordinate that the turns carry to the careful walk)
-    local dir = ex
-    if dir == 0 then
-      dir = (points[n - 3] + 0.0) - points[n - 5]
-      if dir == 0 then s = 0 end
-    end
     -- A turn s <= 0 (or NaN) ends the walk: concave when it and the first turn are certain,
-    -- as is a first turn of 0 or NaN or no x direction.
+    -- as is a first turn of 0 or NaN.
     if s > 0 then
+      local windings = 0
+      if fx <= 0 and ex > 0 then windings = 1 end
       cx = points[3] + 0.0   -- the turn at vertex 1, from edge f to edge e
       cy = points[4] * ySign
       ex = cx - qx
@@ -926,15 +1017,13 @@ else
       r = fy * ex
       s = l - r
       if s > 0 then
-        local flips = 0
-        if fx * dir <= 0 and fx ~= 0 then flips = 1; dir = -dir end
         local lo = firstTurn
         if s < lo then lo = s end
         e = l + r
         local errSq = firstBound + e * e
-        if ex * dir <= 0 and ex ~= 0 then flips = flips + 1; dir = -dir end
-        for i = 5, n - 1, 2 do
-          qx = points[i] + 0.0         -- the turn at c, from edge e to edge f
+        if ex <= 0 and fx > 0 then windings = windings + 1 end
+        for i = 5, n - 3, 4 do
+          qx = points[i]               -- the turn at c, from edge e to edge f
           qy = points[i + 1] * ySign
           fx = qx - cx
           fy = qy - cy
@@ -947,23 +1036,46 @@ else
           end
           e = l + r
           errSq = errSq + e * e
-          if fx * dir <= 0 and fx ~= 0 then flips = flips + 1; dir = -dir end
-          cx = qx
-          cy = qy
-          ex = fx
-          ey = fy
+          if fx <= 0 and ex > 0 then windings = windings + 1 end
+          cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
+          cy = points[i + 3] * ySign
+          ex = cx - qx
+          ey = cy - qy
+          l = fx * ey
+          r = fy * ex
+          s = l - r
+          if s < lo then
+            if not (s > 0) then break end   -- luacheck: ignore 581
+            lo = s
+          end
+          e = l + r
+          errSq = errSq + e * e
+          if ex <= 0 and fx > 0 then windings = windings + 1 end
+        end
+        if n % 4 == 2 and s > 0 then   -- an odd number of vertices: the turn at m - 1 is left
+          qx = points[n - 1]
+          qy = points[n] * ySign
+          fx = qx - cx
+          fy = qy - cy
+          l = ex * fy
+          r = ey * fx
+          s = l - r
+          if s < lo then lo = s end
+          e = l + r
+          errSq = errSq + e * e
+          if fx <= 0 and ex > 0 then windings = windings + 1 end
         end
         if s > 0 and lo * lo > TURN_BOUND_SQ * errSq then
-          if flips == 2 then return "convex" end
+          if windings == 1 then return "convex" end
           return "concave"
         end
       end
-      if not (s > 0) then   -- luacheck: ignore 581
-        -- both turns certain (compared squared: underflow or overflow only fails the test)
-        e = l + r
-        if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
-          return "concave"
-        end
+    end
+    if not (s > 0) then   -- luacheck: ignore 581
+      -- both turns certain (compared squared: underflow or overflow only fails the test)
+      e = l + r
+      if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
+        return "concave"
       end
     end
     local kind = typeCareful(points, n)

@@ -156,15 +156,16 @@ describe("polygonAreaAccurate against the exact area", function()
   end)
 end)
 
--- The split path (up to 64 vertices): coordinates rounded to multiples of quanta guessed from
--- vertices 1, m and the middle one. Its tests after the loop must catch every case where the
--- guess was wrong (the other vertices far beyond the guessed size, so that the rounded sums are
--- not exact), where the polygon lies far from the origin for its size (the rounding is then no
--- longer exact), and where the small parts' float sum is too rough for one ulp (slivers, very
--- flat boxes); the answer is within one ulp of the exact area either way.
+-- The split path: coordinates rounded to multiples of a quantum guessed from vertex 1 and the
+-- middle one, beyond 64 vertices summed in blocks of 16 edges. Its tests after the loop must
+-- catch every case where the guess was wrong (the other vertices far beyond the guessed size,
+-- so that the rounded sums are not exact), where the polygon lies far from the origin for its
+-- size (the rounding is then no longer exact), and where the small parts' float sum is too
+-- rough for one ulp (slivers, very flat boxes); the answer is within one ulp of the exact area
+-- either way.
 describe("polygonAreaAccurate's split path against the exact area", function()
-  local function polygonOf(r, kind)
-    local m, p = r:int(3, 64), {}
+  local function polygonOf(r, kind, mLo, mHi)
+    local m, p = r:int(mLo or 3, mHi or 64), {}
     local size = 2 ^ r:int(-40, 40) * (0.5 + r:float())
     local ox = (r:float() - 0.5) * 2 ^ r:int(-10, 60)
     local oy = (r:float() - 0.5) * 2 ^ r:int(-10, 60)
@@ -205,6 +206,10 @@ describe("polygonAreaAccurate's split path against the exact area", function()
 
   it("is within one ulp on guess-breaking, far, flat, sliver, regular and star polygons", function()
     checkGenerated(20261122, 1000, function(r, i) return polygonOf(r, i % 5) end)
+  end)
+
+  it("is within one ulp on the same kinds of 65 to 1,200 vertices (summed in blocks)", function()
+    checkGenerated(8675309, 150, function(r, i) return polygonOf(r, i % 5, 65, 1200) end)
   end)
 
   it("is within one ulp on small integer grids far out (exact products everywhere)", function()

@@ -1,8 +1,10 @@
--- Hard cases for polygonType's first turns: the filter decides the turns at the last vertex and
--- at vertex 1 before its loop (the PUC interpreters end the call there when they disagree), takes
--- an x direction from the last edges, and starts its loop differently for odd and even vertex
--- counts. Every case is checked in every rotation of its vertex order (so that each vertex in
--- turn is the first) and in both windings, against the exact oracle (spec/support/oracle.lua).
+-- Hard cases for polygonType's filter: the PUC interpreters decide the turns at the last vertex
+-- and at vertex 1 before their loop (and end the call there when they disagree), take two turns
+-- per loop step and leave one after the loop for odd vertex counts; every body counts how often
+-- the edges' x direction changes sign (once per winding each way), where an edge with dx = 0
+-- may fall anywhere. Every case is checked in every rotation of its vertex order (so that each
+-- vertex in turn is the first) and in both windings, against the exact oracle
+-- (spec/support/oracle.lua).
 local polygon = require "polygon"
 local oracle = require "oracle"
 local prng = require "prng"
@@ -77,6 +79,55 @@ describe("polygonType in every rotation and winding", function()
       table.insert(p, k + 2, my)
       table.insert(p, k + 2, mx)
       mismatches(p, bad)
+    end
+    assert.are.same({}, bad)
+  end)
+
+  it("agrees with the oracle on stars that wind around two to six times", function()
+    -- the regular star {m/k}: m points on a circle, visited every k-th, turns all one way and
+    -- winding k times. The lower half of the circle mirrors the upper (x_(m-j) = x_j exactly),
+    -- so an edge from vertex j to vertex m - j is vertical (dx = 0) wherever it falls.
+    local bad = {}
+    for m = 5, 14 do
+      local xs, ys = {}, {}
+      for j = 0, math.floor(m / 2) do
+        local t = 2 * math.pi * j / m
+        xs[j], ys[j] = 100 * math.cos(t), 100 * math.sin(t)
+        xs[m - j], ys[m - j] = xs[j], -ys[j]
+      end
+      ys[0] = 0.0
+      for k = 1, math.floor((m - 1) / 2) do
+        local a, b = m, k   -- visits every vertex once when gcd(m, k) = 1
+        while b > 0 do a, b = b, a % b end
+        if a == 1 then
+          local p = {}
+          for i = 0, m - 1 do
+            local v = i * k % m
+            p[#p + 1], p[#p + 2] = xs[v] + 7, ys[v] - 3
+          end
+          mismatches(p, bad)
+        end
+      end
+    end
+    assert.are.same({}, bad)
+  end)
+
+  it("agrees with the oracle on axis-aligned outlines traversed once, twice and three times", function()
+    local bad = {}
+    local outlines = {
+      { 0, 0, 10, 0, 10, 10, 0, 10 },                         -- square
+      { 0, 1, 1, 0, 2, 0, 3, 1, 3, 2, 2, 3, 1, 3, 0, 2 },     -- octagon: 4 axis-aligned edges
+      { 0, 0, 2, -1, 4, 0, 4, 2, 2, 3, 0, 2 },                -- hexagon: two vertical edges
+      { 0, 0, 4, 0, 4, 4, 2, 6, 0, 4 },                       -- house (odd): two vertical edges
+    }
+    for _, outline in ipairs(outlines) do
+      for times = 1, 3 do
+        local p = {}
+        for _ = 1, times do
+          for i = 1, #outline do p[#p + 1] = outline[i] end
+        end
+        mismatches(p, bad)
+      end
     end
     assert.are.same({}, bad)
   end)
