@@ -3545,10 +3545,10 @@ end
 
 -- The preparation each list of parts gets on first use, kept while the list lives (weak keys):
 -- per part a copy of its coordinates, its bounding box, its area sign and its outward unit edge
--- normals, and which of its edges are internal: internal[k][e] is 1 when the edge of part k
--- from vertex e to vertex e + 1 (the last to the first) is covered by edges of other parts
--- running the opposite way along the same line (shared with the neighbours, whole or in pieces),
--- else 0 (numbers, not true and nil: on LuaJIT a load whose type varies is a side exit).
+-- normals, and which of its edges are internal: internal[k][i] is 1 when the edge of part k
+-- ending at vertex index i (odd; from the vertex before, the last for the first) is covered by
+-- edges of other parts running the opposite way along the same line (shared with the
+-- neighbours, whole or in pieces), else 0 (numbers, not true and nil: on LuaJIT a load whose type varies is a side exit).
 -- Keeping it right. Reading every coordinate on every call costs as much as the pair tests a
 -- call needs, so each call checks, per part, only its table, its length and the four
 -- coordinates on its box (the vertices that gave xmin, ymin, xmax, ymax). That is exact for a
@@ -3664,7 +3664,7 @@ local function prepareParts(fname, argname, parts)
     local copy = {}
     for i = 1, n do copy[i] = part[i] end
     local flags = {}
-    for e = 1, n / 2 do flags[e] = 0 end
+    for i = 1, n - 1, 2 do flags[i] = 0 end
     info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
     info.tables[k], info.checked[k] = part, 0
     if not partBox(info, k, part, n) then
@@ -3715,7 +3715,10 @@ local function prepareParts(fname, argname, parts)
     if #E.covers > 0 then
       local onX = E.ax ~= E.bx
       local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
-      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = 1 end
+      if covered(E.covers, lo, hi) then   -- the edge ends at vertex e % (n / 2) + 1
+        local n = info.lengths[E.k]
+        info.internal[E.k][2 * (E.e % (n / 2)) + 1] = 1
+      end
     end
   end
   preparedParts[parts] = info
@@ -3807,7 +3810,7 @@ end
 -- The two views of flat arrays (one per argument), refilled on every call. `pending`: the area
 -- sign and normals are still to compute (only a push on overlapping boxes needs them);
 -- `turnPending`: the area sign is (a boolean on overlapping boxes needs only that). No edge
--- of a flat array is internal: internal[1] holds 0 for edges 1 .. edgeRoom, grown when a
+-- of a flat array is internal: internal[1] holds 0 at vertex indices 1 .. edgeRoom, grown when a
 -- larger array comes (once, never shrunk).
 local function newFlatView()
   return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {}, extremes = {},
@@ -3842,23 +3845,23 @@ if JIT then
   end
 end
 
--- Fills `view` for the flat array shape. Raises the argument errors at the caller of the public
--- function (level 4).
+-- Fills `view` for the flat array shape and returns it; or nil and the argument error's message
+-- (the caller raises it: after a list's errors, when the list is the first argument).
 local function flatView(fname, argname, shape, view)
   if type(shape) ~= "table" then
-    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), 4)
+    return nil, ("%s: %s must be a table, got %s"):format(fname, argname, type(shape))
   end
   local n = #shape
   if n % 2 ~= 0 then
-    error(("%s: %s must hold an even number of coordinates, got %d"):format(fname, argname, n), 4)
+    return nil, ("%s: %s must hold an even number of coordinates, got %d"):format(fname, argname, n)
   end
   if not flatBox(view, 1, shape, n) then
-    error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+    return nil, ("%s: %s holds a non-finite coordinate"):format(fname, argname)
   end
-  if n / 2 > view.edgeRoom then
+  if n > view.edgeRoom then
     local flags = view.internal[1]
-    for e = view.edgeRoom + 1, n / 2 do flags[e] = 0 end
-    view.edgeRoom = n / 2
+    for i = view.edgeRoom + 1, n do flags[i] = 0 end
+    view.edgeRoom = n
   end
   view.lengths[1], view.pending, view.turnPending = n, true, true
   shapeBox(view)
@@ -3868,8 +3871,9 @@ end
 -- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
 local faceX, faceY, faceC = {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
 local faceSeam = {}                -- 1 for a face from an internal edge (no foot on it), else 0
+local faceReach = {}               -- |faceC + lift|: how near the origin the face's lifted line passes
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
-local pairGaps = {}                -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
+local pairAdded = {}               -- per pair of parts i, j (at (i - 1) count2 + j): callStamp once in
 
 -- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
 -- checks of the views did not see (one off the box of a list's part) raises the argument error
@@ -3909,30 +3913,39 @@ local function edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX,
   return -lo <= tol and (-lo < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no))
 end
 
+local faceLift = 0.0   -- lift (see nearestFree) of the call under way, for faceReach
+local nearestFoot, nearestReach = 0, huge   -- the face with the nearest foot so far, and its reach
+
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
 -- part give (turn its area sign, normals its outward unit normals; sense 1 for a part of the
 -- first shape, -1 for one of the second, whose outward normal points the other way in t), with
--- `other` the part it is paired with. Coordinates are scaled by k. Returns the last index used
--- and whether some edge separates the two parts, decided exactly (spanX, spanY bound
--- the scaled coordinate differences, for projectionTolerance).
+-- `other` the part it is paired with, and each face's reach (see nearestFree); keeps the
+-- nearest foot's face. Coordinates are scaled by k. Returns the last index used and whether
+-- some edge separates the two parts, decided exactly (spanX, spanY bound the scaled coordinate
+-- differences, for projectionTolerance).
 local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
   -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
   local tolBound = 16 * EPS * (spanX + spanY)
-  local e = ne / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for i = 1, ne - 1, 2 do
     local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
       local ux, uy = normals[i], normals[i + 1]
-      local lo
-      if k == 1 then   -- the same numbers as the scaled loop below
-        lo = leastProjection(other, no, ax, ay, ux, uy)
-      else
+      local lo = huge
+      if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
         local kax, kay = ax * k, ay * k
-        lo = huge
         for j = 1, no - 1, 2 do
           local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+          if s < lo then lo = s end
+        end
+      elseif JIT then
+        lo = leastProjection(other, no, ax, ay, ux, uy)
+      else   -- minProjection's loop, without the call's instructions
+        for j = 1, no - 1, 2 do
+          local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
           if s < lo then lo = s end
         end
       end
@@ -3941,11 +3954,15 @@ local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k,
         separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
       end
       top = top + 1
-      faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
-      faceSeam[top] = internal[e]
+      fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
+      local flag, d = internal[i], lift - lo
+      if JIT then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
+      seam[top], reach[top] = flag, d
+      if flag == 0 and d < footReach then foot, footReach = top, d end
     end
-    ax, ay, e = bx, by, (i + 1) / 2
+    ax, ay = bx, by
   end
+  nearestFoot, nearestReach = foot, footReach
   return top, separated
 end
 
@@ -3965,22 +3982,15 @@ local function pushFree(tx, ty, np, margin)
 end
 
 local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
-local faceReach = {}   -- scratch for nearestFree: |faceC + lift|, how near each face's line passes
 
 -- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
 local function nearestFree(np, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
-  -- The nearest foot first: it is usually free, and then no other foot is nearer (the feet
-  -- loop below keeps only nearer ones, so it is skipped).
-  local nearest, nearestD = 0, huge
-  for f = 1, last do
-    local d = faceC[f] + lift
-    if JIT then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
-    faceReach[f] = d
-    if faceSeam[f] == 0 and d < nearestD then nearest, nearestD = f, d end
-  end
+  -- The nearest foot first (addFaces keeps it): it is usually free, and then no other foot is
+  -- nearer (the feet loop below keeps only nearer ones, so it is skipped).
+  local nearest, nearestD = nearestFoot, nearestReach
   local nearestFreed = false
   if nearest > 0 then
     local d = faceC[nearest] + lift
@@ -4097,15 +4107,83 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   return np + 1, top, not (apart1 or apart2)
 end
 
+local overlapping = {}   -- scratch: the parts of a list whose boxes overlap a flat shape's box
+
+-- The parts of a prepared list whose boxes overlap the box x0, y0, x1, y1 (strictly), in order,
+-- into overlapping; returns their number. Unless `current` (the list was just brought up to date
+-- by listView), first sees whether some part changed, as listView does (its table, its length,
+-- the coordinates on its box: see preparedParts), and then returns nil at once: the same checks
+-- in the same loop as the box tests, which read the same boxes (a push against a flat shape).
+local function partsOverlapping(info, shape, current, x0, y0, x1, y1)
+  local boxes, found = info.boxes, 0
+  if current then
+    for k = 1, info.count do
+      local b = 4 * k
+      if boxes[b - 3] < x1 and x0 < boxes[b - 1] and boxes[b - 2] < y1 and y0 < boxes[b] then
+        found = found + 1
+        overlapping[found] = k
+      end
+    end
+    return found
+  end
+  local lengths, tables, extremes = info.lengths, info.tables, info.extremes
+  for k = 1, info.count do
+    local part, n, b = shape[k], lengths[k], 4 * k
+    local xmin, ymin, xmax, ymax = boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b]
+    if part ~= tables[k] or #part ~= n then return nil end
+    if n >= 6 and (part[extremes[b - 3]] ~= xmin or part[extremes[b - 2]] ~= ymin
+        or part[extremes[b - 1]] ~= xmax or part[extremes[b]] ~= ymax) then
+      return nil
+    end
+    if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
+      found = found + 1
+      overlapping[found] = k
+    end
+  end
+  return found
+end
+
 -- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
 -- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
 -- overlap, dx, dy, or false.
 function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
-  local view1 = parts1 and listView(fname, "points1", shape1)
-    or flatView(fname, "points1", shape1, flatView1)
-  local view2 = parts2 and listView(fname, "points2", shape2)
-    or flatView(fname, "points2", shape2, flatView2)
+  local view1, view2, found
+  if wantPush and parts1 ~= parts2 then
+    -- A list against a flat shape: the list's checks and its parts' box tests in one loop
+    -- (partsOverlapping), so the flat shape's box first, its argument errors raised after the
+    -- list's when the list comes first, as below.
+    local list, flat, listName, flatName = shape1, shape2, "points1", "points2"
+    if parts2 then list, flat, listName, flatName = shape2, shape1, "points2", "points1" end
+    local flatSide, message = flatView(fname, flatName, flat, parts1 and flatView2 or flatView1)
+    if not flatSide and parts2 then error(message, 3) end
+    local info = preparedParts[list]
+    if flatSide and info and info.count == #list then
+      local boxes = flatSide.boxes
+      found = partsOverlapping(info, list, false, boxes[1], boxes[2], boxes[3], boxes[4])
+    end
+    if found then
+      info.fname, info.argname = fname, listName
+    else
+      info = listView(fname, listName, list)
+      if not flatSide then error(message, 3) end
+      local boxes = flatSide.boxes
+      found = partsOverlapping(info, list, true, boxes[1], boxes[2], boxes[3], boxes[4])
+    end
+    if parts1 then view1, view2 = info, flatSide else view1, view2 = flatSide, info end
+  else
+    local message
+    if parts1 then view1 = listView(fname, "points1", shape1)
+    else
+      view1, message = flatView(fname, "points1", shape1, flatView1)
+      if not view1 then error(message, 3) end
+    end
+    if parts2 then view2 = listView(fname, "points2", shape2)
+    else
+      view2, message = flatView(fname, "points2", shape2, flatView2)
+      if not view2 then error(message, 3) end
+    end
+  end
   local count1, count2 = view1.count, view2.count
   local boxes1, boxes2 = view1.boxes, view2.boxes
   local magnitude = max(view1.magnitude, view2.magnitude)
@@ -4138,62 +4216,88 @@ function collideParts(fname, shape1, shape2, wantPush)
   local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
     + (max(view1.bottom, view2.bottom) - min(view1.top, view2.top))) * k
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- delta above: 64 eps E + 2 eps S
-  -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
-  -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box:
-  -- the empty box's huge minus any coordinate is huge; or once the pair is in), and `nearest`
-  -- is the least of those.
-  -- One loop over the pairs, not two nested (on LuaJIT an inner loop of one part, as for a flat
-  -- second shape, costs a trace exit for every part of the first).
-  local np, top, hit, nearest = 0, 0, false, huge
-  local pairGap = pairGaps   -- a local: PUC Lua reads an upvalue by an extra instruction
-  local i, j = 1, 0
-  for pair = 1, count1 * count2 do
-    if j == count2 then i, j = i + 1, 1 else j = j + 1 end
-    local a, b = 4 * i, 4 * j
-    -- a - b < 0 exactly when a < b: no NaN, as an empty box is (huge, huge, -huge, -huge)
-    local gapX, gapY = boxes1[a - 3] - boxes2[b - 1], boxes1[a - 2] - boxes2[b]
-    local gapX2, gapY2 = boxes2[b - 3] - boxes1[a - 1], boxes2[b - 2] - boxes1[a]
-    if JIT then   -- no side exits (see minProjection)
-      gapX, gapY = max(gapX, gapX2), max(gapY, gapY2)
-    else          -- no calls
-      if gapX2 > gapX then gapX = gapX2 end
-      if gapY2 > gapY then gapY = gapY2 end
-    end
-    if gapX < 0 and gapY < 0 then
-      pairGap[pair] = huge
+  -- The pairs whose boxes overlap go in now, marked in pairAdded; the others when their box of D
+  -- comes near the best free point (below). A pair is numbered (i - 1) count2 + j; against a
+  -- flat shape, by the list's part. One loop over the pairs, not two nested (on LuaJIT an inner
+  -- loop of one part, as for a flat second shape, costs a trace exit for every part of the
+  -- first).
+  local np, top, hit = 0, 0, false
+  local added = pairAdded   -- a local: PUC Lua reads an upvalue by an extra instruction
+  faceLift, nearestFoot, nearestReach = 1.25 * margin, 0, huge   -- as nearestFree's lift
+  if found then
+    for f = 1, found do
+      local part = overlapping[f]
+      added[part] = callStamp
       local overlaps
-      np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
-        parts2 and shape2[j] or shape2, j, k, np, top)
+      if parts1 then
+        np, top, overlaps = addPair(view1, shape1[part], part, view2, shape2, 1, k, np, top)
+      else
+        np, top, overlaps = addPair(view1, shape1, 1, view2, shape2[part], part, k, np, top)
+      end
       if overlaps then hit = true end
-    else   -- >= 0, as not both are < 0; huge (inf) when a box is empty
-      local gap = (JIT and max(gapX, gapY) or gapX > gapY and gapX or gapY) * k
-      pairGap[pair] = gap
-      if gap < nearest then nearest = gap end
+    end
+  else
+    local i, j = 1, 0
+    for pair = 1, count1 * count2 do
+      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+      local a, b = 4 * i, 4 * j
+      if boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
+          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a] then
+        added[pair] = callStamp
+        local overlaps
+        np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
+          parts2 and shape2[j] or shape2, j, k, np, top)
+        if overlaps then hit = true end
+      end
     end
   end
   if not hit then return false end
   local best, tx, ty = nearestFree(np, margin)
   local near = 4 * margin   -- a box of D this far from t cannot hold it, widened by delta
   while true do
-    local reach = best == huge and huge or max(abs(tx), abs(ty)) + near
-    if nearest >= reach then break end   -- every other box of D is farther from t than near
+    -- every pair not in yet whose box of D comes within near of t (on every side; when no point
+    -- is free yet, every pair whose parts have boxes) goes in
     local before = np
-    nearest, i, j = huge, 1, 0
-    for pair = 1, count1 * count2 do
-      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
-      local gap = pairGap[pair]
-      if gap < reach then
+    local anyBox = best == huge
+    if found then
+      -- the list's part against the flat shape's box; the box of D is that of part - flat for a
+      -- list first, of flat - part for a list second: the same tests on -t (exact negations)
+      local list, listBoxes, fb = shape1, boxes1, boxes2
+      local sx, sy = tx, ty
+      if parts2 then list, listBoxes, fb, sx, sy = shape2, boxes2, boxes1, -tx, -ty end
+      local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
+      for part = 1, #list do
+        local a = 4 * part
+        if (anyBox and listBoxes[a - 3] <= listBoxes[a - 1]
+            or (listBoxes[a - 3] - fx1) * k - sx < near and sx - (listBoxes[a - 1] - fx0) * k < near
+            and (listBoxes[a - 2] - fy1) * k - sy < near and sy - (listBoxes[a] - fy0) * k < near)
+            and added[part] ~= callStamp then
+          added[part] = callStamp
+          if parts1 then
+            np, top = addPair(view1, shape1[part], part, view2, shape2, 1, k, np, top)
+          else
+            np, top = addPair(view1, shape1, 1, view2, shape2[part], part, k, np, top)
+          end
+        end
+      end
+    else
+      local i, j = 1, 0
+      for pair = 1, count1 * count2 do
+        if j == count2 then i, j = i + 1, 1 else j = j + 1 end
         local a, b = 4 * i, 4 * j
-        -- how far t lies beyond the box of D, along x and along y (< 0 inside)
-        local outX = max((boxes1[a - 3] - boxes2[b - 1]) * k - tx, tx - (boxes1[a - 1] - boxes2[b - 3]) * k)
-        local outY = max((boxes1[a - 2] - boxes2[b]) * k - ty, ty - (boxes1[a] - boxes2[b - 2]) * k)
-        if best == huge or max(outX, outY) < near then
-          pairGap[pair], gap = huge, huge
+        -- how far t lies beyond the box of D on each side, all four below near (an empty box,
+        -- of huge minus any coordinate, never is)
+        if (anyBox and boxes1[a - 3] <= boxes1[a - 1] and boxes2[b - 3] <= boxes2[b - 1]
+            or (boxes1[a - 3] - boxes2[b - 1]) * k - tx < near
+            and tx - (boxes1[a - 1] - boxes2[b - 3]) * k < near
+            and (boxes1[a - 2] - boxes2[b]) * k - ty < near
+            and ty - (boxes1[a] - boxes2[b - 2]) * k < near)
+            and added[pair] ~= callStamp then
+          added[pair] = callStamp
           np, top = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
             parts2 and shape2[j] or shape2, j, k, np, top)
         end
       end
-      if gap < nearest then nearest = gap end
     end
     if np == before then break end
     -- If the best point is still free among the pairs added, it stays (see "Which pairs").
@@ -4223,7 +4327,6 @@ local faceQ = {}                                        -- |faceAX, faceAY|: the
 -- the edge's line from the centre (u.t - faceC is how far t lies beyond it) and the edge's ends.
 -- Returns the last index.
 local function addCircleFaces(part, n, normals, internal, cx, cy, k, top)
-  local e = n / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
   local kcx, kcy = cx * k, cy * k
   for i = 1, n - 1, 2 do
@@ -4235,9 +4338,9 @@ local function addCircleFaces(part, n, normals, internal, cx, cy, k, top)
       faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
       faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
       faceQ[top] = sqrt(qax * qax + qay * qay)
-      faceSeam[top] = internal[e]
+      faceSeam[top] = internal[i]
     end
-    ax, ay, e = bx, by, (i + 1) / 2
+    ax, ay = bx, by
   end
   return top
 end
