@@ -3548,7 +3548,8 @@ end
 -- normals, and which of its edges are internal: internal[k][i] is 1 when the edge of part k
 -- ending at vertex index i (odd; from the vertex before, the last for the first) is covered by
 -- edges of other parts running the opposite way along the same line (shared with the
--- neighbours, whole or in pieces), else 0 (numbers, not true and nil: on LuaJIT a load whose type varies is a side exit).
+-- neighbours, whole or in pieces), else 0 (numbers, not true and nil: on LuaJIT a load whose
+-- type varies is a side exit).
 -- Keeping it right. Reading every coordinate on every call costs as much as the pair tests a
 -- call needs, so each call checks, per part, only its table, its length and the four
 -- coordinates on its box (the vertices that gave xmin, ymin, xmax, ymax). That is exact for a
