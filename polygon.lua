@@ -3632,7 +3632,18 @@ local function partNormals(view, k, part, n)
   for i = 1, n - 1, 2 do
     local bx, by = part[i] + 0.0, part[i + 1] + 0.0
     local ux, uy = 0.0, 0.0   -- a repeated vertex gives no edge
-    if bx ~= ax or by ~= ay then ux, uy = unit((by - ay) * turn, (ax - bx) * turn) end
+    if bx ~= ax or by ~= ay then
+      ux, uy = (by - ay) * turn, (ax - bx) * turn
+      if JIT then
+        ux, uy = unit(ux, uy)
+      else   -- unit's numbers, without its calls (PUC Lua pays for each, math.max and abs too)
+        local m, mx = uy < 0 and -uy or uy, ux < 0 and -ux or ux
+        if mx > m then m = mx end
+        ux, uy = ux / m, uy / m
+        local len = sqrt(ux * ux + uy * uy)
+        ux, uy = ux / len, uy / len
+      end
+    end
     normals[i], normals[i + 1] = ux, uy
     ax, ay = bx, by
   end
@@ -3915,7 +3926,9 @@ local function edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX,
 end
 
 local faceLift = 0.0   -- lift (see nearestFree) of the call under way, for faceReach
-local nearestFoot, nearestReach = 0, huge   -- the face with the nearest foot so far, and its reach
+-- The faces with the nearest and the second nearest foot so far (first in face order among
+-- equals), their reaches, and the nearest reach of an internal edge's face: kept by addFaces.
+local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0, huge, huge
 
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
 -- part give (turn its area sign, normals its outward unit normals; sense 1 for a part of the
@@ -3927,7 +3940,7 @@ local nearestFoot, nearestReach = 0, huge   -- the face with the nearest foot so
 local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
   local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+  local lift, foot, footReach, foot2, foot2Reach = faceLift, nearestFoot, nearestReach, secondFoot, secondReach
   -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
   local tolBound = 16 * EPS * (spanX + spanY)
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
@@ -3959,20 +3972,27 @@ local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k,
       local flag, d = internal[i], lift - lo
       if JIT then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
       seam[top], reach[top] = flag, d
-      if flag == 0 and d < footReach then foot, footReach = top, d end
+      if flag ~= 0 then
+        if d < seamReach then seamReach = d end
+      elseif d < footReach then
+        foot, footReach, foot2, foot2Reach = top, d, foot, footReach
+      elseif d < foot2Reach then
+        foot2, foot2Reach = top, d
+      end
     end
     ax, ay = bx, by
   end
-  nearestFoot, nearestReach = foot, footReach
+  nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
   return top, separated
 end
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
 local function pushFree(tx, ty, np, margin)
+  local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
   for p = 1, np do
     local inside = true
-    for f = faceFirst[p], faceFirst[p + 1] - 1 do
-      if faceX[f] * tx + faceY[f] * ty >= faceC[f] + margin then
+    for f = first[p], first[p + 1] - 1 do
+      if fx[f] * tx + fy[f] * ty >= fc[f] + margin then
         inside = false
         break
       end
@@ -3986,42 +4006,52 @@ local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass ne
 
 -- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
 local function nearestFree(np, margin)
+  local fx, fy, fc, reach = faceX, faceY, faceC, faceReach   -- locals: PUC Lua reads upvalues slower
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
-  -- The nearest foot first (addFaces keeps it): it is usually free, and then no other foot is
-  -- nearer (the feet loop below keeps only nearer ones, so it is skipped).
-  local nearest, nearestD = nearestFoot, nearestReach
-  local nearestFreed = false
-  if nearest > 0 then
-    local d = faceC[nearest] + lift
-    local tx, ty = faceX[nearest] * d, faceY[nearest] * d
-    if pushFree(tx, ty, np, margin) then best, bestX, bestY, nearestFreed = nearestD, tx, ty, true end
+  -- The nearest foot first, then the second nearest (addFaces keeps them): usually one of them
+  -- is free, and then no other foot is nearer (the feet loop below would pick the first free one
+  -- in the order of reach, then of faces; it runs when neither is free).
+  local found = 0
+  if nearestFoot > 0 then
+    local d = fc[nearestFoot] + lift
+    local tx, ty = fx[nearestFoot] * d, fy[nearestFoot] * d
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY, found = nearestReach, tx, ty, 1 end
   end
-  if not nearestFreed then
+  if found == 0 and secondFoot > 0 then
+    local d = fc[secondFoot] + lift
+    local tx, ty = fx[secondFoot] * d, fy[secondFoot] * d
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY, found = secondReach, tx, ty, 2 end
+  end
+  if found == 0 then
     for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
-      if faceSeam[f] == 0 and faceReach[f] < best then
-        local d = faceC[f] + lift
-        local tx, ty = faceX[f] * d, faceY[f] * d
-        if pushFree(tx, ty, np, margin) then best, bestX, bestY = faceReach[f], tx, ty end
+      if faceSeam[f] == 0 and reach[f] < best then
+        local d = fc[f] + lift
+        local tx, ty = fx[f] * d, fy[f] * d
+        if pushFree(tx, ty, np, margin) then best, bestX, bestY = reach[f], tx, ty end
       end
     end
+  elseif seamReach >= best then
+    -- Every outer edge's line passes at least as far as the nearest foot (found 1) or the
+    -- second (found 2: all but the nearest): at most one line nearer than the best, no crossing.
+    return best, bestX, bestY
   end
   -- Crossings of two lines, each nearer than the best so far (a crossing is no nearer than
   -- either line): only the lines nearer than the best now can take part, usually a few of them.
   local count = 0
   for f = 1, last do
-    if faceReach[f] < best then count = count + 1; nearLines[count] = f end
+    if reach[f] < best then count = count + 1; nearLines[count] = f end
   end
   for a = 1, count - 1 do
     local f = nearLines[a]
-    if faceReach[f] < best then
-      local c1, x1, y1 = faceC[f] + lift, faceX[f], faceY[f]
+    if reach[f] < best then
+      local c1, x1, y1 = fc[f] + lift, fx[f], fy[f]
       for b = a + 1, count do
         local g = nearLines[b]
-        if faceReach[g] < best then
-          local c2 = faceC[g] + lift
-          local x2, y2 = faceX[g], faceY[g]
+        if reach[g] < best then
+          local c2 = fc[g] + lift
+          local x2, y2 = fx[g], fy[g]
           local det = x1 * y2 - y1 * x2
           if det ~= 0 then
             local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
@@ -4055,9 +4085,17 @@ local function preparePair(view1, p1, i, view2, p2, j, k)
   prepareSide(view2, p2, j, k)
   k = k or 1.0
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
-  local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
-  local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
-  return view1.turns[i], view2.turns[j], spanX, spanY
+  local right, bottom, left, top = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
+  if JIT then
+    right, bottom = max(right, boxes2[b - 1]), max(bottom, boxes2[b])
+    left, top = min(left, boxes2[b - 3]), min(top, boxes2[b - 2])
+  else   -- the same numbers without calls
+    if boxes2[b - 1] > right then right = boxes2[b - 1] end
+    if boxes2[b] > bottom then bottom = boxes2[b] end
+    if boxes2[b - 3] < left then left = boxes2[b - 3] end
+    if boxes2[b - 2] < top then top = boxes2[b - 2] end
+  end
+  return view1.turns[i], view2.turns[j], (right - left) * k, (bottom - top) * k
 end
 
 -- Whether some edge of the part `edges` (turn its area sign) separates it from the part
@@ -4224,7 +4262,8 @@ function collideParts(fname, shape1, shape2, wantPush)
   -- first).
   local np, top, hit = 0, 0, false
   local added = pairAdded   -- a local: PUC Lua reads an upvalue by an extra instruction
-  faceLift, nearestFoot, nearestReach = 1.25 * margin, 0, huge   -- as nearestFree's lift
+  faceLift = 1.25 * margin   -- as nearestFree's lift
+  nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0, huge, huge
   if found then
     for f = 1, found do
       local part = overlapping[f]
