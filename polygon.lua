@@ -3585,14 +3585,18 @@ local function covered(covers, lo, hi)
 end
 
 -- A view of a shape is what the collisions read of it: count, lengths[k], boxes (xmin, ymin,
--- xmax, ymax of part k at 4k - 3 .. 4k; in extremes, the indices of the coordinates that gave
--- them), turns[k] (area sign 1, -1 or 0: signs, never magnitudes, are multiplied), normals[k]
--- (the outward unit normal of the edge ending at vertex index i at [i], [i + 1]), internal[k],
--- and over all parts size (the largest coordinate magnitude) and the box left, top, right,
--- bottom. A list's preparation is its view; a flat array is seen through one of two scratch
--- views, filled on every call.
+-- xmax, ymax of part k at 4k - 3 .. 4k), turns[k] (area sign 1, -1 or 0: signs, never
+-- magnitudes, are multiplied), normals[k] (the outward unit normal of the edge ending at vertex
+-- index i at [i], [i + 1]), internal[k], and over all parts size (the largest coordinate
+-- magnitude) and the box left, top, right, bottom. A list's preparation is its view, with
+-- records[k] for the per-call checks: xmin, ymin, xmax, ymax of part k at [1] .. [4] again, the
+-- indices of the coordinates that gave them at [5] .. [8], the part's table at [9] (false after
+-- a non-finite coordinate) and its length at [10] (constant indices: one instruction each on
+-- PUC Lua, in the loop over every part). A flat array is seen through one of two scratch views,
+-- filled on every call.
 
--- The box of part k (n coordinates) into view.boxes; false when a coordinate is inf or NaN.
+-- The box of part k (n coordinates) of a list into view.boxes and its record; false when a
+-- coordinate is inf or NaN.
 local function partBox(view, k, part, n)
   local finite = 0.0
   local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
@@ -3606,9 +3610,10 @@ local function partBox(view, k, part, n)
     if y > ymax then ymax, iymax = y, i + 1 end
   end
   if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
-  local boxes, extremes, b = view.boxes, view.extremes, 4 * k
+  local boxes, record, b = view.boxes, view.records[k], 4 * k
   boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
-  extremes[b - 3], extremes[b - 2], extremes[b - 1], extremes[b] = ixmin, iymin, ixmax, iymax
+  record[1], record[2], record[3], record[4] = xmin, ymin, xmax, ymax
+  record[5], record[6], record[7], record[8] = ixmin, iymin, ixmax, iymax
   return finite == 0
 end
 
@@ -3669,7 +3674,7 @@ end
 local function prepareParts(fname, argname, parts)
   local count = #parts
   local info = { count = count, lengths = {}, internal = {}, copies = {}, boxes = {}, turns = {},
-                 normals = {}, extremes = {}, tables = {}, checked = {} }
+                 normals = {}, records = {}, checked = {} }
   for k = 1, count do
     local part = parts[k]
     local n = #part
@@ -3678,7 +3683,7 @@ local function prepareParts(fname, argname, parts)
     local flags = {}
     for i = 1, n - 1, 2 do flags[i] = 0 end
     info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
-    info.tables[k], info.checked[k] = part, 0
+    info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n }, 0
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
     end
@@ -3758,7 +3763,7 @@ local callStamp = 0   -- counts the calls that push: checked[k] == callStamp whe
 -- non-finite error at `level` (counted from here, 1).
 local function refreshPart(view, k, part, n, level)
   if not partBox(view, k, part, n) then
-    view.tables[k] = false   -- the next call refreshes the part again, and raises again
+    view.records[k][9] = false   -- the next call refreshes the part again, and raises again
     error(("%s: %s holds a non-finite coordinate"):format(view.fname, view.argname), level)
   end
   partNormals(view, k, part, n)
@@ -3785,27 +3790,25 @@ local function listView(fname, argname, shape)
   local info = preparedParts[shape]
   if info and info.count == #shape then
     info.fname, info.argname = fname, argname
-    local lengths, tables, boxes, extremes = info.lengths, info.tables, info.boxes, info.extremes
+    local records = info.records
     local changed = false
     for k = 1, info.count do
-      local part, n = shape[k], lengths[k]
-      if part ~= tables[k] then   -- another table, or a non-finite coordinate before (false)
+      local part, record = shape[k], records[k]
+      local n = record[10]
+      if part ~= record[9] then   -- another table, or a non-finite coordinate before (false)
         if type(part) ~= "table" or #part ~= n then
           changed = nil   -- prepare again (or raise the error)
           break
         end
-        tables[k], changed = part, true
+        record[9], changed = part, true
         refreshPart(info, k, part, n, 5)
       elseif #part ~= n then   -- another length
         changed = nil
         break
-      elseif n >= 6 then
-        local b = 4 * k
-        if part[extremes[b - 3]] ~= boxes[b - 3] or part[extremes[b - 2]] ~= boxes[b - 2]
-            or part[extremes[b - 1]] ~= boxes[b - 1] or part[extremes[b]] ~= boxes[b] then
-          changed = true
-          refreshPart(info, k, part, n, 5)
-        end
+      elseif n >= 6 and (part[record[5]] ~= record[1] or part[record[6]] ~= record[2]
+          or part[record[7]] ~= record[3] or part[record[8]] ~= record[4]) then
+        changed = true
+        refreshPart(info, k, part, n, 5)
       end
     end
     if changed ~= nil then
@@ -3825,17 +3828,18 @@ end
 -- of a flat array is internal: internal[1] holds 0 at vertex indices 1 .. edgeRoom, grown when a
 -- larger array comes (once, never shrunk).
 local function newFlatView()
-  return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {}, extremes = {},
+  return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {},
            turns = {}, normals = { {} }, pending = false, turnPending = false }
 end
 local flatView1, flatView2 = newFlatView(), newFlatView()
 
--- The box of a flat array (n coordinates) into view as part k = 1, as partBox gives it, and
--- whether every coordinate is finite. On LuaJIT min and max four vertices a round, the last round padded
--- with the last vertex (as leastProjection, for the same reason: partBox's branches on every
--- vertex were 9 % of a push's time on the crate and floor of bench/compound.lua by `luajit
--- -jp=f`), and without the extremes' indices, which only a list's parts keep. PUC Lua: partBox.
-local flatBox = partBox
+-- The box of a flat array (n coordinates) into view as part k = 1, as partBox gives it but
+-- without the record (the extremes' indices, which only a list's parts keep), and whether every
+-- coordinate is finite. On LuaJIT min and max four vertices a round, the last round padded with
+-- the last vertex (as leastProjection, for the same reason: partBox's branches on every vertex
+-- were 9 % of a push's time on the crate and floor of bench/compound.lua by `luajit -jp=f`).
+-- On PUC Lua partBox's loop, and shapeBox's numbers for the one part without its calls.
+local flatBox
 if JIT then
   flatBox = function(view, _, shape, n)
     local finite = 0.0
@@ -3853,6 +3857,33 @@ if JIT then
     if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
     local boxes = view.boxes
     boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+    return finite == 0
+  end
+else
+  flatBox = function(view, _, shape, n)
+    local finite = 0.0
+    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    for i = 1, n - 1, 2 do
+      local x, y = shape[i] + 0.0, shape[i + 1] + 0.0
+      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
+      if x < xmin then xmin = x end
+      if x > xmax then xmax = x end
+      if y < ymin then ymin = y end
+      if y > ymax then ymax = y end
+    end
+    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+    local boxes = view.boxes
+    boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+    local magnitude = 0.0
+    if xmin <= xmax then   -- as shapeBox: max(0, -xmin, xmax, -ymin, ymax), the first of equals
+      if -xmin > magnitude then magnitude = -xmin end
+      if xmax > magnitude then magnitude = xmax end
+      if -ymin > magnitude then magnitude = -ymin end
+      if ymax > magnitude then magnitude = ymax end
+    else
+      xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    end
+    view.magnitude, view.left, view.top, view.right, view.bottom = magnitude, xmin, ymin, xmax, ymax
     return finite == 0
   end
 end
@@ -3876,7 +3907,7 @@ local function flatView(fname, argname, shape, view)
     view.edgeRoom = n
   end
   view.lengths[1], view.pending, view.turnPending = n, true, true
-  shapeBox(view)
+  if JIT then shapeBox(view) end   -- PUC Lua: flatBox did
   return view
 end
 
@@ -3940,7 +3971,8 @@ local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0
 local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
   local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-  local lift, foot, footReach, foot2, foot2Reach = faceLift, nearestFoot, nearestReach, secondFoot, secondReach
+  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+  local foot2, foot2Reach = secondFoot, secondReach
   -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
   local tolBound = 16 * EPS * (spanX + spanY)
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
@@ -4165,13 +4197,13 @@ local function partsOverlapping(info, shape, current, x0, y0, x1, y1)
     end
     return found
   end
-  local lengths, tables, extremes = info.lengths, info.tables, info.extremes
+  local records = info.records
   for k = 1, info.count do
-    local part, n, b = shape[k], lengths[k], 4 * k
-    local xmin, ymin, xmax, ymax = boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b]
-    if part ~= tables[k] or #part ~= n then return nil end
-    if n >= 6 and (part[extremes[b - 3]] ~= xmin or part[extremes[b - 2]] ~= ymin
-        or part[extremes[b - 1]] ~= xmax or part[extremes[b]] ~= ymax) then
+    local part, record = shape[k], records[k]
+    local xmin, ymin, xmax, ymax, n = record[1], record[2], record[3], record[4], record[10]
+    if part ~= record[9] or #part ~= n then return nil end
+    if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+        or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
       return nil
     end
     if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
