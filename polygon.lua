@@ -4099,12 +4099,12 @@ end
 
 -- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for a pair test:
 -- a list's part compared with its whole copy (the non-finite error raised at the public
--- function's caller, level 8 from checkCopy), a flat view's area sign computed and, for a push
+-- function's caller, level 7 from checkCopy), a flat view's area sign computed and, for a push
 -- (k given), its normals. Returns their area signs and spanX, spanY (scaled by k, or 1 for a
 -- boolean) bounding their coordinate differences.
 local function prepareSide(view, p, i, k)
   if view.copies then
-    if view.checked[i] ~= callStamp then checkCopy(view, i, p, 8) end
+    if view.checked[i] ~= callStamp then checkCopy(view, i, p, 7) end
   elseif k then
     if view.pending then partNormals(view, 1, p, #p); view.pending = false end
   elseif view.turnPending then
@@ -4179,39 +4179,39 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
 end
 
 local overlapping = {}   -- scratch: the parts of a list whose boxes overlap a flat shape's box
+local nearParts = {}     -- scratch: those whose boxes come within the window of it (see below)
 
 -- The parts of a prepared list whose boxes overlap the box x0, y0, x1, y1 (strictly), in order,
--- into overlapping; returns their number. Unless `current` (the list was just brought up to date
--- by listView), first sees whether some part changed, as listView does (its table, its length,
--- the coordinates on its box: see preparedParts), and then returns nil at once: the same checks
--- in the same loop as the box tests, which read the same boxes (a push against a flat shape).
-local function partsOverlapping(info, shape, current, x0, y0, x1, y1)
-  local boxes, found = info.boxes, 0
-  if current then
-    for k = 1, info.count do
-      local b = 4 * k
-      if boxes[b - 3] < x1 and x0 < boxes[b - 1] and boxes[b - 2] < y1 and y0 < boxes[b] then
+-- into overlapping, and those whose boxes overlap it grown by `window` on every side into
+-- nearParts; returns both numbers. Unless `current` (the list was just brought up to date by
+-- listView), first sees whether some part changed, as listView does (its table, its length, the
+-- coordinates on its box: see preparedParts), and then returns nil at once: the same checks in
+-- the same loop as the box tests, which read the same boxes (a push against a flat shape).
+local function partsOverlapping(info, shape, current, x0, y0, x1, y1, window)
+  local found, near = 0, 0
+  local wx0, wy0, wx1, wy1 = x0 - window, y0 - window, x1 + window, y1 + window
+  local records = info.records
+  for k = 1, info.count do
+    local part, record = shape[k], records[k]
+    local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
+    if not current then
+      local n = record[10]
+      if part ~= record[9] or #part ~= n then return nil end
+      if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+          or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+        return nil
+      end
+    end
+    if xmin < wx1 and wx0 < xmax and ymin < wy1 and wy0 < ymax then
+      near = near + 1
+      nearParts[near] = k
+      if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
         found = found + 1
         overlapping[found] = k
       end
     end
-    return found
   end
-  local records = info.records
-  for k = 1, info.count do
-    local part, record = shape[k], records[k]
-    local xmin, ymin, xmax, ymax, n = record[1], record[2], record[3], record[4], record[10]
-    if part ~= record[9] or #part ~= n then return nil end
-    if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
-        or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
-      return nil
-    end
-    if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
-      found = found + 1
-      overlapping[found] = k
-    end
-  end
-  return found
+  return found, near
 end
 
 -- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
@@ -4219,7 +4219,7 @@ end
 -- overlap, dx, dy, or false.
 function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
-  local view1, view2, found
+  local view1, view2, found, nearCount, window
   if wantPush and parts1 ~= parts2 then
     -- A list against a flat shape: the list's checks and its parts' box tests in one loop
     -- (partsOverlapping), so the flat shape's box first, its argument errors raised after the
@@ -4229,17 +4229,19 @@ function collideParts(fname, shape1, shape2, wantPush)
     local flatSide, message = flatView(fname, flatName, flat, parts1 and flatView2 or flatView1)
     if not flatSide and parts2 then error(message, 3) end
     local info = preparedParts[list]
+    local boxes = flatSide and flatSide.boxes
+    -- the window for the pairs the search may add later: the flat shape's width plus height
+    -- (pushes are mostly shorter than half that: see the loop after the search)
+    window = flatSide and (boxes[3] - boxes[1]) + (boxes[4] - boxes[2])
     if flatSide and info and info.count == #list then
-      local boxes = flatSide.boxes
-      found = partsOverlapping(info, list, false, boxes[1], boxes[2], boxes[3], boxes[4])
+      found, nearCount = partsOverlapping(info, list, false, boxes[1], boxes[2], boxes[3], boxes[4], window)
     end
     if found then
       info.fname, info.argname = fname, listName
     else
       info = listView(fname, listName, list)
       if not flatSide then error(message, 3) end
-      local boxes = flatSide.boxes
-      found = partsOverlapping(info, list, true, boxes[1], boxes[2], boxes[3], boxes[4])
+      found, nearCount = partsOverlapping(info, list, true, boxes[1], boxes[2], boxes[3], boxes[4], window)
     end
     if parts1 then view1, view2 = info, flatSide else view1, view2 = flatSide, info end
   else
@@ -4334,11 +4336,19 @@ function collideParts(fname, shape1, shape2, wantPush)
     if found then
       -- the list's part against the flat shape's box; the box of D is that of part - flat for a
       -- list first, of flat - part for a list second: the same tests on -t (exact negations)
-      local list, listBoxes, fb = shape1, boxes1, boxes2
+      -- Only the parts near the flat shape (in nearParts) when t and near are at most half the
+      -- window: a part outside it lies a window or more away along x or y, so its box of D
+      -- lies farther than 2 (|t| + near) from the origin, more than near from t (the rounding
+      -- errors of these sums are a few eps of the coordinates, below near).
+      local listBoxes, fb = boxes1, boxes2
       local sx, sy = tx, ty
-      if parts2 then list, listBoxes, fb, sx, sy = shape2, boxes2, boxes1, -tx, -ty end
+      if parts2 then listBoxes, fb, sx, sy = boxes2, boxes1, -tx, -ty end
       local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
-      for part = 1, #list do
+      local reach, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
+      if reachY > reach then reach = reachY end
+      local useNear = not anyBox and 2 * (reach + near) <= window * k
+      for q = 1, useNear and nearCount or (parts1 and count1 or count2) do
+        local part = useNear and nearParts[q] or q
         local a = 4 * part
         if (anyBox and listBoxes[a - 3] <= listBoxes[a - 1]
             or (listBoxes[a - 3] - fx1) * k - sx < near and sx - (listBoxes[a - 1] - fx0) * k < near
@@ -4542,7 +4552,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
         and boxes[4 * i - 2] < cy + r and cy - r < boxes[4 * i] then
       local part = shape[i]
       local n = #part
-      if view.checked[i] ~= callStamp then checkCopy(view, i, part, 5) end
+      if view.checked[i] ~= callStamp then checkCopy(view, i, part, 4) end
       if turns[i] ~= 0 then
         if circleCollision(part, n, cx, cy, r) then hit = true end
         np = np + 1
@@ -4570,7 +4580,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
         local outY = max((boxes[a - 2] - cy - r) * k - ty, ty - (boxes[a] - cy + r) * k)
         if best == huge or max(outX, outY) < near then
           circleAdded[i] = callStamp
-          if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 5) end
+          if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 4) end
           if turns[i] ~= 0 then
             np = np + 1
             faceFirst[np] = last + 1
