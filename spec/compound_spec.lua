@@ -279,7 +279,7 @@ describe("compound shapes", function()
         "polygonsCollideV: points2 must be a table, got nil")
     end)
 
-    it("points the error at the caller's line, for a coordinate spoilt near the other shape or far", function()
+    it("points the error at the caller's line, for a bad coordinate near the other shape or far", function()
       local crate = parts.box(5, 5, 8, 8)
       local function spoilt(k, i)   -- a prepared list whose part k gets a NaN at index i
         local list = { parts.box(0, 0, 10, 10), parts.box(100, 0, 10, 10) }
