@@ -3973,6 +3973,7 @@ local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k,
   local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
   local lift, foot, footReach = faceLift, nearestFoot, nearestReach
   local foot2, foot2Reach = secondFoot, secondReach
+  local plain = k == 1 and not JIT   -- PUC Lua, unscaled: minProjection's loop inline
   -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
   local tolBound = 16 * EPS * (spanX + spanY)
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
@@ -3981,19 +3982,19 @@ local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k,
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
       local ux, uy = normals[i], normals[i + 1]
       local lo = huge
-      if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
+      if plain then   -- minProjection's loop, without the call's instructions
+        for j = 1, no - 1, 2 do
+          local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
+          if s < lo then lo = s end
+        end
+      elseif k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
         local kax, kay = ax * k, ay * k
         for j = 1, no - 1, 2 do
           local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
           if s < lo then lo = s end
         end
-      elseif JIT then
+      else
         lo = leastProjection(other, no, ax, ay, ux, uy)
-      else   -- minProjection's loop, without the call's instructions
-        for j = 1, no - 1, 2 do
-          local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
-          if s < lo then lo = s end
-        end
       end
       -- -lo > tolBound >= projectionTolerance: the edge cannot separate
       if not separated and -lo <= tolBound then
@@ -4165,8 +4166,31 @@ end
 -- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair
 -- np + 1. Returns np, top and whether the parts overlap, decided exactly.
 local function addPair(view1, p1, i, view2, p2, j, k, np, top)
-  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, k)
+  -- preparePair's work inline (PUC Lua pays for every call): checkCopy's level counts from there
+  if view1.copies then
+    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 5) end
+  elseif view1.pending then
+    partNormals(view1, 1, p1, #p1); view1.pending = false
+  end
+  if view2.copies then
+    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 5) end
+  elseif view2.pending then
+    partNormals(view2, 1, p2, #p2); view2.pending = false
+  end
+  local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
+  local right, bottom, left, low = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
+  if JIT then
+    right, bottom = max(right, boxes2[b - 1]), max(bottom, boxes2[b])
+    left, low = min(left, boxes2[b - 3]), min(low, boxes2[b - 2])
+  else   -- the same numbers without calls
+    if boxes2[b - 1] > right then right = boxes2[b - 1] end
+    if boxes2[b] > bottom then bottom = boxes2[b] end
+    if boxes2[b - 3] < left then left = boxes2[b - 3] end
+    if boxes2[b - 2] < low then low = boxes2[b - 2] end
+  end
+  local spanX, spanY = (right - left) * k, (bottom - low) * k
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   faceFirst[np + 1] = top + 1
   local apart1, apart2
