@@ -3513,9 +3513,18 @@ do   -- this section's helpers are local to it
 -- Which pairs. D lies in the box [A's box - B's box]. The pairs whose boxes overlap (D holds the
 -- origin) come first. The nearest point t free among them is the least push of all when it lies
 -- outside every other D too, as more pairs can only take free points away; so a pair is added
--- only when its box of D comes within 4 delta of t (largest coordinate gap), and the nearest
--- free point is sought again, round after round. (The distance from the origin to a box of D
--- bounds the one from t from below, less |t|: most pairs are passed over on that.)
+-- only when its box of D comes within 4 delta of t on every side, and the nearest free point
+-- is sought again, round after round. Against a flat shape only the parts in a window around
+-- it are visited for that while |t| is at most half the window: the others' boxes of D lie
+-- farther than a window from the origin.
+--
+-- Which feet and crossings. The feet are tried nearest first (the nearest and the second
+-- nearest are kept as the faces are made), as the nearest free foot is the first free one in
+-- the order of reach, then of faces; a crossing is no nearer than either of its lines, so
+-- crossings are sought only among the lines nearer than the best so far, and not at all when
+-- only one can be (every outer edge's line at least as far as the best, and every internal
+-- one). So on a floor the push usually costs the faces of the pairs and one or two freeness
+-- checks.
 --
 -- Margin: one push separates. The faces are computed in floating point and the moved vertices
 -- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
