@@ -4108,25 +4108,22 @@ local function nearestFree(np, margin)
   return best, bestX, bestY
 end
 
--- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for a pair test:
--- a list's part compared with its whole copy (the non-finite error raised at the public
--- function's caller, level 7 from checkCopy), a flat view's area sign computed and, for a push
--- (k given), its normals. Returns their area signs and spanX, spanY (scaled by k, or 1 for a
--- boolean) bounding their coordinate differences.
-local function prepareSide(view, p, i, k)
+-- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for the boolean's
+-- pair test (addPair does the same for a push, with the flat view's normals): a list's part
+-- compared with its whole copy (the non-finite error raised at the public function's caller,
+-- level 7 from checkCopy), a flat view's area sign computed. Returns their area signs and
+-- spanX, spanY bounding their coordinate differences.
+local function prepareSide(view, p, i)
   if view.copies then
     if view.checked[i] ~= callStamp then checkCopy(view, i, p, 7) end
-  elseif k then
-    if view.pending then partNormals(view, 1, p, #p); view.pending = false end
   elseif view.turnPending then
     partTurn(view, 1, p, #p); view.turnPending = false
   end
 end
 
-local function preparePair(view1, p1, i, view2, p2, j, k)
-  prepareSide(view1, p1, i, k)
-  prepareSide(view2, p2, j, k)
-  k = k or 1.0
+local function preparePair(view1, p1, i, view2, p2, j)
+  prepareSide(view1, p1, i)
+  prepareSide(view2, p2, j)
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   local right, bottom, left, top = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
   if JIT then
@@ -4138,7 +4135,7 @@ local function preparePair(view1, p1, i, view2, p2, j, k)
     if boxes2[b - 3] < left then left = boxes2[b - 3] end
     if boxes2[b - 2] < top then top = boxes2[b - 2] end
   end
-  return view1.turns[i], view2.turns[j], (right - left) * k, (bottom - top) * k
+  return view1.turns[i], view2.turns[j], right - left, bottom - top
 end
 
 -- Whether some edge of the part `edges` (turn its area sign) separates it from the part
@@ -4166,7 +4163,7 @@ end
 -- Whether part p1 (number i of view1) and p2 (number j of view2) overlap, exactly: the boolean
 -- addPair returns, without building faces.
 local function pairOverlaps(view1, p1, i, view2, p2, j)
-  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, false)
+  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j)
   if turn1 == 0 or turn2 == 0 then return false end   -- zero area: never collides
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   return not (edgesSeparate(p1, n1, turn1, p2, n2, spanX, spanY)
