@@ -3696,9 +3696,18 @@ do   -- this section's helpers are local to it
 -- Which pairs. D lies in the box [A's box - B's box]. The pairs whose boxes overlap (D holds the
 -- origin) come first. The nearest point t free among them is the least push of all when it lies
 -- outside every other D too, as more pairs can only take free points away; so a pair is added
--- only when its box of D comes within 4 delta of t (largest coordinate gap), and the nearest
--- free point is sought again, round after round. (The distance from the origin to a box of D
--- bounds the one from t from below, less |t|: most pairs are passed over on that.)
+-- only when its box of D comes within 4 delta of t on every side, and the nearest free point
+-- is sought again, round after round. Against a flat shape only the parts in a window around
+-- it are visited for that while |t| is at most half the window: the others' boxes of D lie
+-- farther than a window from the origin.
+--
+-- Which feet and crossings. The feet are tried nearest first (the nearest and the second
+-- nearest are kept as the faces are made), as the nearest free foot is the first free one in
+-- the order of reach, then of faces; a crossing is no nearer than either of its lines, so
+-- crossings are sought only among the lines nearer than the best so far, and not at all when
+-- only one can be (every outer edge's line at least as far as the best, and every internal
+-- one). So on a floor the push usually costs the faces of the pairs and one or two freeness
+-- checks.
 --
 -- Margin: one push separates. The faces are computed in floating point and the moved vertices
 -- are rounded, so a candidate must lie outside every D widened by delta, and feet and crossings
@@ -3728,10 +3737,11 @@ end
 
 -- The preparation each list of parts gets on first use, kept while the list lives (weak keys):
 -- per part a copy of its coordinates, its bounding box, its area sign and its outward unit edge
--- normals, and which of its edges are internal: internal[k][e] is 1 when the edge of part k
--- from vertex e to vertex e + 1 (the last to the first) is covered by edges of other parts
--- running the opposite way along the same line (shared with the neighbours, whole or in pieces),
--- else 0 (numbers, not true and nil: on LuaJIT a load whose type varies is a side exit).
+-- normals, and which of its edges are internal: internal[k][i] is 1 when the edge of part k
+-- ending at vertex index i (odd; from the vertex before, the last for the first) is covered by
+-- edges of other parts running the opposite way along the same line (shared with the
+-- neighbours, whole or in pieces), else 0 (numbers, not true and nil: on LuaJIT a load whose
+-- type varies is a side exit).
 -- Keeping it right. Reading every coordinate on every call costs as much as the pair tests a
 -- call needs, so each call checks, per part, only its table, its length and the four
 -- coordinates on its box (the vertices that gave xmin, ymin, xmax, ymax). That is exact for a
@@ -3767,14 +3777,18 @@ local function covered(covers, lo, hi)
 end
 
 -- A view of a shape is what the collisions read of it: count, lengths[k], boxes (xmin, ymin,
--- xmax, ymax of part k at 4k - 3 .. 4k; in extremes, the indices of the coordinates that gave
--- them), turns[k] (area sign 1, -1 or 0: signs, never magnitudes, are multiplied), normals[k]
--- (the outward unit normal of the edge ending at vertex index i at [i], [i + 1]), internal[k],
--- and over all parts size (the largest coordinate magnitude) and the box left, top, right,
--- bottom. A list's preparation is its view; a flat array is seen through one of two scratch
--- views, filled on every call.
+-- xmax, ymax of part k at 4k - 3 .. 4k), turns[k] (area sign 1, -1 or 0: signs, never
+-- magnitudes, are multiplied), normals[k] (the outward unit normal of the edge ending at vertex
+-- index i at [i], [i + 1]), internal[k], and over all parts size (the largest coordinate
+-- magnitude) and the box left, top, right, bottom. A list's preparation is its view, with
+-- records[k] for the per-call checks: xmin, ymin, xmax, ymax of part k at [1] .. [4] again, the
+-- indices of the coordinates that gave them at [5] .. [8], the part's table at [9] (false after
+-- a non-finite coordinate) and its length at [10] (constant indices: one instruction each on
+-- PUC Lua, in the loop over every part). A flat array is seen through one of two scratch views,
+-- filled on every call.
 
--- The box of part k (n coordinates) into view.boxes; false when a coordinate is inf or NaN.
+-- The box of part k (n coordinates) of a list into view.boxes and its record; false when a
+-- coordinate is inf or NaN.
 local function partBox(view, k, part, n)
   local finite = 0.0
   local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
@@ -3788,9 +3802,10 @@ local function partBox(view, k, part, n)
     if y > ymax then ymax, iymax = y, i + 1 end
   end
   if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
-  local boxes, extremes, b = view.boxes, view.extremes, 4 * k
+  local boxes, record, b = view.boxes, view.records[k], 4 * k
   boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
-  extremes[b - 3], extremes[b - 2], extremes[b - 1], extremes[b] = ixmin, iymin, ixmax, iymax
+  record[1], record[2], record[3], record[4] = xmin, ymin, xmax, ymax
+  record[5], record[6], record[7], record[8] = ixmin, iymin, ixmax, iymax
   return finite == 0
 end
 
@@ -3814,7 +3829,18 @@ local function partNormals(view, k, part, n)
   for i = 1, n - 1, 2 do
     local bx, by = part[i] + 0.0, part[i + 1] + 0.0
     local ux, uy = 0.0, 0.0   -- a repeated vertex gives no edge
-    if bx ~= ax or by ~= ay then ux, uy = unit((by - ay) * turn, (ax - bx) * turn) end
+    if bx ~= ax or by ~= ay then
+      ux, uy = (by - ay) * turn, (ax - bx) * turn
+      if JIT then
+        ux, uy = unit(ux, uy)
+      else   -- unit's numbers, without its calls (PUC Lua pays for each, math.max and abs too)
+        local m, mx = uy < 0 and -uy or uy, ux < 0 and -ux or ux
+        if mx > m then m = mx end
+        ux, uy = ux / m, uy / m
+        local len = sqrt(ux * ux + uy * uy)
+        ux, uy = ux / len, uy / len
+      end
+    end
     normals[i], normals[i + 1] = ux, uy
     ax, ay = bx, by
   end
@@ -3840,16 +3866,16 @@ end
 local function prepareParts(fname, argname, parts)
   local count = #parts
   local info = { count = count, lengths = {}, internal = {}, copies = {}, boxes = {}, turns = {},
-                 normals = {}, extremes = {}, tables = {}, checked = {} }
+                 normals = {}, records = {}, checked = {} }
   for k = 1, count do
     local part = parts[k]
     local n = #part
     local copy = {}
     for i = 1, n do copy[i] = part[i] end
     local flags = {}
-    for e = 1, n / 2 do flags[e] = 0 end
+    for i = 1, n - 1, 2 do flags[i] = 0 end
     info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
-    info.tables[k], info.checked[k] = part, 0
+    info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n }, 0
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
     end
@@ -3898,7 +3924,10 @@ local function prepareParts(fname, argname, parts)
     if #E.covers > 0 then
       local onX = E.ax ~= E.bx
       local lo, hi = edgeSpan(E.ax, E.ay, E.bx, E.by, onX)
-      if covered(E.covers, lo, hi) then info.internal[E.k][E.e] = 1 end
+      if covered(E.covers, lo, hi) then   -- the edge ends at vertex e % (n / 2) + 1
+        local n = info.lengths[E.k]
+        info.internal[E.k][2 * (E.e % (n / 2)) + 1] = 1
+      end
     end
   end
   preparedParts[parts] = info
@@ -3926,7 +3955,7 @@ local callStamp = 0   -- counts the calls that push: checked[k] == callStamp whe
 -- non-finite error at `level` (counted from here, 1).
 local function refreshPart(view, k, part, n, level)
   if not partBox(view, k, part, n) then
-    view.tables[k] = false   -- the next call refreshes the part again, and raises again
+    view.records[k][9] = false   -- the next call refreshes the part again, and raises again
     error(("%s: %s holds a non-finite coordinate"):format(view.fname, view.argname), level)
   end
   partNormals(view, k, part, n)
@@ -3953,27 +3982,25 @@ local function listView(fname, argname, shape)
   local info = preparedParts[shape]
   if info and info.count == #shape then
     info.fname, info.argname = fname, argname
-    local lengths, tables, boxes, extremes = info.lengths, info.tables, info.boxes, info.extremes
+    local records = info.records
     local changed = false
     for k = 1, info.count do
-      local part, n = shape[k], lengths[k]
-      if part ~= tables[k] then   -- another table, or a non-finite coordinate before (false)
+      local part, record = shape[k], records[k]
+      local n = record[10]
+      if part ~= record[9] then   -- another table, or a non-finite coordinate before (false)
         if type(part) ~= "table" or #part ~= n then
           changed = nil   -- prepare again (or raise the error)
           break
         end
-        tables[k], changed = part, true
+        record[9], changed = part, true
         refreshPart(info, k, part, n, 5)
       elseif #part ~= n then   -- another length
         changed = nil
         break
-      elseif n >= 6 then
-        local b = 4 * k
-        if part[extremes[b - 3]] ~= boxes[b - 3] or part[extremes[b - 2]] ~= boxes[b - 2]
-            or part[extremes[b - 1]] ~= boxes[b - 1] or part[extremes[b]] ~= boxes[b] then
-          changed = true
-          refreshPart(info, k, part, n, 5)
-        end
+      elseif n >= 6 and (part[record[5]] ~= record[1] or part[record[6]] ~= record[2]
+          or part[record[7]] ~= record[3] or part[record[8]] ~= record[4]) then
+        changed = true
+        refreshPart(info, k, part, n, 5)
       end
     end
     if changed ~= nil then
@@ -3990,20 +4017,21 @@ end
 -- The two views of flat arrays (one per argument), refilled on every call. `pending`: the area
 -- sign and normals are still to compute (only a push on overlapping boxes needs them);
 -- `turnPending`: the area sign is (a boolean on overlapping boxes needs only that). No edge
--- of a flat array is internal: internal[1] holds 0 for edges 1 .. edgeRoom, grown when a
+-- of a flat array is internal: internal[1] holds 0 at vertex indices 1 .. edgeRoom, grown when a
 -- larger array comes (once, never shrunk).
 local function newFlatView()
-  return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {}, extremes = {},
+  return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {},
            turns = {}, normals = { {} }, pending = false, turnPending = false }
 end
 local flatView1, flatView2 = newFlatView(), newFlatView()
 
--- The box of a flat array (n coordinates) into view as part k = 1, as partBox gives it, and
--- whether every coordinate is finite. On LuaJIT min and max four vertices a round, the last round padded
--- with the last vertex (as leastProjection, for the same reason: partBox's branches on every
--- vertex were 9 % of a push's time on the crate and floor of bench/compound.lua by `luajit
--- -jp=f`), and without the extremes' indices, which only a list's parts keep. PUC Lua: partBox.
-local flatBox = partBox
+-- The box of a flat array (n coordinates) into view as part k = 1, as partBox gives it but
+-- without the record (the extremes' indices, which only a list's parts keep), and whether every
+-- coordinate is finite. On LuaJIT min and max four vertices a round, the last round padded with
+-- the last vertex (as leastProjection, for the same reason: partBox's branches on every vertex
+-- were 9 % of a push's time on the crate and floor of bench/compound.lua by `luajit -jp=f`).
+-- On PUC Lua partBox's loop, and shapeBox's numbers for the one part without its calls.
+local flatBox
 if JIT then
   flatBox = function(view, _, shape, n)
     local finite = 0.0
@@ -4023,36 +4051,64 @@ if JIT then
     boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
     return finite == 0
   end
+else
+  flatBox = function(view, _, shape, n)
+    local finite = 0.0
+    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    for i = 1, n - 1, 2 do
+      local x, y = shape[i] + 0.0, shape[i + 1] + 0.0
+      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
+      if x < xmin then xmin = x end
+      if x > xmax then xmax = x end
+      if y < ymin then ymin = y end
+      if y > ymax then ymax = y end
+    end
+    if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+    local boxes = view.boxes
+    boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+    local magnitude = 0.0
+    if xmin <= xmax then   -- as shapeBox: max(0, -xmin, xmax, -ymin, ymax), the first of equals
+      if -xmin > magnitude then magnitude = -xmin end
+      if xmax > magnitude then magnitude = xmax end
+      if -ymin > magnitude then magnitude = -ymin end
+      if ymax > magnitude then magnitude = ymax end
+    else
+      xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    end
+    view.magnitude, view.left, view.top, view.right, view.bottom = magnitude, xmin, ymin, xmax, ymax
+    return finite == 0
+  end
 end
 
--- Fills `view` for the flat array shape. Raises the argument errors at the caller of the public
--- function (level 4).
+-- Fills `view` for the flat array shape and returns it; or nil and the argument error's message
+-- (the caller raises it: after a list's errors, when the list is the first argument).
 local function flatView(fname, argname, shape, view)
   if type(shape) ~= "table" then
-    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), 4)
+    return nil, ("%s: %s must be a table, got %s"):format(fname, argname, type(shape))
   end
   local n = #shape
   if n % 2 ~= 0 then
-    error(("%s: %s must hold an even number of coordinates, got %d"):format(fname, argname, n), 4)
+    return nil, ("%s: %s must hold an even number of coordinates, got %d"):format(fname, argname, n)
   end
   if not flatBox(view, 1, shape, n) then
-    error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+    return nil, ("%s: %s holds a non-finite coordinate"):format(fname, argname)
   end
-  if n / 2 > view.edgeRoom then
+  if n > view.edgeRoom then
     local flags = view.internal[1]
-    for e = view.edgeRoom + 1, n / 2 do flags[e] = 0 end
-    view.edgeRoom = n / 2
+    for i = view.edgeRoom + 1, n do flags[i] = 0 end
+    view.edgeRoom = n
   end
   view.lengths[1], view.pending, view.turnPending = n, true, true
-  shapeBox(view)
+  if JIT then shapeBox(view) end   -- PUC Lua: flatBox did
   return view
 end
 
 -- Scratch space reused by every call (grown once, never shrunk): no garbage per frame.
 local faceX, faceY, faceC = {}, {}, {}   -- the half-planes faceX tx + faceY ty < faceC
 local faceSeam = {}                -- 1 for a face from an internal edge (no foot on it), else 0
+local faceReach = {}               -- |faceC + lift|: how near the origin the face's lifted line passes
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
-local pairGaps = {}                -- per pair of parts i, j (at (i - 1) count2 + j): see collideParts
+local pairAdded = {}               -- per pair of parts i, j (at (i - 1) count2 + j): callStamp once in
 
 -- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
 -- checks of the views did not see (one off the box of a list's part) raises the argument error
@@ -4092,52 +4148,77 @@ local function edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX,
   return -lo <= tol and (-lo < -tol or not vertexInside(ax, ay, bx, by, ax, ay, turn, other, no))
 end
 
+local faceLift = 0.0   -- lift (see nearestFree) of the call under way, for faceReach
+-- The faces with the nearest and the second nearest foot so far (first in face order among
+-- equals), their reaches, and the nearest reach of an internal edge's face: kept by addFaces.
+local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0, huge, huge
+
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
 -- part give (turn its area sign, normals its outward unit normals; sense 1 for a part of the
 -- first shape, -1 for one of the second, whose outward normal points the other way in t), with
--- `other` the part it is paired with. Coordinates are scaled by k. Returns the last index used
--- and whether some edge separates the two parts, decided exactly (spanX, spanY bound
--- the scaled coordinate differences, for projectionTolerance).
+-- `other` the part it is paired with, and each face's reach (see nearestFree); keeps the
+-- nearest foot's face. Coordinates are scaled by k. Returns the last index used and whether
+-- some edge separates the two parts, decided exactly (spanX, spanY bound the scaled coordinate
+-- differences, for projectionTolerance).
 local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
   local separated = false
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+  local foot2, foot2Reach = secondFoot, secondReach
+  local jit = JIT   -- a local: PUC Lua reads an upvalue by an extra instruction
+  local plain = k == 1 and not jit   -- PUC Lua, unscaled: minProjection's loop inline
   -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
   local tolBound = 16 * EPS * (spanX + spanY)
-  local e = ne / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
   for i = 1, ne - 1, 2 do
     local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
     if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
       local ux, uy = normals[i], normals[i + 1]
-      local lo
-      if k == 1 then   -- the same numbers as the scaled loop below
-        lo = leastProjection(other, no, ax, ay, ux, uy)
-      else
+      local lo = huge
+      if plain then   -- minProjection's loop, without the call's instructions
+        for j = 1, no - 1, 2 do
+          local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
+          if s < lo then lo = s end
+        end
+      elseif k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
         local kax, kay = ax * k, ay * k
-        lo = huge
         for j = 1, no - 1, 2 do
           local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
           if s < lo then lo = s end
         end
+      else
+        lo = leastProjection(other, no, ax, ay, ux, uy)
       end
       -- -lo > tolBound >= projectionTolerance: the edge cannot separate
       if not separated and -lo <= tolBound then
         separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
       end
       top = top + 1
-      faceX[top], faceY[top], faceC[top] = ux * sense, uy * sense, -lo
-      faceSeam[top] = internal[e]
+      fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
+      local flag, d = internal[i], lift - lo
+      if jit then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
+      seam[top], reach[top] = flag, d
+      if flag ~= 0 then
+        if d < seamReach then seamReach = d end
+      elseif d < footReach then
+        foot, footReach, foot2, foot2Reach = top, d, foot, footReach
+      elseif d < foot2Reach then
+        foot2, foot2Reach = top, d
+      end
     end
-    ax, ay, e = bx, by, (i + 1) / 2
+    ax, ay = bx, by
   end
+  nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
   return top, separated
 end
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
 local function pushFree(tx, ty, np, margin)
+  local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
   for p = 1, np do
     local inside = true
-    for f = faceFirst[p], faceFirst[p + 1] - 1 do
-      if faceX[f] * tx + faceY[f] * ty >= faceC[f] + margin then
+    for f = first[p], first[p + 1] - 1 do
+      if fx[f] * tx + fy[f] * ty >= fc[f] + margin then
         inside = false
         break
       end
@@ -4148,52 +4229,55 @@ local function pushFree(tx, ty, np, margin)
 end
 
 local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
-local faceReach = {}   -- scratch for nearestFree: |faceC + lift|, how near each face's line passes
 
 -- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
 local function nearestFree(np, margin)
+  local fx, fy, fc, reach = faceX, faceY, faceC, faceReach   -- locals: PUC Lua reads upvalues slower
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
-  -- The nearest foot first: it is usually free, and then no other foot is nearer (the feet
-  -- loop below keeps only nearer ones, so it is skipped).
-  local nearest, nearestD = 0, huge
-  for f = 1, last do
-    local d = faceC[f] + lift
-    if JIT then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
-    faceReach[f] = d
-    if faceSeam[f] == 0 and d < nearestD then nearest, nearestD = f, d end
+  -- The nearest foot first, then the second nearest (addFaces keeps them): usually one of them
+  -- is free, and then no other foot is nearer (the feet loop below would pick the first free one
+  -- in the order of reach, then of faces; it runs when neither is free).
+  local found = 0
+  if nearestFoot > 0 then
+    local d = fc[nearestFoot] + lift
+    local tx, ty = fx[nearestFoot] * d, fy[nearestFoot] * d
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY, found = nearestReach, tx, ty, 1 end
   end
-  local nearestFreed = false
-  if nearest > 0 then
-    local d = faceC[nearest] + lift
-    local tx, ty = faceX[nearest] * d, faceY[nearest] * d
-    if pushFree(tx, ty, np, margin) then best, bestX, bestY, nearestFreed = nearestD, tx, ty, true end
+  if found == 0 and secondFoot > 0 then
+    local d = fc[secondFoot] + lift
+    local tx, ty = fx[secondFoot] * d, fy[secondFoot] * d
+    if pushFree(tx, ty, np, margin) then best, bestX, bestY, found = secondReach, tx, ty, 2 end
   end
-  if not nearestFreed then
+  if found == 0 then
     for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
-      if faceSeam[f] == 0 and faceReach[f] < best then
-        local d = faceC[f] + lift
-        local tx, ty = faceX[f] * d, faceY[f] * d
-        if pushFree(tx, ty, np, margin) then best, bestX, bestY = faceReach[f], tx, ty end
+      if faceSeam[f] == 0 and reach[f] < best then
+        local d = fc[f] + lift
+        local tx, ty = fx[f] * d, fy[f] * d
+        if pushFree(tx, ty, np, margin) then best, bestX, bestY = reach[f], tx, ty end
       end
     end
+  elseif seamReach >= best then
+    -- Every outer edge's line passes at least as far as the nearest foot (found 1) or the
+    -- second (found 2: all but the nearest): at most one line nearer than the best, no crossing.
+    return best, bestX, bestY
   end
   -- Crossings of two lines, each nearer than the best so far (a crossing is no nearer than
   -- either line): only the lines nearer than the best now can take part, usually a few of them.
   local count = 0
   for f = 1, last do
-    if faceReach[f] < best then count = count + 1; nearLines[count] = f end
+    if reach[f] < best then count = count + 1; nearLines[count] = f end
   end
   for a = 1, count - 1 do
     local f = nearLines[a]
-    if faceReach[f] < best then
-      local c1, x1, y1 = faceC[f] + lift, faceX[f], faceY[f]
+    if reach[f] < best then
+      local c1, x1, y1 = fc[f] + lift, fx[f], fy[f]
       for b = a + 1, count do
         local g = nearLines[b]
-        if faceReach[g] < best then
-          local c2 = faceC[g] + lift
-          local x2, y2 = faceX[g], faceY[g]
+        if reach[g] < best then
+          local c2 = fc[g] + lift
+          local x2, y2 = fx[g], fy[g]
           local det = x1 * y2 - y1 * x2
           if det ~= 0 then
             local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
@@ -4207,29 +4291,34 @@ local function nearestFree(np, margin)
   return best, bestX, bestY
 end
 
--- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for a pair test:
--- a list's part compared with its whole copy (the non-finite error raised at the public
--- function's caller, level 8 from checkCopy), a flat view's area sign computed and, for a push
--- (k given), its normals. Returns their area signs and spanX, spanY (scaled by k, or 1 for a
--- boolean) bounding their coordinate differences.
-local function prepareSide(view, p, i, k)
+-- Brings part p1 (number i of view1) and p2 (number j of view2) up to date for the boolean's
+-- pair test (addPair does the same for a push, with the flat view's normals): a list's part
+-- compared with its whole copy (the non-finite error raised at the public function's caller,
+-- level 7 from checkCopy), a flat view's area sign computed. Returns their area signs and
+-- spanX, spanY bounding their coordinate differences.
+local function prepareSide(view, p, i)
   if view.copies then
-    if view.checked[i] ~= callStamp then checkCopy(view, i, p, 8) end
-  elseif k then
-    if view.pending then partNormals(view, 1, p, #p); view.pending = false end
+    if view.checked[i] ~= callStamp then checkCopy(view, i, p, 7) end
   elseif view.turnPending then
     partTurn(view, 1, p, #p); view.turnPending = false
   end
 end
 
-local function preparePair(view1, p1, i, view2, p2, j, k)
-  prepareSide(view1, p1, i, k)
-  prepareSide(view2, p2, j, k)
-  k = k or 1.0
+local function preparePair(view1, p1, i, view2, p2, j)
+  prepareSide(view1, p1, i)
+  prepareSide(view2, p2, j)
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
-  local spanX = (max(boxes1[a - 1], boxes2[b - 1]) - min(boxes1[a - 3], boxes2[b - 3])) * k
-  local spanY = (max(boxes1[a], boxes2[b]) - min(boxes1[a - 2], boxes2[b - 2])) * k
-  return view1.turns[i], view2.turns[j], spanX, spanY
+  local right, bottom, left, top = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
+  if JIT then
+    right, bottom = max(right, boxes2[b - 1]), max(bottom, boxes2[b])
+    left, top = min(left, boxes2[b - 3]), min(top, boxes2[b - 2])
+  else   -- the same numbers without calls
+    if boxes2[b - 1] > right then right = boxes2[b - 1] end
+    if boxes2[b] > bottom then bottom = boxes2[b] end
+    if boxes2[b - 3] < left then left = boxes2[b - 3] end
+    if boxes2[b - 2] < top then top = boxes2[b - 2] end
+  end
+  return view1.turns[i], view2.turns[j], right - left, bottom - top
 end
 
 -- Whether some edge of the part `edges` (turn its area sign) separates it from the part
@@ -4257,7 +4346,7 @@ end
 -- Whether part p1 (number i of view1) and p2 (number j of view2) overlap, exactly: the boolean
 -- addPair returns, without building faces.
 local function pairOverlaps(view1, p1, i, view2, p2, j)
-  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, false)
+  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j)
   if turn1 == 0 or turn2 == 0 then return false end   -- zero area: never collides
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   return not (edgesSeparate(p1, n1, turn1, p2, n2, spanX, spanY)
@@ -4267,8 +4356,31 @@ end
 -- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair
 -- np + 1. Returns np, top and whether the parts overlap, decided exactly.
 local function addPair(view1, p1, i, view2, p2, j, k, np, top)
-  local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j, k)
+  -- preparePair's work inline (PUC Lua pays for every call): checkCopy's level counts from there
+  if view1.copies then
+    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 5) end
+  elseif view1.pending then
+    partNormals(view1, 1, p1, #p1); view1.pending = false
+  end
+  if view2.copies then
+    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 5) end
+  elseif view2.pending then
+    partNormals(view2, 1, p2, #p2); view2.pending = false
+  end
+  local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
+  local right, bottom, left, low = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
+  if JIT then
+    right, bottom = max(right, boxes2[b - 1]), max(bottom, boxes2[b])
+    left, low = min(left, boxes2[b - 3]), min(low, boxes2[b - 2])
+  else   -- the same numbers without calls
+    if boxes2[b - 1] > right then right = boxes2[b - 1] end
+    if boxes2[b] > bottom then bottom = boxes2[b] end
+    if boxes2[b - 3] < left then left = boxes2[b - 3] end
+    if boxes2[b - 2] < low then low = boxes2[b - 2] end
+  end
+  local spanX, spanY = (right - left) * k, (bottom - low) * k
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   faceFirst[np + 1] = top + 1
   local apart1, apart2
@@ -4280,15 +4392,119 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   return np + 1, top, not (apart1 or apart2)
 end
 
+local overlapping = {}   -- scratch: the parts of a list whose boxes overlap a flat shape's box
+local nearParts = {}     -- scratch: those whose boxes come within the window of it (see below)
+
+-- The parts of a prepared list whose boxes overlap the box x0, y0, x1, y1 (strictly), in order,
+-- into overlapping, and those whose boxes overlap it grown by `window` on every side into
+-- nearParts; returns both numbers. Unless `current` (the list was just brought up to date by
+-- listView), first sees whether some part changed, as listView does (its table, its length, the
+-- coordinates on its box: see preparedParts), and then returns nil at once: the same checks in
+-- the same loop as the box tests, which read the same boxes (a push against a flat shape).
+-- Two bodies: on LuaJIT the box tests by the largest gap, one branch a part; on PUC Lua by
+-- comparisons, most parts failing the first or second.
+local partsOverlapping
+if JIT then
+  partsOverlapping = function(info, shape, current, x0, y0, x1, y1, window)
+    local found, near = 0, 0
+    local records = info.records
+    for k = 1, info.count do
+      local part, record = shape[k], records[k]
+      local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
+      if not current then
+        local n = record[10]
+        if part ~= record[9] or #part ~= n then return nil end
+        if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+            or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+          return nil
+        end
+      end
+      -- the largest gap between the boxes (< 0 when they overlap: a - b < 0 exactly when a < b,
+      -- no NaN), by max: one branch for most parts (PUC Lua's tests: four, each a side exit)
+      local gap = max(xmin - x1, x0 - xmax, ymin - y1, y0 - ymax)
+      if gap < window then
+        near = near + 1
+        nearParts[near] = k
+        if gap < 0 then
+          found = found + 1
+          overlapping[found] = k
+        end
+      end
+    end
+    return found, near
+  end
+else
+  partsOverlapping = function(info, shape, current, x0, y0, x1, y1, window)
+    local found, near = 0, 0
+    local wx0, wy0, wx1, wy1 = x0 - window, y0 - window, x1 + window, y1 + window
+    local records = info.records
+    for k = 1, info.count do
+      local part, record = shape[k], records[k]
+      local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
+      if not current then
+        local n = record[10]
+        if part ~= record[9] or #part ~= n then return nil end
+        if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+            or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+          return nil
+        end
+      end
+      if xmin < wx1 and wx0 < xmax and ymin < wy1 and wy0 < ymax then
+        near = near + 1
+        nearParts[near] = k
+        if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
+          found = found + 1
+          overlapping[found] = k
+        end
+      end
+    end
+    return found, near
+  end
+end
+
 -- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
 -- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
 -- overlap, dx, dy, or false.
 function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
-  local view1 = parts1 and listView(fname, "points1", shape1)
-    or flatView(fname, "points1", shape1, flatView1)
-  local view2 = parts2 and listView(fname, "points2", shape2)
-    or flatView(fname, "points2", shape2, flatView2)
+  local view1, view2, found, nearCount, window
+  if wantPush and parts1 ~= parts2 then
+    -- A list against a flat shape: the list's checks and its parts' box tests in one loop
+    -- (partsOverlapping), so the flat shape's box first, its argument errors raised after the
+    -- list's when the list comes first, as below.
+    local list, flat, listName, flatName = shape1, shape2, "points1", "points2"
+    if parts2 then list, flat, listName, flatName = shape2, shape1, "points2", "points1" end
+    local flatSide, message = flatView(fname, flatName, flat, parts1 and flatView2 or flatView1)
+    if not flatSide and parts2 then error(message, 3) end
+    local info = preparedParts[list]
+    local boxes = flatSide and flatSide.boxes
+    -- the window for the pairs the search may add later: the flat shape's width plus height
+    -- (pushes are mostly shorter than half that: see the loop after the search)
+    window = flatSide and (boxes[3] - boxes[1]) + (boxes[4] - boxes[2])
+    if flatSide and info and info.count == #list then
+      found, nearCount = partsOverlapping(info, list, false, boxes[1], boxes[2], boxes[3], boxes[4], window)
+    end
+    if found then
+      info.fname, info.argname = fname, listName
+    else
+      info = listView(fname, listName, list)
+      if not flatSide then error(message, 3) end
+      found, nearCount = partsOverlapping(info, list, true, boxes[1], boxes[2], boxes[3], boxes[4], window)
+    end
+    if parts1 then view1, view2 = info, flatSide else view1, view2 = flatSide, info end
+  else
+    local message
+    if parts1 then view1 = listView(fname, "points1", shape1)
+    else
+      view1, message = flatView(fname, "points1", shape1, flatView1)
+      if not view1 then error(message, 3) end
+    end
+    if parts2 then view2 = listView(fname, "points2", shape2)
+    else
+      view2, message = flatView(fname, "points2", shape2, flatView2)
+      if not view2 then error(message, 3) end
+    end
+  end
   local count1, count2 = view1.count, view2.count
   local boxes1, boxes2 = view1.boxes, view2.boxes
   local magnitude = max(view1.magnitude, view2.magnitude)
@@ -4321,62 +4537,97 @@ function collideParts(fname, shape1, shape2, wantPush)
   local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
     + (max(view1.bottom, view2.bottom) - min(view1.top, view2.top))) * k
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- delta above: 64 eps E + 2 eps S
-  -- The pairs whose boxes overlap go in now; every other pair gets the distance (largest
-  -- coordinate gap) from the origin to the box of its D in pairGap (huge when a part has no box:
-  -- the empty box's huge minus any coordinate is huge; or once the pair is in), and `nearest`
-  -- is the least of those.
-  -- One loop over the pairs, not two nested (on LuaJIT an inner loop of one part, as for a flat
-  -- second shape, costs a trace exit for every part of the first).
-  local np, top, hit, nearest = 0, 0, false, huge
-  local pairGap = pairGaps   -- a local: PUC Lua reads an upvalue by an extra instruction
-  local i, j = 1, 0
-  for pair = 1, count1 * count2 do
-    if j == count2 then i, j = i + 1, 1 else j = j + 1 end
-    local a, b = 4 * i, 4 * j
-    -- a - b < 0 exactly when a < b: no NaN, as an empty box is (huge, huge, -huge, -huge)
-    local gapX, gapY = boxes1[a - 3] - boxes2[b - 1], boxes1[a - 2] - boxes2[b]
-    local gapX2, gapY2 = boxes2[b - 3] - boxes1[a - 1], boxes2[b - 2] - boxes1[a]
-    if JIT then   -- no side exits (see minProjection)
-      gapX, gapY = max(gapX, gapX2), max(gapY, gapY2)
-    else          -- no calls
-      if gapX2 > gapX then gapX = gapX2 end
-      if gapY2 > gapY then gapY = gapY2 end
-    end
-    if gapX < 0 and gapY < 0 then
-      pairGap[pair] = huge
+  -- The pairs whose boxes overlap go in now, marked in pairAdded; the others when their box of D
+  -- comes near the best free point (below). A pair is numbered (i - 1) count2 + j; against a
+  -- flat shape, by the list's part. One loop over the pairs, not two nested (on LuaJIT an inner
+  -- loop of one part, as for a flat second shape, costs a trace exit for every part of the
+  -- first).
+  local np, top, hit = 0, 0, false
+  local added = pairAdded   -- a local: PUC Lua reads an upvalue by an extra instruction
+  faceLift = 1.25 * margin   -- as nearestFree's lift
+  nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0, huge, huge
+  if found then
+    for f = 1, found do
+      local part = overlapping[f]
+      added[part] = callStamp
       local overlaps
-      np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
-        parts2 and shape2[j] or shape2, j, k, np, top)
+      if parts1 then
+        np, top, overlaps = addPair(view1, shape1[part], part, view2, shape2, 1, k, np, top)
+      else
+        np, top, overlaps = addPair(view1, shape1, 1, view2, shape2[part], part, k, np, top)
+      end
       if overlaps then hit = true end
-    else   -- >= 0, as not both are < 0; huge (inf) when a box is empty
-      local gap = (JIT and max(gapX, gapY) or gapX > gapY and gapX or gapY) * k
-      pairGap[pair] = gap
-      if gap < nearest then nearest = gap end
+    end
+  else
+    local i, j = 1, 0
+    for pair = 1, count1 * count2 do
+      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
+      local a, b = 4 * i, 4 * j
+      if boxes1[a - 3] < boxes2[b - 1] and boxes2[b - 3] < boxes1[a - 1]
+          and boxes1[a - 2] < boxes2[b] and boxes2[b - 2] < boxes1[a] then
+        added[pair] = callStamp
+        local overlaps
+        np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
+          parts2 and shape2[j] or shape2, j, k, np, top)
+        if overlaps then hit = true end
+      end
     end
   end
   if not hit then return false end
   local best, tx, ty = nearestFree(np, margin)
   local near = 4 * margin   -- a box of D this far from t cannot hold it, widened by delta
   while true do
-    local reach = best == huge and huge or max(abs(tx), abs(ty)) + near
-    if nearest >= reach then break end   -- every other box of D is farther from t than near
+    -- every pair not in yet whose box of D comes within near of t (on every side; when no point
+    -- is free yet, every pair whose parts have boxes) goes in
     local before = np
-    nearest, i, j = huge, 1, 0
-    for pair = 1, count1 * count2 do
-      if j == count2 then i, j = i + 1, 1 else j = j + 1 end
-      local gap = pairGap[pair]
-      if gap < reach then
+    local anyBox = best == huge
+    if found then
+      -- the list's part against the flat shape's box; the box of D is that of part - flat for a
+      -- list first, of flat - part for a list second: the same tests on -t (exact negations)
+      -- Only the parts near the flat shape (in nearParts) when t and near are at most half the
+      -- window: a part outside it lies a window or more away along x or y, so its box of D
+      -- lies farther than 2 (|t| + near) from the origin, more than near from t (the rounding
+      -- errors of these sums are a few eps of the coordinates, below near).
+      local listBoxes, fb = boxes1, boxes2
+      local sx, sy = tx, ty
+      if parts2 then listBoxes, fb, sx, sy = boxes2, boxes1, -tx, -ty end
+      local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
+      local reach, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
+      if reachY > reach then reach = reachY end
+      local useNear = not anyBox and 2 * (reach + near) <= window * k
+      for q = 1, useNear and nearCount or (parts1 and count1 or count2) do
+        local part = useNear and nearParts[q] or q
+        local a = 4 * part
+        if (anyBox and listBoxes[a - 3] <= listBoxes[a - 1]
+            or (listBoxes[a - 3] - fx1) * k - sx < near and sx - (listBoxes[a - 1] - fx0) * k < near
+            and (listBoxes[a - 2] - fy1) * k - sy < near and sy - (listBoxes[a] - fy0) * k < near)
+            and added[part] ~= callStamp then
+          added[part] = callStamp
+          if parts1 then
+            np, top = addPair(view1, shape1[part], part, view2, shape2, 1, k, np, top)
+          else
+            np, top = addPair(view1, shape1, 1, view2, shape2[part], part, k, np, top)
+          end
+        end
+      end
+    else
+      local i, j = 1, 0
+      for pair = 1, count1 * count2 do
+        if j == count2 then i, j = i + 1, 1 else j = j + 1 end
         local a, b = 4 * i, 4 * j
-        -- how far t lies beyond the box of D, along x and along y (< 0 inside)
-        local outX = max((boxes1[a - 3] - boxes2[b - 1]) * k - tx, tx - (boxes1[a - 1] - boxes2[b - 3]) * k)
-        local outY = max((boxes1[a - 2] - boxes2[b]) * k - ty, ty - (boxes1[a] - boxes2[b - 2]) * k)
-        if best == huge or max(outX, outY) < near then
-          pairGap[pair], gap = huge, huge
+        -- how far t lies beyond the box of D on each side, all four below near (an empty box,
+        -- of huge minus any coordinate, never is)
+        if (anyBox and boxes1[a - 3] <= boxes1[a - 1] and boxes2[b - 3] <= boxes2[b - 1]
+            or (boxes1[a - 3] - boxes2[b - 1]) * k - tx < near
+            and tx - (boxes1[a - 1] - boxes2[b - 3]) * k < near
+            and (boxes1[a - 2] - boxes2[b]) * k - ty < near
+            and ty - (boxes1[a] - boxes2[b - 2]) * k < near)
+            and added[pair] ~= callStamp then
+          added[pair] = callStamp
           np, top = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
             parts2 and shape2[j] or shape2, j, k, np, top)
         end
       end
-      if gap < nearest then nearest = gap end
     end
     if np == before then break end
     -- If the best point is still free among the pairs added, it stays (see "Which pairs").
@@ -4406,7 +4657,6 @@ local faceQ = {}                                        -- |faceAX, faceAY|: the
 -- the edge's line from the centre (u.t - faceC is how far t lies beyond it) and the edge's ends.
 -- Returns the last index.
 local function addCircleFaces(part, n, normals, internal, cx, cy, k, top)
-  local e = n / 2   -- the edge from the last vertex to the first comes first
   local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
   local kcx, kcy = cx * k, cy * k
   for i = 1, n - 1, 2 do
@@ -4418,9 +4668,9 @@ local function addCircleFaces(part, n, normals, internal, cx, cy, k, top)
       faceX[top], faceY[top], faceC[top] = ux, uy, ux * qax + uy * qay
       faceAX[top], faceAY[top], faceBX[top], faceBY[top] = qax, qay, bx * k - kcx, by * k - kcy
       faceQ[top] = sqrt(qax * qax + qay * qay)
-      faceSeam[top] = internal[e]
+      faceSeam[top] = internal[i]
     end
-    ax, ay, e = bx, by, (i + 1) / 2
+    ax, ay = bx, by
   end
   return top
 end
@@ -4550,7 +4800,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
         and boxes[4 * i - 2] < cy + r and cy - r < boxes[4 * i] then
       local part = shape[i]
       local n = #part
-      if view.checked[i] ~= callStamp then checkCopy(view, i, part, 5) end
+      if view.checked[i] ~= callStamp then checkCopy(view, i, part, 4) end
       if turns[i] ~= 0 then
         if circleCollision(part, n, cx, cy, r) then hit = true end
         np = np + 1
@@ -4578,7 +4828,7 @@ function collideCircleParts(fname, shape, cx, cy, r)
         local outY = max((boxes[a - 2] - cy - r) * k - ty, ty - (boxes[a] - cy + r) * k)
         if best == huge or max(outX, outY) < near then
           circleAdded[i] = callStamp
-          if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 5) end
+          if view.checked[i] ~= callStamp then checkCopy(view, i, shape[i], 4) end
           if turns[i] ~= 0 then
             np = np + 1
             faceFirst[np] = last + 1

@@ -7,6 +7,9 @@
 --                                              instruction count that load cannot disturb:
 --                                              valgrind --tool=callgrind at 1000 and 3000 calls,
 --                                              the difference over 2000 is the cost per call
+--   lua5.4 bench/compound.lua count pushFloor 300
+--                                              one timing row's VM instructions per call, by
+--                                              function (a debug.sethook count hook)
 -- The excess mode compares with spec/support/union.lua, which shares no code with polygon.lua.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local polygon = require "polygon"
@@ -114,6 +117,37 @@ local function only(key, count)
   os.exit(2)
 end
 
+-- One row's VM instructions per call, in all and by the function that ran them (the line it
+-- is defined at), the 20 largest.
+local function count(key, calls)
+  local body
+  for _, row in ipairs(timingRows()) do
+    if row[1] == key then body = row[3] end
+  end
+  if not body then
+    io.stderr:write("no row " .. tostring(key) .. "\n")
+    os.exit(2)
+  end
+  body(1)   -- the first call prepares the lists
+  local byFunction, total = {}, 0
+  local getinfo = debug.getinfo
+  debug.sethook(function()
+    local info = getinfo(2, "S")
+    local where = info.short_src .. ":" .. info.linedefined
+    byFunction[where] = (byFunction[where] or 0) + 1
+    total = total + 1
+  end, "", 1)
+  runRow(body, calls)
+  debug.sethook()
+  local places = {}
+  for where in pairs(byFunction) do places[#places + 1] = where end
+  table.sort(places, function(a, b) return byFunction[a] > byFunction[b] end)
+  print(("%s: %.0f VM instructions per call"):format(key, total / calls))
+  for i = 1, math.min(#places, 20) do
+    print(("%9.1f  %s"):format(byFunction[places[i]] / calls, places[i]))
+  end
+end
+
 -- Excess: random clusters of 1-5 convex parts against 1-2, terrains of 12 columns with a crate,
 -- terrains against clusters, both argument orders, at offsets 0, 1e5, 1e9 and 1e12 + 0.375.
 local function excess(seed, trials)
@@ -169,8 +203,10 @@ elseif mode == "excess" then
   excess(tonumber(arg[2]) or 11, tonumber(arg[3]) or 300)
 elseif mode == "only" then
   only(arg[2], tonumber(arg[3]) or 1000)
+elseif mode == "count" then
+  count(arg[2], tonumber(arg[3]) or 300)
 else
   io.stderr:write("usage: lua bench/compound.lua timing [calls] | excess [seed] [scenes]"
-    .. " | only key [calls]\n")
+    .. " | only key [calls] | count key [calls]\n")
   os.exit(2)
 end

@@ -230,6 +230,7 @@ describe("compound shapes per frame", function()
     local function body(i)
       local c = crates[i % 10 + 1]
       collideV(floor, c)
+      collideV(c, floor)
       collide(floor, c)
       collideV(twoPart[i % 10 + 1], floor)
       collideV(corner, c)

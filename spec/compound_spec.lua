@@ -7,6 +7,7 @@ local polygon = require "polygon"
 local parts = require "parts"
 local shapes = require "shapes"
 local oracle = require "oracle"
+local callsite = require "callsite"
 
 local collide, collideV = polygon.polygonsCollide, polygon.polygonsCollideV
 
@@ -276,6 +277,38 @@ describe("compound shapes", function()
         "polygonsCollide: points2[2] must hold an even number of coordinates, got 3")
       assert.has_error(function() collideV({ box }, nil) end,
         "polygonsCollideV: points2 must be a table, got nil")
+    end)
+
+    it("points the error at the caller's line, for a bad coordinate near the other shape or far", function()
+      local crate = parts.box(5, 5, 8, 8)
+      local function spoilt(k, i)   -- a prepared list whose part k gets a NaN at index i
+        local list = { parts.box(0, 0, 10, 10), parts.box(100, 0, 10, 10) }
+        assert.is_number(collideV(list, crate))
+        list[k][i] = 0 / 0
+        return list
+      end
+      -- part 1 (near the crate) off its box's watched coordinates, part 2 (far) on its xmax
+      for _, where in ipairs({ { 1, 5 }, { 2, 3 } }) do
+        local k, i = where[1], where[2]
+        assert.is_true(callsite.raisesAtCaller(collideV, { spoilt(k, i), crate }))
+        assert.is_true(callsite.raisesAtCaller(collideV, { crate, spoilt(k, i) }))
+        assert.is_true(callsite.raisesAtCaller(collideV, { spoilt(k, i), { crate } }))
+        assert.is_true(callsite.raisesAtCaller(collide, { spoilt(k, i), crate }))
+        assert.is_true(callsite.raisesAtCaller(polygon.polygonCircleCollideV, { spoilt(k, i), 6, 6, 2 }))
+      end
+    end)
+
+    it("raises the first argument's error first when both are bad", function()
+      local box = parts.box(0, 0, 10, 10)
+      for _, fn in ipairs({ collide, collideV }) do
+        local name = fn == collide and "polygonsCollide" or "polygonsCollideV"
+        assert.has_error(function() fn({ box, 5 }, { 1, 2, 3 }) end,
+          name .. ": points1[2] must be a table, got number")
+        assert.has_error(function() fn({ 1, 2, 3 }, { box, 5 }) end,
+          name .. ": points1 must hold an even number of coordinates, got 3")
+        assert.has_error(function() fn({ box, { 0 / 0, 0, 1, 0, 1, 1 } }, { 0, 0, 1 / 0, 0, 1, 1 }) end,
+          name .. ": points1 holds a non-finite coordinate")
+      end
     end)
 
     it("raises the same error as for flat polygons on a non-finite coordinate", function()
