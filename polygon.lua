@@ -1551,6 +1551,15 @@ local function edgeReached(edges, ne, turn, other, no, k)
   return vertexInside(ax, ay, edges[k], edges[k + 1], ax, ay, turn, other, no)
 end
 
+-- reachPast's and reachBoth's tolerance for polygons within a box of sides spanX and spanY:
+-- (16 eps)^2 (spanX^2 + spanY^2), or every axis decided exactly where that square would
+-- underflow (boxes below about 2^-450 only).
+local function squaredTolerance(spanX, spanY)
+  local tolSq = 2^-98 * (spanX * spanX + spanY * spanY)
+  if tolSq < 2^-1000 then return huge end
+  return tolSq
+end
+
 local reachPast, reachBoth
 if JIT then
   reachPast = function(edges, ne, turn, other, no, _, tolSq)
@@ -1878,10 +1887,7 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   end
   local squaredDepth, o, edgeEnd, far, owner, turn, lines, nl
   if both then
-    -- reachPast's tolerance, every axis decided exactly where the square would underflow (the
-    -- box of coordinates below about 2^-450 only)
-    local tolSq = 2^-98 * (spanX * spanX + spanY * spanY)   -- (16 eps)^2 (spanX^2 + spanY^2)
-    if tolSq < 2^-1000 then tolSq = huge end
+    local tolSq = squaredTolerance(spanX, spanY)
     if JIT then
       squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, tolSq)
       if not squaredDepth then return false end
@@ -4345,10 +4351,16 @@ end
 
 -- Whether part p1 (number i of view1) and p2 (number j of view2) overlap, exactly: the boolean
 -- addPair returns, without building faces.
+-- On PUC Lua the SAT engine's calipers over both parts (reachBoth) decide it, one projection an
+-- edge; on LuaJIT, which runs the engine's flat loop, edgesSeparate, which stops at the first
+-- separating edge.
 local function pairOverlaps(view1, p1, i, view2, p2, j)
   local turn1, turn2, spanX, spanY = preparePair(view1, p1, i, view2, p2, j)
   if turn1 == 0 or turn2 == 0 then return false end   -- zero area: never collides
   local n1, n2 = view1.lengths[i], view2.lengths[j]
+  if not JIT then
+    return reachBoth(p1, n1, turn1, p2, n2, turn2, squaredTolerance(spanX, spanY)) ~= false
+  end
   return not (edgesSeparate(p1, n1, turn1, p2, n2, spanX, spanY)
     or edgesSeparate(p2, n2, turn2, p1, n1, spanX, spanY))
 end
@@ -4468,7 +4480,7 @@ end
 function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
   local view1, view2, found, nearCount, window
-  if wantPush and parts1 ~= parts2 then
+  if parts1 ~= parts2 then
     -- A list against a flat shape: the list's checks and its parts' box tests in one loop
     -- (partsOverlapping), so the flat shape's box first, its argument errors raised after the
     -- list's when the list comes first, as below.
@@ -4480,7 +4492,7 @@ function collideParts(fname, shape1, shape2, wantPush)
     local boxes = flatSide and flatSide.boxes
     -- the window for the pairs the search may add later: the flat shape's width plus height
     -- (pushes are mostly shorter than half that: see the loop after the search)
-    window = flatSide and (boxes[3] - boxes[1]) + (boxes[4] - boxes[2])
+    window = flatSide and wantPush and (boxes[3] - boxes[1]) + (boxes[4] - boxes[2]) or 0
     if flatSide and info and info.count == #list then
       found, nearCount = partsOverlapping(info, list, false, boxes[1], boxes[2], boxes[3], boxes[4], window)
     end
@@ -4513,6 +4525,19 @@ function collideParts(fname, shape1, shape2, wantPush)
     -- Each pair as addPair decides it, from the prepared normals (no faces); beyond the exact
     -- range, where the push scales (below), by the SAT engine, which rescales itself.
     local scaled = magnitude > EXACT_TOP or magnitude < 2^-400
+    if found then   -- a list against a flat shape: the parts whose boxes overlap its box
+      for f = 1, found do
+        local k = overlapping[f]
+        local i, j, p1, p2 = 1, k, shape1, shape2[k]
+        if parts1 then i, j, p1, p2 = k, 1, shape1[k], shape2 end
+        if scaled then
+          if overlapsConvex(fname, p1, p2) then return true end
+        elseif pairOverlaps(view1, p1, i, view2, p2, j) then
+          return true
+        end
+      end
+      return false
+    end
     local i, j = 1, 0
     for _ = 1, count1 * count2 do   -- one loop over the pairs: see below
       if j == count2 then i, j = i + 1, 1 else j = j + 1 end
