@@ -71,7 +71,9 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- and avoid short inner loops: a loop of a few steps (a polygon's vertices) often fails to
 -- become a trace of its own, and other traces then copy it unrolled, with a side exit for every
 -- other polygon size (so the SAT's loops run flat over (edge, vertex) pairs; `bash
--- bench/aborts.sh` counts what LuaJIT still aborts).
+-- bench/aborts.sh` counts what LuaJIT still aborts). The PUC bodies count instructions instead
+-- (`lua5.4 bench/instructions.lua`): the two-sided SAT walks both polygons' edges at once
+-- (rotating calipers), one projection an edge, where LuaJIT projects every pair.
 --
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
 -- 2^-447 and 2^500 in magnitude (then all coordinates are multiples of 2^-499, all products of
