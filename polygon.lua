@@ -2603,6 +2603,16 @@ do   -- this section's helpers are local to it
 
 local floor, sort = math.floor, table.sort
 
+-- An empty table with room for `size` array entries: LuaJIT's table.new, {} elsewhere. The
+-- node arrays are filled in order up to tens of thousands of entries; grown one entry at a
+-- time, each is copied at every doubling and leaves its old parts as garbage.
+local newArray = function() return {} end
+do
+  local found, tableNew = pcall(require, "table.new")
+  if found then newArray = function(size) return tableNew(size, 0) end end
+end
+local capacity          -- the number of nodes a call can make, at most: the arrays' size
+
 local nodeX, nodeY      -- coordinates as doubles (+ 0.0), for the predicates
 local inX, inY          -- the caller's values, copied into the output bit for bit
 local origin            -- the input vertex a node stands for (a bridge copies two of them)
@@ -2741,7 +2751,7 @@ local function sortPlaces(starts)
     until k == s
   end
   local scale = count / (x1 - x0)   -- x1 > x0: the outer ring has area
-  local bucketOf, first = {}, {}
+  local bucketOf, first = newArray(capacity), newArray(count + 1)
   for b = 1, count + 1 do first[b] = 0 end
   for _, s in ipairs(starts) do
     local k = s
@@ -2754,7 +2764,7 @@ local function sortPlaces(starts)
   end
   local at = 1   -- first[b]: where bucket b starts in the order; then where its next node goes
   for b = 1, count + 1 do first[b], at = at, at + first[b] end
-  local order, fill = {}, {}
+  local order, fill = newArray(count), newArray(count)
   for b = 1, count do fill[b] = first[b] end
   for _, s in ipairs(starts) do
     local k = s
@@ -2780,7 +2790,7 @@ local function sortPlaces(starts)
       end
     end
   end
-  rank = {}
+  rank = newArray(capacity)
   local place = 0
   for i = 1, count do
     local k = order[i]
@@ -2793,7 +2803,7 @@ end
 -- The events in order: by place, and at one place every edge leaving before any coming in.
 local function sweepEvents(starts)
   local order, count = sortPlaces(starts)
-  sweepLeft, sweepRight = {}, {}
+  sweepLeft, sweepRight = newArray(capacity), newArray(capacity)
   for _, s in ipairs(starts) do
     local k = s
     repeat
@@ -2802,7 +2812,7 @@ local function sweepEvents(starts)
       k = q
     until k == s
   end
-  local events, e = {}, 0
+  local events, e = newArray(2 * count), 0
   local i = 1
   while i <= count do
     local last = i   -- the nodes at one place are order[i..last]
@@ -3088,8 +3098,9 @@ local function buildGrid(s)
   gridRows = min(floor((y1 - y0) * gridScale) + 1, count)
   gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
   spanMargin = gridFine and 2 * SPAN_MARGIN * cellSize or huge
-  cellOf, cellHead, nextInCell, prevInCell = {}, {}, {}, {}
-  listed, shared, reflexSeen, listStale = {}, {}, {}, false
+  cellOf, cellHead = newArray(capacity), newArray(gridRows * gridCols)
+  nextInCell, prevInCell = newArray(capacity), newArray(capacity)
+  listed, shared, reflexSeen, listStale = newArray(capacity), newArray(capacity), newArray(capacity), false
   k = s
   repeat
     local cell = rowOf(nodeY[k]) * gridCols + colOf(nodeX[k]) + 1
@@ -3326,8 +3337,12 @@ local function triangulate(fname, points, holes)
   turn = areaSign(points, n)
   if turn == 0 then return nil, "points have zero area" end
   turn = turn > 0 and 1 or -1
-  nodeX, nodeY, inX, inY, origin, nextNode, prevNode, nodeCount = {}, {}, {}, {}, {}, {}, {}, 0
-  gone = {}
+  capacity = n / 2
+  for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
+  nodeX, nodeY, inX, inY = newArray(capacity), newArray(capacity), newArray(capacity), newArray(capacity)
+  origin, nextNode = newArray(capacity), newArray(capacity)
+  prevNode, gone = newArray(capacity), newArray(capacity)
+  nodeCount = 0
   listed = nil
   local outer = linkRing(points, n, 1, false)
   local starts, firstId = { outer }, n / 2 + 1
@@ -3378,7 +3393,7 @@ local function triangulate(fname, points, holes)
     bridge(m, lefts[i])
   end
   buildGrid(outer)
-  local tris = {}
+  local tris = newArray(3 * nodeCount)
   if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
   return tris
 end
@@ -3404,7 +3419,7 @@ end
 function polygon.polygonTriangulate(points, holes)
   local tris, message = triangulate("polygonTriangulate", points, holes)
   if not tris then releaseNodes(); return nil, message end
-  local out = {}
+  local out = newArray(#tris / 3)
   for t = 1, #tris, 3 do
     local a, b, c = tris[t], tris[t + 1], tris[t + 2]
     out[#out + 1] = { inX[a], inY[a], inX[b], inY[b], inX[c], inY[c] }
@@ -3423,8 +3438,10 @@ function polygon.polygonConvexParts(points, holes)
   local tris, message = triangulate("polygonConvexParts", points, holes)
   if not tris then releaseNodes(); return nil, message end
   -- corners: three per triangle, linked around their part; a part is the triangles joined so far
-  local node, nextCorner, prevCorner, part = {}, {}, {}, {}
-  local edgeAt, joins = {}, {}
+  local cornerCount = #tris
+  local node, nextCorner = newArray(cornerCount), newArray(cornerCount)
+  local prevCorner, part = newArray(cornerCount), newArray(cornerCount)
+  local edgeAt, joins = {}, newArray(cornerCount)
   local idLimit = 0
   for k = 1, nodeCount do idLimit = max(idLimit, origin[k]) end
   idLimit = idLimit + 1
