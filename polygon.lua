@@ -2724,6 +2724,7 @@ local sweepCrossing
 do   -- the sweep's helpers are local to it (the file is near Lua's 200 locals per function)
 local sweepLeft, sweepRight
 local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
+local placeOrder, placeCount   -- the nodes in (x, y) order (see sortPlaces), and their count
 
 -- > 0 when edge s lies above edge t where the line meets both (in y-up terms), < 0 below, 0 for
 -- edges in line: the later left end tested against the other edge, then its right end.
@@ -2797,6 +2798,7 @@ local function sortPlaces(starts)
     if i == 1 or not same(k, order[i - 1]) then place = place + 1 end
     rank[k] = place
   end
+  placeOrder, placeCount = order, count
   return order, count
 end
 
@@ -2835,6 +2837,34 @@ local function sweepEvents(starts)
 end
 
 local status, lastPlace   -- the edges in order along the line; where the last event's edge was
+local touchedAt         -- touchedAt[r]: the edges whose inside holds the place of rank r, or nil
+
+-- Notes the edges next to place `from` of the order, going `step` (-1 or 1), that hold node p:
+-- a run of edges through p's place, each ending there or holding it inside (noted in
+-- touchedAt, for placesCross). An edge holding p inside lies next to an edge ending at p, or
+-- next to another edge through p, when an edge ending at p comes in or leaves.
+local function noteTouches(p, from, step)
+  local px, py = nodeX[p], nodeY[p]
+  local j = from + step
+  local f = status[j]
+  while f do
+    local q = nextNode[f]
+    if orient(f, q, p) ~= 0 or px < min(nodeX[f], nodeX[q]) or px > max(nodeX[f], nodeX[q])
+      or py < min(nodeY[f], nodeY[q]) or py > max(nodeY[f], nodeY[q]) then
+      return
+    end
+    if not same(p, f) and not same(p, q) then
+      local r = rank[p]
+      local list = touchedAt[r] or {}
+      touchedAt[r] = list
+      local known = false
+      for g = 1, #list do known = known or list[g] == f end
+      if not known then list[#list + 1] = f end
+    end
+    j = j + step
+    f = status[j]
+  end
+end
 
 -- Where edge s goes or is, when next to the last event's edge, or 0: most vertices of an
 -- outline that are not passed by an edge coming in where another leaves (see sweep) start two
@@ -2862,7 +2892,7 @@ end
 local function sweep(starts)
   local events, eventCount = sweepEvents(starts)
   local m = 0
-  status, lastPlace = newArray(eventCount), 1
+  status, lastPlace, touchedAt = newArray(eventCount), 1, {}
   local i = 1
   while i <= eventCount do
     local e = events[i]
@@ -2885,12 +2915,16 @@ local function sweep(starts)
         table.insert(status, lo, s)
       end
       m = m + 1
+      noteTouches(sweepLeft[s], lo, -1)
+      noteTouches(sweepLeft[s], lo, 1)
       local below, above = status[lo - 1], status[lo + 1]
       if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
       if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
     else
       while lo <= m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
       if status[lo] ~= s then return nil end
+      noteTouches(sweepRight[s], lo, -1)
+      noteTouches(sweepRight[s], lo, 1)
       local below, above = status[lo - 1], status[lo + 1]
       -- an edge coming in where s leaves (a vertex along the outline) most often takes its
       -- place: two tests vouch for it, and the list is not shifted twice
@@ -2919,9 +2953,100 @@ local function sweep(starts)
   return false
 end
 
+-- Where several vertices meet, or a vertex lies inside an edge, the outline may cross or
+-- overlap itself without two edges crossing properly (the sweep's test). Around such a place
+-- each vertex is a chain: an edge coming in (from its node's predecessor) and one going out
+-- (to its successor); an edge holding the place inside is a chain too. Sorted by angle, the
+-- edges must alternate, in, out, in, out: crossing an edge changes the winding number by one,
+-- up for one kind and down for the other, so two of a kind in a row make a sector covered
+-- twice (or wound the wrong way). And no two chains may interleave (the in-out pairs must nest
+-- like brackets): chains that interleave cross there, whatever is done near the place. Edges
+-- in one direction overlap along it: crossing them all changes the winding number by those
+-- leaving less those reaching, which must be -1, 0 or 1 (two edges leaving in one direction,
+-- none reaching: the region between them is inside one and outside the other); past that
+-- their order across the direction is not known there (a slit, a bridge, a spike along an
+-- edge), and the place is not tested further. An entry is 2k for the edge from node k to its
+-- successor, 2k + 1 for the edge from its predecessor; an edge f holding the place inside is
+-- chain k = capacity + f, its ends f (before) and f's successor (after).
+local placeX, placeY        -- the place being tested, for byAngle
+local function entryTarget(entry)
+  local k = (entry - entry % 2) / 2
+  if k > capacity then
+    local f = k - capacity
+    return entry % 2 == 0 and nextNode[f] or f
+  end
+  return entry % 2 == 0 and nextNode[k] or prevNode[k]
+end
+-- Whether the entry u's edge comes before v's by angle about the place, from the +x axis
+-- (exact: the side of the x axis, then the sign of a cross product).
+local function byAngle(u, v)
+  local a, b = entryTarget(u), entryTarget(v)
+  local ax, ay, bx, by = nodeX[a], nodeY[a], nodeX[b], nodeY[b]
+  local lowerA = ay < placeY or (ay == placeY and ax < placeX)
+  local lowerB = by < placeY or (by == placeY and bx < placeX)
+  if lowerA ~= lowerB then return lowerB end
+  return cross(placeX, placeY, ax, ay, placeX, placeY, bx, by) > 0
+end
+
+-- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
+-- `touched` holding it inside (or nil), cross or overlap there (see above).
+local function chainsCross(first, last, touched)
+  local entries, count = {}, 0
+  for g = first, last do
+    local k = placeOrder[g]
+    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
+    count = count + 2
+  end
+  for g = 1, touched and #touched or 0 do
+    local k = capacity + touched[g]
+    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
+    count = count + 2
+  end
+  placeX, placeY = nodeX[placeOrder[first]], nodeY[placeOrder[first]]
+  sort(entries, byAngle)
+  local at, undecided = 1, false
+  while at <= count do   -- the runs of edges in one direction: count those leaving, reaching
+    local u, runEnd, balance = entries[at], at, 0
+    while runEnd < count and not byAngle(u, entries[runEnd + 1]) do runEnd = runEnd + 1 end
+    for j = at, runEnd do balance = balance + (entries[j] % 2 == 0 and 1 or -1) end
+    if balance > 1 or balance < -1 then return true end
+    undecided = undecided or runEnd > at
+    at = runEnd + 1
+  end
+  if undecided then return false end
+  local open, depth = {}, 0   -- the chains' pairs, as brackets
+  for j = 1, count do
+    local u = entries[j]
+    if u % 2 == entries[j % count + 1] % 2 then return true end   -- two of a kind in a row
+    local chain = (u - u % 2) / 2
+    if depth > 0 and open[depth] == chain then
+      open[depth] = nil
+      depth = depth - 1
+    else
+      depth = depth + 1
+      open[depth] = chain
+    end
+  end
+  return depth > 0
+end
+
+-- Whether the chains cross or overlap at some place where several vertices meet, or where a
+-- vertex lies inside an edge.
+local function placesCross()
+  local i = 1
+  while i <= placeCount do
+    local r, last = rank[placeOrder[i]], i
+    while last < placeCount and rank[placeOrder[last + 1]] == r do last = last + 1 end
+    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then return true end
+    i = last + 1
+  end
+  return false
+end
+
 function sweepCrossing(starts)
   local crossing = sweep(starts)
-  sweepLeft, sweepRight, rank, status = nil, nil, nil, nil
+  if crossing == false and placesCross() then crossing = true end
+  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt = nil, nil, nil, nil, nil, nil
   return crossing
 end
 end
