@@ -2965,7 +2965,8 @@ end
 -- leaving less those reaching, which must be -1, 0 or 1 (two edges leaving in one direction,
 -- none reaching: the region between them is inside one and outside the other); past that
 -- their order across the direction is not known there (a slit, a bridge, a spike along an
--- edge), and the place is not tested further. An entry is 2k for the edge from node k to its
+-- edge): one edge each way may go in either order (each is tried), more leave the place
+-- untested. An entry is 2k for the edge from node k to its
 -- successor, 2k + 1 for the edge from its predecessor; an edge f holding the place inside is
 -- chain k = capacity + f, its ends f (before) and f's successor (after).
 local placeX, placeY        -- the place being tested, for byAngle
@@ -2990,6 +2991,27 @@ end
 
 -- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
 -- `touched` holding it inside (or nil), cross or overlap there (see above).
+local TIED_PAIRS = 4      -- pairs of edges along one another (both ways) at a place, at most,
+                        -- whose 2^pairs orders are tried; past that the place is not tested
+
+-- Whether entries[1..count], sorted by angle, alternate in and out and nest like brackets.
+local function alternateAndNest(entries, count)
+  local open, depth = {}, 0   -- the chains' pairs, as brackets
+  for j = 1, count do
+    local u = entries[j]
+    if u % 2 == entries[j % count + 1] % 2 then return false end   -- two of a kind in a row
+    local chain = (u - u % 2) / 2
+    if depth > 0 and open[depth] == chain then
+      open[depth] = nil
+      depth = depth - 1
+    else
+      depth = depth + 1
+      open[depth] = chain
+    end
+  end
+  return depth == 0
+end
+
 local function chainsCross(first, last, touched)
   local entries, count = {}, 0
   for g = first, last do
@@ -3004,30 +3026,33 @@ local function chainsCross(first, last, touched)
   end
   placeX, placeY = nodeX[placeOrder[first]], nodeY[placeOrder[first]]
   sort(entries, byAngle)
-  local at, undecided = 1, false
+  local at, tied = 1, {}
   while at <= count do   -- the runs of edges in one direction: count those leaving, reaching
     local u, runEnd, balance = entries[at], at, 0
     while runEnd < count and not byAngle(u, entries[runEnd + 1]) do runEnd = runEnd + 1 end
     for j = at, runEnd do balance = balance + (entries[j] % 2 == 0 and 1 or -1) end
     if balance > 1 or balance < -1 then return true end
-    undecided = undecided or runEnd > at
+    if runEnd > at + 1 then return false end   -- three or more: not decided here
+    if runEnd == at + 1 then tied[#tied + 1] = at end   -- one each way: either order
     at = runEnd + 1
   end
-  if undecided then return false end
-  local open, depth = {}, 0   -- the chains' pairs, as brackets
-  for j = 1, count do
-    local u = entries[j]
-    if u % 2 == entries[j % count + 1] % 2 then return true end   -- two of a kind in a row
-    local chain = (u - u % 2) / 2
-    if depth > 0 and open[depth] == chain then
-      open[depth] = nil
-      depth = depth - 1
-    else
-      depth = depth + 1
-      open[depth] = chain
+  if #tied > TIED_PAIRS then return false end
+  for orders = 0, 2 ^ #tied - 1 do   -- bit t of orders: swap the t-th tied pair
+    local swapped = orders
+    for t = 1, #tied do
+      local j = tied[t]
+      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
+      swapped = (swapped - swapped % 2) / 2
+    end
+    if alternateAndNest(entries, count) then return false end
+    swapped = orders
+    for t = 1, #tied do
+      local j = tied[t]
+      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
+      swapped = (swapped - swapped % 2) / 2
     end
   end
-  return depth > 0
+  return true
 end
 
 -- Whether the chains cross or overlap at some place where several vertices meet, or where a
@@ -3576,8 +3601,10 @@ end
 -- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
 -- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
 -- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
--- found by a sweep (Shamos and Hoey); the ears cost a few microseconds per vertex on LuaJIT,
--- growing about as the square root of n on outlines of long thin spikes (bench/concave.lua).
+-- found by a sweep (Shamos and Hoey), an outline crossing or running along itself where
+-- vertices meet by the order of the edges around each such place; the ears cost a few
+-- microseconds per vertex on LuaJIT, growing about as the square root of n on outlines of long
+-- thin spikes (bench/concave.lua).
 -- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
 -- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
 -- outside the polygon)

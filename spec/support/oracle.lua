@@ -742,9 +742,10 @@ end
 -- inside an edge), the edges through it, sorted by angle, do not alternate between an edge
 -- reaching the point and one leaving it, or the in-out pairs of the chains through it (one per
 -- visit of the outline) do not nest like brackets, or edges in one direction there count two
--- more leaving than reaching (or the other way); "unknown" when none of that happens but some
--- edges overlap in one direction both ways at a point (their order is not decided there);
--- "simple" otherwise.
+-- more leaving than reaching (or the other way), or no order of the pairs of edges running
+-- along each other there (one each way) alternates and nests; "unknown" when none of that
+-- happens but some edges run along each other both ways at a point (their order there is not
+-- decided); "simple" otherwise.
 function oracle.outlineCrossing(points)
   local xs, ys = {}, {}
   local n = #points / 2
@@ -805,27 +806,30 @@ function oracle.outlineCrossing(points)
         end
         entries[j + 1] = e
       end
-      local tied = false
+      -- edges in one direction: more than one more leaving than reaching (or the other way)
+      -- crosses; one each way may lie in either order (both are tried); more are not decided
+      local pairsAt, many = {}, false
       for i = 1, #entries do
-        local balance = 0
+        local balance, alike = 0, 0
         for j = 1, #entries do
           if not before(entries[i], entries[j]) and not before(entries[j], entries[i]) then
-            balance = balance + entries[j][2]
-            tied = tied or i ~= j
+            balance, alike = balance + entries[j][2], alike + 1
           end
         end
         if math.abs(balance) >= 2 then
           return "cross"
         end
+        many = many or alike > 2
+        if alike == 2 and i < #entries and not before(entries[i], entries[i + 1]) then
+          pairsAt[#pairsAt + 1] = i
+        end
       end
-      if tied then
-        undecided = true
-      else
+      local function nested(list)
         local stack = {}
-        for i = 1, #entries do
-          local e, f = entries[i], entries[i % #entries + 1]
+        for i = 1, #list do
+          local e, f = list[i], list[i % #list + 1]
           if e[2] == f[2] then
-            return "cross"
+            return false
           end
           if stack[#stack] == e[3] then
             stack[#stack] = nil
@@ -833,9 +837,28 @@ function oracle.outlineCrossing(points)
             stack[#stack + 1] = e[3]
           end
         end
-        if #stack > 0 then
+        return #stack == 0
+      end
+      if many then
+        undecided = true
+      else
+        local found = false
+        for orders = 0, 2 ^ #pairsAt - 1 do
+          local list = {}
+          for i = 1, #entries do
+            list[i] = entries[i]
+          end
+          for t, i in ipairs(pairsAt) do
+            if math.floor(orders / 2 ^ (t - 1)) % 2 == 1 then
+              list[i], list[i + 1] = list[i + 1], list[i]
+            end
+          end
+          found = found or nested(list)
+        end
+        if not found then
           return "cross"
         end
+        undecided = undecided or #pairsAt > 0
       end
     end
   end
