@@ -2794,6 +2794,16 @@ do   -- this section's helpers are local to it
 
 local floor, sort = math.floor, table.sort
 
+-- An empty table with room for `size` array entries: LuaJIT's table.new, {} elsewhere. The
+-- node arrays are filled in order up to tens of thousands of entries; grown one entry at a
+-- time, each is copied at every doubling and leaves its old parts as garbage.
+local newArray = function() return {} end
+do
+  local found, tableNew = pcall(require, "table.new")
+  if found then newArray = function(size) return tableNew(size, 0) end end
+end
+local capacity          -- the number of nodes a call can make, at most: the arrays' size
+
 local nodeX, nodeY      -- coordinates as doubles (+ 0.0), for the predicates
 local inX, inY          -- the caller's values, copied into the output bit for bit
 local origin            -- the input vertex a node stands for (a bridge copies two of them)
@@ -2905,6 +2915,7 @@ local sweepCrossing
 do   -- the sweep's helpers are local to it (the file is near Lua's 200 locals per function)
 local sweepLeft, sweepRight
 local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
+local placeOrder, placeCount   -- the nodes in (x, y) order (see sortPlaces), and their count
 
 -- > 0 when edge s lies above edge t where the line meets both (in y-up terms), < 0 below, 0 for
 -- edges in line: the later left end tested against the other edge, then its right end.
@@ -2932,7 +2943,7 @@ local function sortPlaces(starts)
     until k == s
   end
   local scale = count / (x1 - x0)   -- x1 > x0: the outer ring has area
-  local bucketOf, first = {}, {}
+  local bucketOf, first = newArray(capacity), newArray(count + 1)
   for b = 1, count + 1 do first[b] = 0 end
   for _, s in ipairs(starts) do
     local k = s
@@ -2945,7 +2956,7 @@ local function sortPlaces(starts)
   end
   local at = 1   -- first[b]: where bucket b starts in the order; then where its next node goes
   for b = 1, count + 1 do first[b], at = at, at + first[b] end
-  local order, fill = {}, {}
+  local order, fill = newArray(count), newArray(count)
   for b = 1, count do fill[b] = first[b] end
   for _, s in ipairs(starts) do
     local k = s
@@ -2971,20 +2982,21 @@ local function sortPlaces(starts)
       end
     end
   end
-  rank = {}
+  rank = newArray(capacity)
   local place = 0
   for i = 1, count do
     local k = order[i]
     if i == 1 or not same(k, order[i - 1]) then place = place + 1 end
     rank[k] = place
   end
+  placeOrder, placeCount = order, count
   return order, count
 end
 
 -- The events in order: by place, and at one place every edge leaving before any coming in.
 local function sweepEvents(starts)
   local order, count = sortPlaces(starts)
-  sweepLeft, sweepRight = {}, {}
+  sweepLeft, sweepRight = newArray(capacity), newArray(capacity)
   for _, s in ipairs(starts) do
     local k = s
     repeat
@@ -2993,7 +3005,7 @@ local function sweepEvents(starts)
       k = q
     until k == s
   end
-  local events, e = {}, 0
+  local events, e = newArray(2 * count), 0
   local i = 1
   while i <= count do
     local last = i   -- the nodes at one place are order[i..last]
@@ -3015,29 +3027,95 @@ local function sweepEvents(starts)
   return events, e
 end
 
+local status, lastPlace   -- the edges in order along the line; where the last event's edge was
+local touchedAt         -- touchedAt[r]: the edges whose inside holds the place of rank r, or nil
+
+-- Notes the edges next to place `from` of the order, going `step` (-1 or 1), that hold node p:
+-- a run of edges through p's place, each ending there or holding it inside (noted in
+-- touchedAt, for placesCross). An edge holding p inside lies next to an edge ending at p, or
+-- next to another edge through p, when an edge ending at p comes in or leaves.
+local function noteTouches(p, from, step)
+  local px, py = nodeX[p], nodeY[p]
+  local j = from + step
+  local f = status[j]
+  while f do
+    local q = nextNode[f]
+    if orient(f, q, p) ~= 0 or px < min(nodeX[f], nodeX[q]) or px > max(nodeX[f], nodeX[q])
+      or py < min(nodeY[f], nodeY[q]) or py > max(nodeY[f], nodeY[q]) then
+      return
+    end
+    if not same(p, f) and not same(p, q) then
+      local r = rank[p]
+      local list = touchedAt[r] or {}
+      touchedAt[r] = list
+      local known = false
+      for g = 1, #list do known = known or list[g] == f end
+      if not known then list[#list + 1] = f end
+    end
+    j = j + step
+    f = status[j]
+  end
+end
+
+-- Where edge s goes or is, when next to the last event's edge, or 0: most vertices of an
+-- outline that are not passed by an edge coming in where another leaves (see sweep) start two
+-- edges or end two, one event after the other, next to each other along the line. An edge
+-- coming in goes beside the edge that came in last from the same vertex when two tests vouch
+-- for it (as for an edge taking another's place); an edge leaving is found by identity. Spares
+-- most searches of a noisy circle, whose order holds hundreds of edges.
+local function besideLast(s, coming)
+  local t = status[lastPlace]
+  if coming then
+    if not t or rank[sweepLeft[t]] ~= rank[sweepLeft[s]] then return 0 end
+    if edgeOrder(s, t) > 0 then
+      local above = status[lastPlace + 1]
+      return (not above or edgeOrder(s, above) <= 0) and lastPlace + 1 or 0
+    end
+    local below = status[lastPlace - 1]
+    return (not below or edgeOrder(s, below) > 0) and lastPlace or 0
+  end
+  if t == s then return lastPlace end
+  return status[lastPlace - 1] == s and lastPlace - 1 or 0
+end
+
 -- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
 -- order came out inconsistent (then the caller asks anyCrossing).
 local function sweep(starts)
   local events, eventCount = sweepEvents(starts)
-  local status, m = {}, 0
+  local m = 0
+  status, lastPlace, touchedAt = newArray(eventCount), 1, {}
   local i = 1
   while i <= eventCount do
     local e = events[i]
     local s = e > 0 and e or -e
-    -- the first place whose edge does not lie below s
-    local lo, hi = 1, m + 1
-    while lo < hi do
-      local mid = (lo + hi - (lo + hi) % 2) / 2
-      if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+    local lo = besideLast(s, e > 0)
+    if lo == 0 then   -- the first place whose edge does not lie below s
+      local hi
+      lo, hi = 1, m + 1
+      while lo < hi do
+        local mid = (lo + hi - (lo + hi) % 2) / 2
+        if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+      end
     end
+    lastPlace = lo
     if e > 0 then
-      table.insert(status, lo, s); m = m + 1
+      if JIT then   -- a loop LuaJIT compiles; on PUC Lua table.insert's C loop is faster
+        for j = m, lo, -1 do status[j + 1] = status[j] end
+        status[lo] = s
+      else
+        table.insert(status, lo, s)
+      end
+      m = m + 1
+      noteTouches(sweepLeft[s], lo, -1)
+      noteTouches(sweepLeft[s], lo, 1)
       local below, above = status[lo - 1], status[lo + 1]
       if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
       if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
     else
       while lo <= m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
       if status[lo] ~= s then return nil end
+      noteTouches(sweepRight[s], lo, -1)
+      noteTouches(sweepRight[s], lo, 1)
       local below, above = status[lo - 1], status[lo + 1]
       -- an edge coming in where s leaves (a vertex along the outline) most often takes its
       -- place: two tests vouch for it, and the list is not shifted twice
@@ -3049,7 +3127,13 @@ local function sweep(starts)
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
         if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
       else
-        table.remove(status, lo); m = m - 1
+        if JIT then   -- as for table.insert above: 40 % faster on LuaJIT
+          for j = lo, m - 1 do status[j] = status[j + 1] end
+          status[m] = nil
+        else
+          table.remove(status, lo)
+        end
+        m = m - 1
         if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
           return true
         end
@@ -3060,9 +3144,125 @@ local function sweep(starts)
   return false
 end
 
+-- Where several vertices meet, or a vertex lies inside an edge, the outline may cross or
+-- overlap itself without two edges crossing properly (the sweep's test). Around such a place
+-- each vertex is a chain: an edge coming in (from its node's predecessor) and one going out
+-- (to its successor); an edge holding the place inside is a chain too. Sorted by angle, the
+-- edges must alternate, in, out, in, out: crossing an edge changes the winding number by one,
+-- up for one kind and down for the other, so two of a kind in a row make a sector covered
+-- twice (or wound the wrong way). And no two chains may interleave (the in-out pairs must nest
+-- like brackets): chains that interleave cross there, whatever is done near the place. Edges
+-- in one direction overlap along it: crossing them all changes the winding number by those
+-- leaving less those reaching, which must be -1, 0 or 1 (two edges leaving in one direction,
+-- none reaching: the region between them is inside one and outside the other); past that
+-- their order across the direction is not known there (a slit, a bridge, a spike along an
+-- edge): one edge each way may go in either order (each is tried), more leave the place
+-- untested. An entry is 2k for the edge from node k to its
+-- successor, 2k + 1 for the edge from its predecessor; an edge f holding the place inside is
+-- chain k = capacity + f, its ends f (before) and f's successor (after).
+local placeX, placeY        -- the place being tested, for byAngle
+local function entryTarget(entry)
+  local k = (entry - entry % 2) / 2
+  if k > capacity then
+    local f = k - capacity
+    return entry % 2 == 0 and nextNode[f] or f
+  end
+  return entry % 2 == 0 and nextNode[k] or prevNode[k]
+end
+-- Whether the entry u's edge comes before v's by angle about the place, from the +x axis
+-- (exact: the side of the x axis, then the sign of a cross product).
+local function byAngle(u, v)
+  local a, b = entryTarget(u), entryTarget(v)
+  local ax, ay, bx, by = nodeX[a], nodeY[a], nodeX[b], nodeY[b]
+  local lowerA = ay < placeY or (ay == placeY and ax < placeX)
+  local lowerB = by < placeY or (by == placeY and bx < placeX)
+  if lowerA ~= lowerB then return lowerB end
+  return cross(placeX, placeY, ax, ay, placeX, placeY, bx, by) > 0
+end
+
+-- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
+-- `touched` holding it inside (or nil), cross or overlap there (see above).
+local TIED_PAIRS = 4      -- pairs of edges along one another (both ways) at a place, at most,
+                        -- whose 2^pairs orders are tried; past that the place is not tested
+
+-- Whether entries[1..count], sorted by angle, alternate in and out and nest like brackets.
+local function alternateAndNest(entries, count)
+  local open, depth = {}, 0   -- the chains' pairs, as brackets
+  for j = 1, count do
+    local u = entries[j]
+    if u % 2 == entries[j % count + 1] % 2 then return false end   -- two of a kind in a row
+    local chain = (u - u % 2) / 2
+    if depth > 0 and open[depth] == chain then
+      open[depth] = nil
+      depth = depth - 1
+    else
+      depth = depth + 1
+      open[depth] = chain
+    end
+  end
+  return depth == 0
+end
+
+local function chainsCross(first, last, touched)
+  local entries, count = {}, 0
+  for g = first, last do
+    local k = placeOrder[g]
+    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
+    count = count + 2
+  end
+  for g = 1, touched and #touched or 0 do
+    local k = capacity + touched[g]
+    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
+    count = count + 2
+  end
+  placeX, placeY = nodeX[placeOrder[first]], nodeY[placeOrder[first]]
+  sort(entries, byAngle)
+  local at, tied = 1, {}
+  while at <= count do   -- the runs of edges in one direction: count those leaving, reaching
+    local u, runEnd, balance = entries[at], at, 0
+    while runEnd < count and not byAngle(u, entries[runEnd + 1]) do runEnd = runEnd + 1 end
+    for j = at, runEnd do balance = balance + (entries[j] % 2 == 0 and 1 or -1) end
+    if balance > 1 or balance < -1 then return true end
+    if runEnd > at + 1 then return false end   -- three or more: not decided here
+    if runEnd == at + 1 then tied[#tied + 1] = at end   -- one each way: either order
+    at = runEnd + 1
+  end
+  if #tied > TIED_PAIRS then return false end
+  for orders = 0, 2 ^ #tied - 1 do   -- bit t of orders: swap the t-th tied pair
+    local swapped = orders
+    for t = 1, #tied do
+      local j = tied[t]
+      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
+      swapped = (swapped - swapped % 2) / 2
+    end
+    if alternateAndNest(entries, count) then return false end
+    swapped = orders
+    for t = 1, #tied do
+      local j = tied[t]
+      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
+      swapped = (swapped - swapped % 2) / 2
+    end
+  end
+  return true
+end
+
+-- Whether the chains cross or overlap at some place where several vertices meet, or where a
+-- vertex lies inside an edge.
+local function placesCross()
+  local i = 1
+  while i <= placeCount do
+    local r, last = rank[placeOrder[i]], i
+    while last < placeCount and rank[placeOrder[last + 1]] == r do last = last + 1 end
+    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then return true end
+    i = last + 1
+  end
+  return false
+end
+
 function sweepCrossing(starts)
   local crossing = sweep(starts)
-  sweepLeft, sweepRight, rank = nil, nil, nil
+  if crossing == false and placesCross() then crossing = true end
+  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt = nil, nil, nil, nil, nil, nil
   return crossing
 end
 end
@@ -3279,8 +3479,9 @@ local function buildGrid(s)
   gridRows = min(floor((y1 - y0) * gridScale) + 1, count)
   gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
   spanMargin = gridFine and 2 * SPAN_MARGIN * cellSize or huge
-  cellOf, cellHead, nextInCell, prevInCell = {}, {}, {}, {}
-  listed, shared, reflexSeen, listStale = {}, {}, {}, false
+  cellOf, cellHead = newArray(capacity), newArray(gridRows * gridCols)
+  nextInCell, prevInCell = newArray(capacity), newArray(capacity)
+  listed, shared, reflexSeen, listStale = newArray(capacity), newArray(capacity), newArray(capacity), false
   k = s
   repeat
     local cell = rowOf(nodeY[k]) * gridCols + colOf(nodeX[k]) + 1
@@ -3517,8 +3718,12 @@ local function triangulate(fname, points, holes)
   turn = areaSign(points, n)
   if turn == 0 then return nil, "points have zero area" end
   turn = turn > 0 and 1 or -1
-  nodeX, nodeY, inX, inY, origin, nextNode, prevNode, nodeCount = {}, {}, {}, {}, {}, {}, {}, 0
-  gone = {}
+  capacity = n / 2
+  for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
+  nodeX, nodeY, inX, inY = newArray(capacity), newArray(capacity), newArray(capacity), newArray(capacity)
+  origin, nextNode = newArray(capacity), newArray(capacity)
+  prevNode, gone = newArray(capacity), newArray(capacity)
+  nodeCount = 0
   listed = nil
   local outer = linkRing(points, n, 1, false)
   local starts, firstId = { outer }, n / 2 + 1
@@ -3569,7 +3774,7 @@ local function triangulate(fname, points, holes)
     bridge(m, lefts[i])
   end
   buildGrid(outer)
-  local tris = {}
+  local tris = newArray(3 * nodeCount)
   if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
   return tris
 end
@@ -3587,15 +3792,17 @@ end
 -- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
 -- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
 -- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
--- found by a sweep (Shamos and Hoey); the ears cost a few microseconds per vertex on LuaJIT,
--- growing about as the square root of n on outlines of long thin spikes (bench/concave.lua).
+-- found by a sweep (Shamos and Hoey), an outline crossing or running along itself where
+-- vertices meet by the order of the edges around each such place; the ears cost a few
+-- microseconds per vertex on LuaJIT, growing about as the square root of n on outlines of long
+-- thin spikes (bench/concave.lua).
 -- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
 -- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
 -- outside the polygon)
 function polygon.polygonTriangulate(points, holes)
   local tris, message = triangulate("polygonTriangulate", points, holes)
   if not tris then releaseNodes(); return nil, message end
-  local out = {}
+  local out = newArray(#tris / 3)
   for t = 1, #tris, 3 do
     local a, b, c = tris[t], tris[t + 1], tris[t + 2]
     out[#out + 1] = { inX[a], inY[a], inX[b], inY[b], inX[c], inY[c] }
@@ -3614,8 +3821,10 @@ function polygon.polygonConvexParts(points, holes)
   local tris, message = triangulate("polygonConvexParts", points, holes)
   if not tris then releaseNodes(); return nil, message end
   -- corners: three per triangle, linked around their part; a part is the triangles joined so far
-  local node, nextCorner, prevCorner, part = {}, {}, {}, {}
-  local edgeAt, joins = {}, {}
+  local cornerCount = #tris
+  local node, nextCorner = newArray(cornerCount), newArray(cornerCount)
+  local prevCorner, part = newArray(cornerCount), newArray(cornerCount)
+  local edgeAt, joins = {}, newArray(cornerCount)
   local idLimit = 0
   for k = 1, nodeCount do idLimit = max(idLimit, origin[k]) end
   idLimit = idLimit + 1

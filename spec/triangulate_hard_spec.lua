@@ -277,6 +277,81 @@ describe("polygonTriangulate and polygonConvexParts on hard input", function()
     end)
   end)
 
+  describe("when the outline crosses or overlaps itself where vertices meet", function()
+    -- no two edges cross at a point inside both: each outline crosses itself at a vertex, or
+    -- runs along itself the same way; the oracle's brute-force test says "cross" for each
+    local crossing = {
+      -- (1,5) -> (5,3) twice, the same way
+      { 3, 5, 1, 5, 5, 3, 6, 6, 0, 6, 1, 5, 5, 3, 5, 5, 2, 6 },
+      -- no repeated vertex: (4,3) lies inside the edge (5,1)-(3,5) ((4,3) - (5,1) = (-1,2), half
+      -- of (-2,4)), and the path (6,0) -> (4,3) -> (2,3) crosses that edge there
+      { 0, 1, 6, 0, 4, 3, 2, 3, 5, 1, 3, 5, 0, 4 },
+      -- (5,6) visited twice, the two visits' edges interleaved around it
+      { 5, 6, 1, 5, 2, 2, 5, 6, 3, 5, 2, 2, 2, 2, 4, 1 },
+      { 6, 6, 5, 0, 5, 0, 4, 3, 0, 3, 6, 6, 3, 4, 4, 5 },
+      -- (5,5) -> (5,1) and (5,2) -> (5,1) both run down x = 5 into (5,1)
+      { 1, 4, 3, 6, 5, 5, 5, 1, 3, 3, 5, 2, 5, 1 },
+      -- (5,2) -> (1,5) twice
+      { 1, 5, 3, 4, 5, 2, 1, 5, 5, 4, 5, 2 },
+      -- (2,1) and (4,1) inside the edge (5,1) -> (1,1), the path through (2,1) turning across it
+      { 0, 1, 2, 3, 5, 1, 1, 1, 2, 1, 2, 2, 4, 1, 5, 0 },
+    }
+
+    it("returns nil and a message for each, as for crossing edges", function()
+      for _, points in ipairs(crossing) do
+        assert.are.equal("cross", oracle.outlineCrossing(points))
+        local tris, message = triangulate(points)
+        assert.is_nil(tris)
+        assert.are.equal("edges cross", message)
+        assert.is_nil(convexParts(points))
+        assert.is_nil(triangulate(shapes.translate(points, 1e9 + 0.375, 1e9 + 0.375)))
+      end
+    end)
+
+    it("still covers weakly simple outlines that touch or run along themselves", function()
+      local cases = {
+        -- a spike from (2,4) out along the edge (2,4) -> (4,2) and on to (5,1), and back
+        { { 5, 1, 2, 4, 4, 2, 6, 2, 2, 4 } },
+        -- a slit from (5,10) in to (5,5)
+        { { 0, 0, 10, 0, 10, 10, 5, 10, 5, 5, 5, 10, 0, 10 } },
+        -- a hole touching the outline at (5,0), inside the edge (0,0) -> (10,0)
+        { { 0, 0, 10, 0, 10, 10, 0, 10 }, { { 5, 0, 7, 3, 3, 3 } } },
+        -- two tiles meeting at a corner, and an hourglass pinched at (2,2)
+        { { 0, 0, 10, 0, 10, 10, 20, 10, 20, 20, 10, 20, 10, 10, 0, 10 } },
+        { { 0, 0, 4, 0, 2, 2, 4, 4, 0, 4, 2, 2 } },
+      }
+      for _, case in ipairs(cases) do
+        local points, holes = case[1], case[2]
+        assert.are_not.equal("cross", oracle.outlineCrossing(points))
+        assert.is_true(oracle.checkPieces(points, holes, assert(triangulate(points, holes))))
+        assert.is_true(oracle.checkPieces(points, holes, assert(convexParts(points, holes)), true))
+      end
+    end)
+
+    it("agree with the oracle's brute-force test on random outlines on a 7 x 7 grid", function()
+      -- "cross": nil; "simple": triangles that cover the outline; "unknown" (edges running
+      -- along each other both ways, their order undecided locally): either
+      local rng = prng.new(7)
+      local seen = { cross = 0, simple = 0, unknown = 0 }
+      for _ = 1, 2000 do
+        local points = {}
+        for i = 1, 2 * rng:int(3, 10) do points[i] = rng:int(0, 6) end
+        if oracle.winding(points) then
+          local verdict = oracle.outlineCrossing(points)
+          seen[verdict] = seen[verdict] + 1
+          local tris = triangulate(points)
+          if verdict == "cross" then
+            assert.is_nil(tris, table.concat(points, ","))
+          elseif verdict == "simple" or tris then
+            assert.is_true(oracle.checkPieces(points, nil, assert(tris, table.concat(points, ","))))
+          end
+        end
+      end
+      -- every kind came up often
+      assert.is_true(seen.cross > 500 and seen.simple > 200 and seen.unknown > 50)
+    end)
+  end)
+
   describe("when given invalid input", function()
     it("returns nil and a message for a bow-tie", function()
       local tris, message = triangulate({ 0, 0, 10, 10, 10, 0, 0, 20, -10, 20, -10, 10 })

@@ -736,4 +736,133 @@ function oracle.circlesDepthAtLeast(x1, y1, r1, x2, y2, r2, a, b)
   return exact.compare(distanceSquared(new(x2), new(y2), new(x1), new(y1)), mul(s, s)) <= 0
 end
 
+--- Whether a closed outline (a flat array; consecutive repeats are ignored) crosses or overlaps
+-- itself, by brute force over every pair of edges and every vertex, with exact signs:
+-- "cross" when two edges cross at a point inside both, or when, at a vertex (or a vertex lying
+-- inside an edge), the edges through it, sorted by angle, do not alternate between an edge
+-- reaching the point and one leaving it, or the in-out pairs of the chains through it (one per
+-- visit of the outline) do not nest like brackets, or edges in one direction there count two
+-- more leaving than reaching (or the other way), or no order of the pairs of edges running
+-- along each other there (one each way) alternates and nests; "unknown" when none of that
+-- happens but some edges run along each other both ways at a point (their order there is not
+-- decided); "simple" otherwise.
+function oracle.outlineCrossing(points)
+  local xs, ys = {}, {}
+  local n = #points / 2
+  for i = 1, n do
+    local j = i % n + 1
+    if points[2 * i - 1] ~= points[2 * j - 1] or points[2 * i] ~= points[2 * j] then
+      xs[#xs + 1], ys[#ys + 1] = points[2 * i - 1], points[2 * i]
+    end
+  end
+  n = #xs
+  local function orient(a, b, c)   -- vertex indices
+    return oracle.orient(xs[a], ys[a], xs[b], ys[b], xs[c], ys[c])
+  end
+  local function nextOf(i)
+    return i % n + 1
+  end
+  for i = 1, n do
+    for j = i + 1, n do
+      local a, b, c, d = i, nextOf(i), j, nextOf(j)
+      if orient(a, b, c) * orient(a, b, d) < 0 and orient(c, d, a) * orient(c, d, b) < 0 then
+        return "cross"
+      end
+    end
+  end
+  local undecided = false
+  for p = 1, n do
+    local px, py = xs[p], ys[p]
+    -- entries: { target vertex, 1 leaving or -1 reaching, chain }
+    local entries = {}
+    for i = 1, n do
+      local j = nextOf(i)
+      if xs[i] == px and ys[i] == py then
+        entries[#entries + 1] = { j, 1, i }
+      elseif xs[j] == px and ys[j] == py then
+        entries[#entries + 1] = { i, -1, j }
+      elseif oracle.onSegment(xs[i], ys[i], xs[j], ys[j], px, py) then
+        entries[#entries + 1] = { j, 1, n + i }
+        entries[#entries + 1] = { i, -1, n + i }
+      end
+    end
+    if #entries > 2 then
+      -- by angle from +x about p: the upper half (y > py, or y == py and x > px) first
+      local function upper(v)
+        return ys[v] > py or (ys[v] == py and xs[v] > px)
+      end
+      local function before(u, v)
+        if upper(u[1]) ~= upper(v[1]) then
+          return upper(u[1])
+        end
+        return oracle.orient(px, py, xs[u[1]], ys[u[1]], xs[v[1]], ys[v[1]]) > 0
+      end
+      -- insertion sort: no sort with a comparator that may call equal entries unequal
+      for i = 2, #entries do
+        local e, j = entries[i], i - 1
+        while j >= 1 and before(e, entries[j]) do
+          entries[j + 1] = entries[j]
+          j = j - 1
+        end
+        entries[j + 1] = e
+      end
+      -- edges in one direction: more than one more leaving than reaching (or the other way)
+      -- crosses; one each way may lie in either order (both are tried); more are not decided
+      local pairsAt, many = {}, false
+      for i = 1, #entries do
+        local balance, alike = 0, 0
+        for j = 1, #entries do
+          if not before(entries[i], entries[j]) and not before(entries[j], entries[i]) then
+            balance, alike = balance + entries[j][2], alike + 1
+          end
+        end
+        if math.abs(balance) >= 2 then
+          return "cross"
+        end
+        many = many or alike > 2
+        if alike == 2 and i < #entries and not before(entries[i], entries[i + 1]) then
+          pairsAt[#pairsAt + 1] = i
+        end
+      end
+      local function nested(list)
+        local stack = {}
+        for i = 1, #list do
+          local e, f = list[i], list[i % #list + 1]
+          if e[2] == f[2] then
+            return false
+          end
+          if stack[#stack] == e[3] then
+            stack[#stack] = nil
+          else
+            stack[#stack + 1] = e[3]
+          end
+        end
+        return #stack == 0
+      end
+      if many then
+        undecided = true
+      else
+        local found = false
+        for orders = 0, 2 ^ #pairsAt - 1 do
+          local list = {}
+          for i = 1, #entries do
+            list[i] = entries[i]
+          end
+          for t, i in ipairs(pairsAt) do
+            if math.floor(orders / 2 ^ (t - 1)) % 2 == 1 then
+              list[i], list[i + 1] = list[i + 1], list[i]
+            end
+          end
+          found = found or nested(list)
+        end
+        if not found then
+          return "cross"
+        end
+        undecided = undecided or #pairsAt > 0
+      end
+    end
+  end
+  return undecided and "unknown" or "simple"
+end
+
 return oracle
