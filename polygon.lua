@@ -697,11 +697,16 @@ function polygon.polygonAreaAccurate(points)
         xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
       end
       -- twice the area, the sum of every sh^2 + dh^2 and the largest sqB of a block
-      local twice, sqSum, sqMax
-      if m <= 64 then   -- one block
+      local twice, sqSum, sqMax = 0.0, 0.0, 0.0
+      -- One block of every edge up to 64 vertices. Beyond, blocks of 32 edges (33 for the first
+      -- with an odd number of edges), each block's hi and lo added exactly (TwoSum) to sum + err.
+      local sum, err = 0.0, 0.0
+      local stop = m <= 64 and n - 3 or start + 60   -- the block's last step
+      while true do
+        if stop > n - 3 then stop = n - 3 end
         -- two edges per step, the second writing the parts the first reads (no moves), one
         -- addition to each sum per step
-        for i = start, n - 3, 4 do
+        for i = start, stop, 4 do
           x = points[i]
           y = points[i + 1]
           local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
@@ -722,50 +727,24 @@ function polygon.polygonAreaAccurate(points)
           lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
           sqB = sqB + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
         end
-        twice, sqSum, sqMax = hi + lo, sqB, sqB
-      else
-        -- Blocks of 32 edges (33 for the first with an odd number of edges), each block's hi
-        -- and lo added exactly (TwoSum) to sum + err: a block sums as the one above (the same
-        -- steps, written out again: a call per block cost the small polygons 20 instructions).
-        local sum, err = 0.0, 0.0
-        sqSum, sqMax = 0.0, 0.0
-        local stop = start + 60   -- the block's sixteenth step
-        while true do
-          if stop > n - 3 then stop = n - 3 end
-          for i = start, stop, 4 do
-            x = points[i]
-            y = points[i + 1]
-            local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
-            local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
-            local sh, dh = xHi + x2Hi, y2h - yh
-            local dl = y2Lo - yLo
-            local lo1 = sh * dl + (xLo + x2Lo) * (dh + dl)
-            x = points[i + 2]
-            y = points[i + 3]
-            xh = (x + sigma) - sigma
-            yh = (y + sigma) - sigma
-            xHi = xh - x0h
-            xLo = x - xh
-            yLo = y - yh
-            local sh2, dh2 = x2Hi + xHi, yh - y2h
-            local dl2 = yLo - y2Lo
-            hi = hi + (sh * dh + sh2 * dh2)
-            lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
-            sqB = sqB + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
-          end
-          local part = sum + hi   -- sum + hi = part + (TwoSum error), then the same for lo
-          local bv = part - sum
-          err = err + ((sum - (part - bv)) + (hi - bv))
-          sum = part + lo
-          bv = sum - part
-          err = err + ((part - (sum - bv)) + (lo - bv))
-          sqSum = sqSum + sqB
-          if sqB > sqMax then sqMax = sqB end
-          if stop == n - 3 then break end
-          hi, lo, sqB = 0.0, 0.0, 0.0
-          start = stop + 4
-          stop = stop + 64
+        if m <= 64 then   -- the one block
+          twice, sqSum, sqMax = hi + lo, sqB, sqB
+          break
         end
+        local part = sum + hi   -- sum + hi = part + (TwoSum error), then the same for lo
+        local bv = part - sum
+        err = err + ((sum - (part - bv)) + (hi - bv))
+        sum = part + lo
+        bv = sum - part
+        err = err + ((part - (sum - bv)) + (lo - bv))
+        sqSum = sqSum + sqB
+        if sqB > sqMax then sqMax = sqB end
+        if stop == n - 3 then break end
+        hi, lo, sqB = 0.0, 0.0, 0.0
+        start = stop + 4
+        stop = stop + 64
+      end
+      if m > 64 then
         twice = sum + err
         -- err's own roundings: at most f = m / 8 + 4 additions (four per block) of terms below
         -- eps top each, top the sum of every |hi| and |lo| added: |hi| <= sqB / 2 (as below)
