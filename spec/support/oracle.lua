@@ -115,16 +115,23 @@ function oracle.onBoundary(points, x, y)
   return false
 end
 
--- Vertices with consecutive repeats removed (cyclically); returns exact xs, ys.
-local function distinctVertices(points)
+-- Vertices with consecutive repeats removed (cyclically): xs, ys as the doubles given.
+local function distinctDoubles(points)
   local n = #points / 2
   local xs, ys = {}, {}
   for i = 1, n do
     local j = i % n + 1
     if points[2 * i - 1] ~= points[2 * j - 1] or points[2 * i] ~= points[2 * j] then
-      xs[#xs + 1], ys[#ys + 1] = new(points[2 * i - 1]), new(points[2 * i])
+      xs[#xs + 1], ys[#ys + 1] = points[2 * i - 1], points[2 * i]
     end
   end
+  return xs, ys
+end
+
+-- The same as exact numbers.
+local function distinctVertices(points)
+  local xs, ys = distinctDoubles(points)
+  for i = 1, #xs do xs[i], ys[i] = new(xs[i]), new(ys[i]) end
   return xs, ys
 end
 
@@ -652,14 +659,7 @@ end
 -- consecutive vertices are skipped.
 function oracle.reflexCount(points)
   local w = oracle.winding(points) == "cw" and 1 or -1
-  local xs, ys = {}, {}
-  local n = #points / 2
-  for i = 1, n do
-    local j = i % n + 1
-    if points[2 * i - 1] ~= points[2 * j - 1] or points[2 * i] ~= points[2 * j] then
-      xs[#xs + 1], ys[#ys + 1] = points[2 * i - 1], points[2 * i]
-    end
-  end
+  local xs, ys = distinctDoubles(points)
   local count = 0
   for i = 1, #xs do
     local a, c = (i - 2) % #xs + 1, i % #xs + 1
@@ -747,15 +747,8 @@ end
 -- happens but some edges run along each other both ways at a point (their order there is not
 -- decided); "simple" otherwise.
 function oracle.outlineCrossing(points)
-  local xs, ys = {}, {}
-  local n = #points / 2
-  for i = 1, n do
-    local j = i % n + 1
-    if points[2 * i - 1] ~= points[2 * j - 1] or points[2 * i] ~= points[2 * j] then
-      xs[#xs + 1], ys[#ys + 1] = points[2 * i - 1], points[2 * i]
-    end
-  end
-  n = #xs
+  local xs, ys = distinctDoubles(points)
+  local n = #xs
   local function orient(a, b, c)   -- vertex indices
     return oracle.orient(xs[a], ys[a], xs[b], ys[b], xs[c], ys[c])
   end
