@@ -54,7 +54,7 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 --                                is the same from shoelace's (or shoelaceBounds') sums, for
 --                                callers that use those sums too
 -- Each first computes in ordinary floating point with an error bound (Shewchuk's filter):
--- cross's is CROSS_BOUND, the area's is areaUncertain. Only when the bound cannot vouch for the
+-- cross's is CROSS_BOUND, the area's is areaSignOf's. Only when the bound cannot vouch for the
 -- sign does it redo the sum exactly, as a floating-point expansion: a sum of doubles whose bits
 -- do not overlap, built from TwoSum and TwoProduct (Dekker's split). The exact path allocates
 -- nothing: it reuses one scratch array (and when the differences are exact, the common case,
@@ -238,23 +238,50 @@ do
         s = exactScale(m)
       end
     end
+    -- the differences as hi + lo exactly (twoDiff, inlined: four calls were a third of this
+    -- function's time on PUC Lua)
+    local axh, axl, ayh, ayl, bxh, bxl, byh, byl
+    do
+      local a, b = ux1 * s, ux0 * s
+      axh = a - b
+      local bv = a - axh
+      axl = (a - (axh + bv)) + (bv - b)
+      a, b = uy1 * s, uy0 * s
+      ayh = a - b
+      bv = a - ayh
+      ayl = (a - (ayh + bv)) + (bv - b)
+      a, b = vx1 * s, vx0 * s
+      bxh = a - b
+      bv = a - bxh
+      bxl = (a - (bxh + bv)) + (bv - b)
+      a, b = vy1 * s, vy0 * s
+      byh = a - b
+      bv = a - byh
+      byl = (a - (byh + bv)) + (bv - b)
+    end
+    -- Every difference exact (nearby coordinates: the usual case, such as a vertex on an edge's
+    -- line): rounding is monotone, so two products that round apart are ordered as their exact
+    -- values, and the difference of the rounded ones has the sign; products that round alike
+    -- differ by their rounding errors, whose difference has it. A few operations where stage B
+    -- below takes two TwoProducts and four TwoDiffs.
+    if axl == 0 and ayl == 0 and bxl == 0 and byl == 0 then
+      local l, r = axh * byh, ayh * bxh
+      if l ~= r then return l - r end
+      local _, pl = twoProduct(axh, byh)
+      local _, ql = twoProduct(ayh, bxh)
+      return pl - ql
+    end
     local det, detsum, tails
     do
-      local axh, axl = twoDiff(ux1 * s, ux0 * s)
-      local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
-      local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
-      local byh, byl = twoDiff(vy1 * s, vy0 * s)
       local ph, pl = twoProduct(axh, byh)
       local qh, ql = twoProduct(ayh, bxh)
       local i, x0 = twoDiff(pl, ql)
       local j, k = twoDiff(ph, -i)
       local g, x1 = twoDiff(k, qh)
       local x3, x2 = twoDiff(j, -g)
-      -- B's estimate (its parts summed from the smallest) has B's sign (Shewchuk), so it
-      -- decides when the los are all 0 (then tails is 0 and detsum, below, is 0 too)
+      -- B's estimate, its parts summed from the smallest (Shewchuk)
       det, detsum = x0 + x1 + x2 + x3, abs(ph) + abs(qh)
       tails = (axh * byl + byh * axl) - (ayh * bxl + bxh * ayl)
-      if abs(axl) + abs(ayl) + abs(bxl) + abs(byl) == 0 then detsum = 0.0 end
     end
     if abs(det) >= BOUND_B * detsum then return det end
     local bound = BOUND_C * detsum + BOUND_RESULT * abs(det)
@@ -307,7 +334,7 @@ end
 -- matter: sum over edges of (X_i + X_j)(y_j - y_i) with X = x - x_1, the tutorial's trapezoid
 -- form, equal to the cross-product form because the y differences around a polygon sum to zero.
 -- Also returns xSq = sum of X_i^2 and dSq = sum of (y_j - y_i)^2, branch-free, for
--- areaUncertain.
+-- areaSignOf's bound.
 local function shoelace(points, n)
   local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py = 0.0, y1
@@ -352,7 +379,7 @@ if JIT then
   end
 else
   -- Here xSq and dSq come from the box, not from sums: every |X| is at most spanX and every |d|
-  -- at most spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaUncertain's
+  -- at most spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaSignOf's
   -- bound holds with them (looser, but only slivers notice); two fewer sums per vertex. The
   -- shoelace sum, not the box (comparisons pass a NaN by), carries a NaN or infinity into xSq.
   shoelaceBounds = function(points, n)
@@ -360,8 +387,11 @@ else
     local px, py = 0.0, y1
     local sum = 0.0
     local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+    -- (vx is compared as read, a Lua 5.3+ integer too: the conversion to a double is monotone,
+    -- so the extremes converted once are the extremes of the converted coordinates; x = vx - x0
+    -- converts it, x0 being a double)
     for i = 3, n - 1, 2 do
-      local vx, y = points[i] + 0.0, points[i + 1] + 0.0
+      local vx, y = points[i], points[i + 1] + 0.0
       local x = vx - x0
       sum = sum + (px + x) * (y - py)
       if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
@@ -370,22 +400,11 @@ else
       py = y
     end
     sum = sum + px * (y1 - py)
+    xmin = xmin + 0.0
+    xmax = xmax + 0.0
     local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
     return sum, m * spanX * spanX + (sum - sum), m * spanY * spanY, xmin, xmax, ymin, ymax
   end
-end
-
--- Whether shoelace's sum is too close to zero for its sign to be trusted. Each term
--- (X_i + X_j) d is off by at most 4 eps (|X_i| + |X_j|) |d| and summing m terms adds (m - 1) eps
--- times their magnitudes, so the error is below (m + 3) eps T, where by Cauchy-Schwarz
--- T = sum (|X_i| + |X_j|) |d| <= 2 sqrt(xSq dSq). The test compares squares against a bound four
--- times that (no square root); an overflow (an infinite or NaN sum) only sends the decision to
--- the exact path.
-local function areaUncertain(m, sum, xSq, dSq)
-  -- 2^-50 = 8 eps: (m + 8) 8 eps is four times the derived 2 (m + 3) eps, and the + 5 more
-  -- than covers the rounding of this bound's own products
-  local k = (m + 8) * 2^-50
-  return not (sum * sum > k * k * xSq * dSq)   -- luacheck: ignore 581 (NaN must be uncertain)
 end
 
 -- The largest coordinate magnitude of points[1..n], or m if that is larger.
@@ -421,8 +440,16 @@ local function shoelaceExact(points, n)
 end
 
 -- The exact sign of twice the signed area (> 0: clockwise on screen), given shoelace's results.
+-- The sum is trusted when it is far enough from zero. Each term (X_i + X_j) d is off by at most
+-- 4 eps (|X_i| + |X_j|) |d| and summing m terms adds (m - 1) eps times their magnitudes, so the
+-- error is below (m + 3) eps T, where by Cauchy-Schwarz T = sum (|X_i| + |X_j|) |d| <=
+-- 2 sqrt(xSq dSq). The test compares squares against a bound four times that (no square root);
+-- an overflow (an infinite or NaN sum) only sends the decision to the exact path.
 local function areaSignOf(points, n, sum, xSq, dSq)
-  if not areaUncertain(n / 2, sum, xSq, dSq) then return sum end
+  -- 2^-50 = 8 eps: (m + 8) 8 eps, m = n / 2, is four times the derived 2 (m + 3) eps, and the
+  -- + 5 more than covers the rounding of this bound's own products
+  local k = (n / 2 + 8) * 2^-50
+  if sum * sum > k * k * xSq * dSq then return sum end   -- (NaN: not trusted)
   shoelaceExact(points, n)
   return expSign()
 end
@@ -528,7 +555,7 @@ function polygon.polygonWindingOrder(points)
   -- instead took this from 1.2 to 1.4 times the tutorial's time on Lua 5.4, and an unrolled
   -- shoelace to 1.3 (21 interleaved rounds on bench/workloads.lua's ordinary polygons; the
   -- target is 1.3 in lua5.4 bench/run.lua --only 'polygonWindingOrder ord'). polygonArea's
-  -- loop is this one without the squares. A change to shoelace or to areaUncertain's bound
+  -- loop is this one without the squares. A change to shoelace or to areaSignOf's bound
   -- must be made here too.
   local n = type(points) == "table" and #points or -1
   if n % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
@@ -562,7 +589,7 @@ function polygon.polygonWindingOrder(points)
   local d = y1 - py
   sum = sum + px * d
   dSq = dSq + d * d
-  -- areaUncertain's test written out (a call costs more than the test)
+  -- areaSignOf's test written out (a call costs more than the test)
   local k = (n / 2 + 8) * 2^-50
   if not (sum * sum > k * k * xSq * dSq) then   -- luacheck: ignore 581 (NaN is uncertain)
     checkFinitePoints(points, n, "polygonWindingOrder", "points", 3)
@@ -1799,7 +1826,7 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 -- overlapping; fewer than 3 points or zero area never overlaps. both: the axes of both
 -- polygons (polygonsCollide); false: the axes of p1 only, both ends of each range
 -- (polygonCollidesWith). Allocates nothing (except on the rare path beyond 2^500); rescaled
--- is for that path only (callers leave it nil). Call separatingPush (or convexPush) for a push.
+-- is for that path only (callers leave it nil). Call separatingPush for a push.
 -- Returns
 --   false                                  no overlap (exact);
 --   nil, "points1" or "points2"            that polygon holds a NaN or infinite coordinate;
@@ -1868,7 +1895,8 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   end
   local squaredDepth, o, edgeEnd, far, owner, turn, lines, nl
   if both then
-    local tolSq = squaredTolerance(spanX, spanY)
+    local tolSq = 2^-98 * (spanX * spanX + spanY * spanY)   -- squaredTolerance, inlined
+    if tolSq < 2^-1000 then tolSq = huge end
     if JIT then
       squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, tolSq)
       if not squaredDepth then return false end
@@ -2006,15 +2034,6 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
   return depth, ux * depth + 0.0, uy * depth + 0.0
 end
 
---- convexPush(p1, n1, p2, n2, both): convexPenetration, then separatingPush. Returns false, or
--- nil and the argument name for a non-finite coordinate, or push length, dx, dy: adding (dx, dy)
--- to every vertex of p2 leaves the polygons touching or apart, exactly.
-local function convexPush(p1, n1, p2, n2, both)
-  local depth, ux, uy, owner, edgeEnd, base, inside = convexPenetration(p1, n1, p2, n2, both)
-  if not depth then return depth, ux end
-  return separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
-end
-
 -- Raises the error for a non-finite coordinate at the caller of the public function, which
 -- called the private function that calls this one.
 local function raiseNonFinite(fname, argname)
@@ -2049,7 +2068,9 @@ end
 -- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonsCollide(points1, points2)
-  if isParts(points1) or isParts(points2) then
+  -- (isParts, inlined: a call fewer per call)
+  if type(points1) == "table" and type(points1[1]) == "table"
+      or type(points2) == "table" and type(points2[1]) == "table" then
     local hit = collideParts("polygonsCollide", points1, points2, false)
     return hit
   end
@@ -2057,11 +2078,19 @@ function polygon.polygonsCollide(points1, points2)
   return collided
 end
 
+-- convexPenetration, then separatingPush: false, or push length, dx, dy (adding (dx, dy) to
+-- every vertex of points2 leaves the polygons touching or apart, exactly).
 local function pushOut(fname, points1, points2, both)
   local n1 = checkPoints(points1, fname, "points1", 4)
   local n2 = checkPoints(points2, fname, "points2", 4)
-  local push, dx, dy = convexPush(points1, n1, points2, n2, both)
-  if push == nil then raiseNonFinite(fname, dx) end
+  local depth, ux, uy, owner, edgeEnd, base, inside =
+    convexPenetration(points1, n1, points2, n2, both)
+  if not depth then
+    if depth == nil then raiseNonFinite(fname, ux) end
+    return false
+  end
+  local push, dx, dy = separatingPush(points1, n1, points2, n2, depth, ux, uy, owner, edgeEnd,
+    base, inside)
   return push, dx, dy
 end
 
@@ -2082,7 +2111,9 @@ end
 -- coordinates longer than the exact depth. Raises an error for a non-finite coordinate.
 -- @return overlap, dx, dy or false
 function polygon.polygonsCollideV(points1, points2)
-  if isParts(points1) or isParts(points2) then
+  -- (isParts, inlined: a call fewer per call)
+  if type(points1) == "table" and type(points1[1]) == "table"
+      or type(points2) == "table" and type(points2[1]) == "table" then
     local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true)
     return overlap, dx, dy
   end
