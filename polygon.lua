@@ -238,50 +238,55 @@ do
         s = exactScale(m)
       end
     end
-    -- the differences as hi + lo exactly (twoDiff, inlined: four calls were a third of this
-    -- function's time on PUC Lua)
-    local axh, axl, ayh, ayl, bxh, bxl, byh, byl
-    do
+    -- PUC Lua: when every difference is exact (nearby coordinates, the usual case, such as a
+    -- vertex on an edge's line), rounding being monotone, two products that round apart are
+    -- ordered as their exact values, and the difference of the rounded ones has the sign;
+    -- products that round alike differ by their rounding errors, whose difference has it. A few
+    -- operations (TwoDiff's written out: the calls were a third of this function's time) where
+    -- stage B below takes four TwoDiffs, two TwoProducts and a Two-Two-Diff. (On LuaJIT, which
+    -- compiles stage B inline, the branches' side traces, inheriting the eight parts, failed to
+    -- compile: "NYI: register coalescing too complex".)
+    if not JIT then
       local a, b = ux1 * s, ux0 * s
-      axh = a - b
+      local axh = a - b
       local bv = a - axh
-      axl = (a - (axh + bv)) + (bv - b)
+      local exact = (a - (axh + bv)) + (bv - b) == 0
       a, b = uy1 * s, uy0 * s
-      ayh = a - b
+      local ayh = a - b
       bv = a - ayh
-      ayl = (a - (ayh + bv)) + (bv - b)
+      exact = exact and (a - (ayh + bv)) + (bv - b) == 0
       a, b = vx1 * s, vx0 * s
-      bxh = a - b
+      local bxh = a - b
       bv = a - bxh
-      bxl = (a - (bxh + bv)) + (bv - b)
+      exact = exact and (a - (bxh + bv)) + (bv - b) == 0
       a, b = vy1 * s, vy0 * s
-      byh = a - b
+      local byh = a - b
       bv = a - byh
-      byl = (a - (byh + bv)) + (bv - b)
-    end
-    -- Every difference exact (nearby coordinates: the usual case, such as a vertex on an edge's
-    -- line): rounding is monotone, so two products that round apart are ordered as their exact
-    -- values, and the difference of the rounded ones has the sign; products that round alike
-    -- differ by their rounding errors, whose difference has it. A few operations where stage B
-    -- below takes two TwoProducts and four TwoDiffs.
-    if axl == 0 and ayl == 0 and bxl == 0 and byl == 0 then
-      local l, r = axh * byh, ayh * bxh
-      if l ~= r then return l - r end
-      local _, pl = twoProduct(axh, byh)
-      local _, ql = twoProduct(ayh, bxh)
-      return pl - ql
+      if exact and (a - (byh + bv)) + (bv - b) == 0 then
+        local l, r = axh * byh, ayh * bxh
+        if l ~= r then return l - r end
+        local _, pl = twoProduct(axh, byh)
+        local _, ql = twoProduct(ayh, bxh)
+        return pl - ql
+      end
     end
     local det, detsum, tails
     do
+      local axh, axl = twoDiff(ux1 * s, ux0 * s)
+      local ayh, ayl = twoDiff(uy1 * s, uy0 * s)
+      local bxh, bxl = twoDiff(vx1 * s, vx0 * s)
+      local byh, byl = twoDiff(vy1 * s, vy0 * s)
       local ph, pl = twoProduct(axh, byh)
       local qh, ql = twoProduct(ayh, bxh)
       local i, x0 = twoDiff(pl, ql)
       local j, k = twoDiff(ph, -i)
       local g, x1 = twoDiff(k, qh)
       local x3, x2 = twoDiff(j, -g)
-      -- B's estimate, its parts summed from the smallest (Shewchuk)
+      -- B's estimate (its parts summed from the smallest) has B's sign (Shewchuk), so it
+      -- decides when the los are all 0 (then tails is 0 and detsum, below, is 0 too)
       det, detsum = x0 + x1 + x2 + x3, abs(ph) + abs(qh)
       tails = (axh * byl + byh * axl) - (ayh * bxl + bxh * ayl)
+      if abs(axl) + abs(ayl) + abs(bxl) + abs(byl) == 0 then detsum = 0.0 end
     end
     if abs(det) >= BOUND_B * detsum then return det end
     local bound = BOUND_C * detsum + BOUND_RESULT * abs(det)
@@ -387,16 +392,31 @@ else
     local px, py = 0.0, y1
     local sum = 0.0
     local xmin, xmax, ymin, ymax = x0, x0, y1, y1
-    -- (vx is compared as read, a Lua 5.3+ integer too: the conversion to a double is monotone,
-    -- so the extremes converted once are the extremes of the converted coordinates; x = vx - x0
-    -- converts it, x0 being a double)
-    for i = 3, n - 1, 2 do
+    -- Two vertices a step, the previous vertex's X and y in px and py at the start of each:
+    -- the second vertex is read straight into them, so no value is moved (on Lua 5.4 the moves
+    -- and the loop's own instruction were a sixth of the loop). vx is compared as read, a Lua
+    -- 5.3+ integer too: the conversion to a double is monotone, so the extremes converted once
+    -- are the extremes of the converted coordinates (x = vx - x0 converts it, x0 being a double).
+    for i = 3, n - 3, 4 do
       local vx, y = points[i], points[i + 1] + 0.0
       local x = vx - x0
       sum = sum + (px + x) * (y - py)
       if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
       if y < ymin then ymin = y elseif y > ymax then ymax = y end
-      px = x   -- (not px, py = x, y: one move fewer on Lua 5.4)
+      vx = points[i + 2]
+      py = points[i + 3] + 0.0
+      px = vx - x0
+      sum = sum + (x + px) * (py - y)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if py < ymin then ymin = py elseif py > ymax then ymax = py end
+    end
+    if n % 4 == 0 then   -- an odd number of vertices after the first: the last one alone
+      local vx, y = points[n - 1], points[n] + 0.0
+      local x = vx - x0
+      sum = sum + (px + x) * (y - py)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if y < ymin then ymin = y elseif y > ymax then ymax = y end
+      px = x
       py = y
     end
     sum = sum + px * (y1 - py)
@@ -489,8 +509,10 @@ end
 --------------------------------------------------------------------------------------------------
 
 -- level: where the error points, counted from checkPoints (3: the caller of a public function).
-local function checkPoints(points, fname, argname, level)
-  if type(points) ~= "table" then
+-- isTable: the caller has seen that points is a table (a type call fewer: on PUC Lua each costs
+-- about two Lua calls' time).
+local function checkPoints(points, fname, argname, level, isTable)
+  if not isTable and type(points) ~= "table" then
     error(("%s: %s must be a table, got %s"):format(fname, argname or "points", type(points)),
       level or 3)
   end
@@ -1503,12 +1525,16 @@ else
   vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
     cx, cy = cx + 0.0, cy + 0.0
     local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
+    -- (the filter without abs: the bound CROSS_BOUND (|l| + |r|) rounds to the larger of |t|,
+    -- t = CROSS_BOUND (l + r), and that bound times |det|, which is below |det|: so det - bound
+    -- > 0 exactly when det > t and det > -t, and det + bound <= 0 exactly when neither holds)
     for i = 1, n - 1, 2 do
       local px, py = points[i] + 0.0, points[i + 1] + 0.0
       local l, r = ex * (py - cy), ey * (px - cx)
-      local det, bound = l - r, CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-      if det - bound > 0 then return true end
-      if det + bound > 0 and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
+      local det, t = l - r, CROSS_BOUND * (l + r)
+      if det > t then
+        if det > -t or cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return true end
+      elseif det > -t and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
         return true
       end
     end
@@ -1624,7 +1650,9 @@ else
   -- 1,865). (On LuaJIT the choice of edge, a data-dependent branch per edge, would be a side
   -- trace, as the walks' exits were.)
   reachBoth = function(p1, n1, turn1, p2, n2, turn2, tolSq)
-    local least, leastOverlap, leastEnd, leastOwner = huge, 0.0, 1, 1
+    -- each edge is known by a key: its end's index in p1, or n1 + its end's index in p2, so
+    -- that the order of keys is the order of the ties' rule
+    local least, leastOverlap, leastKey = huge, 0.0, 1
     -- p1's first edge with a normal (the area is not zero, so there is one): c -> cn, cn at kn
     local kn = 1
     local cx, cy = p1[n1 - 1] + 0.0, p1[n1] + 0.0
@@ -1649,19 +1677,18 @@ else
     local fx, fy = dx - dnx, dy - dny
     local left1, left2 = n1 / 2, n2 / 2
     local back = -turn1
-    local edgeEnd, owner
+    local key
     -- (one assignment per statement in this loop: Lua 5.4 gives a multiple assignment a move
     -- through a temporary per value, which here was a tenth of the loop)
     for _ = 1, left1 + left2 do
       -- the next edge's outward normal n, the least projection lo on it of the other polygon
-      -- (from its current vertex), the edge's end and owner; then its polygon moves on
+      -- (from its current vertex), the edge's key; then its polygon moves on
       local turnOn = (ex * fy - ey * fx) * turn1   -- > 0: f turns on from e
       if left2 == 0 or left1 > 0 and (turnOn > 0 or turnOn == 0 and (fx ~= 0 or fy ~= 0)) then
         nx = ey * turn1
         ny = ex * back
         lo = nx * (dx - cx) + ny * (dy - cy)
-        edgeEnd = kn
-        owner = 1
+        key = kn
         left1 = left1 - 1
         cx = cnx
         cy = cny
@@ -1675,8 +1702,7 @@ else
         nx = fy * back
         ny = fx * turn1
         lo = nx * (cx - dx) + ny * (cy - dy)
-        edgeEnd = step > 0 and dn or d
-        owner = 2
+        key = n1 + (step > 0 and dn or d)
         left2 = left2 - 1
         d = dn
         dx = dnx
@@ -1692,20 +1718,20 @@ else
       -- which every comparison below passes by)
       local squaredDepth = lo * (lo / (nx * nx + ny * ny))
       if squaredDepth <= tolSq then   -- decide exactly
-        if owner == 1 and not edgeReached(p1, n1, turn1, p2, n2, edgeEnd)
-            or owner == 2 and not edgeReached(p2, n2, turn2, p1, n1, edgeEnd) then
+        if key < n1 and not edgeReached(p1, n1, turn1, p2, n2, key)
+            or key > n1 and not edgeReached(p2, n2, turn2, p1, n1, key - n1) then
           return false
         end
         if lo > 0 then lo, squaredDepth = 0.0, 0.0 end
       elseif lo > 0 then   -- surely apart
         return false
       end
-      if squaredDepth < least or squaredDepth == least
-          and (owner < leastOwner or owner == leastOwner and edgeEnd < leastEnd) then
-        least, leastOverlap, leastEnd, leastOwner = squaredDepth, -lo, edgeEnd, owner
+      if squaredDepth < least or squaredDepth == least and key < leastKey then
+        least, leastOverlap, leastKey = squaredDepth, -lo, key
       end
     end
-    return least, leastOverlap, leastEnd, leastOwner
+    if leastKey < n1 then return least, leastOverlap, leastKey, 1 end
+    return least, leastOverlap, leastKey - n1, 2
   end
 end
 
@@ -1981,12 +2007,18 @@ else
     for i = 1, n - 1, 2 do
       local px, py = points[i] + dx, points[i + 1] + dy
       local l, r = ex * (py - qy), ey * (px - qx)
-      local reach = l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-      if reach > worst then
-        l, r = ex * (py - qby), ey * (px - qbx)
-        local fromB = l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-        if fromB < reach then reach = fromB end
-        if reach > worst then worst = reach end
+      -- first without abs: the bound's |l| + |r| is |l + r| or |l - r|, the larger; det <= -t
+      -- and det <= t, t = CROSS_BOUND (l + r), put the vertex surely on the line or outside
+      -- (its reach <= 0 <= worst), as most vertices are
+      local det, t = l - r, CROSS_BOUND * (l + r)
+      if det > t or det > -t then
+        local reach = det + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+        if reach > worst then
+          l, r = ex * (py - qby), ey * (px - qbx)
+          local fromB = l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+          if fromB < reach then reach = fromB end
+          if reach > worst then worst = reach end
+        end
       end
     end
     return worst
@@ -2040,9 +2072,11 @@ local function raiseNonFinite(fname, argname)
   error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
 end
 
-local function collides(fname, points1, points2, both)
-  local n1 = checkPoints(points1, fname, "points1", 4)
-  local n2 = checkPoints(points2, fname, "points2", 4)
+-- kind1, kind2: the type of each argument's first entry where the caller has looked (it is a
+-- table then), else nil.
+local function collides(fname, points1, points2, both, kind1, kind2)
+  local n1 = checkPoints(points1, fname, "points1", 4, kind1)
+  local n2 = checkPoints(points2, fname, "points2", 4, kind2)
   local depth, argname = convexPenetration(points1, n1, points2, n2, both)
   if depth == nil then raiseNonFinite(fname, argname) end
   return depth ~= false
@@ -2068,21 +2102,22 @@ end
 -- Raises an error for a non-finite coordinate.
 -- @return true or false
 function polygon.polygonsCollide(points1, points2)
-  -- (isParts, inlined: a call fewer per call)
-  if type(points1) == "table" and type(points1[1]) == "table"
-      or type(points2) == "table" and type(points2[1]) == "table" then
+  -- isParts inlined, the kinds handed on to the checks (two calls and two type calls fewer)
+  local kind1 = type(points1) == "table" and type(points1[1])
+  local kind2 = type(points2) == "table" and type(points2[1])
+  if kind1 == "table" or kind2 == "table" then
     local hit = collideParts("polygonsCollide", points1, points2, false)
     return hit
   end
-  local collided = collides("polygonsCollide", points1, points2, true)
+  local collided = collides("polygonsCollide", points1, points2, true, kind1, kind2)
   return collided
 end
 
 -- convexPenetration, then separatingPush: false, or push length, dx, dy (adding (dx, dy) to
 -- every vertex of points2 leaves the polygons touching or apart, exactly).
-local function pushOut(fname, points1, points2, both)
-  local n1 = checkPoints(points1, fname, "points1", 4)
-  local n2 = checkPoints(points2, fname, "points2", 4)
+local function pushOut(fname, points1, points2, both, kind1, kind2)
+  local n1 = checkPoints(points1, fname, "points1", 4, kind1)
+  local n2 = checkPoints(points2, fname, "points2", 4, kind2)
   local depth, ux, uy, owner, edgeEnd, base, inside =
     convexPenetration(points1, n1, points2, n2, both)
   if not depth then
@@ -2111,13 +2146,14 @@ end
 -- coordinates longer than the exact depth. Raises an error for a non-finite coordinate.
 -- @return overlap, dx, dy or false
 function polygon.polygonsCollideV(points1, points2)
-  -- (isParts, inlined: a call fewer per call)
-  if type(points1) == "table" and type(points1[1]) == "table"
-      or type(points2) == "table" and type(points2[1]) == "table" then
+  -- isParts inlined, the kinds handed on to the checks (as in polygonsCollide)
+  local kind1 = type(points1) == "table" and type(points1[1])
+  local kind2 = type(points2) == "table" and type(points2[1])
+  if kind1 == "table" or kind2 == "table" then
     local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true)
     return overlap, dx, dy
   end
-  local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true)
+  local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true, kind1, kind2)
   return push, dx, dy
 end
 
