@@ -1236,18 +1236,21 @@ end
 -- screen down) and reads an edge's x coordinates only where it crosses. x and y are converted
 -- (+ 0.0), and so is every coordinate the walks subtract (cross converts its own), so that Lua
 -- 5.3+ integers count as the doubles they convert to. Two walks, computing the same answer:
--- - containsBranchFree, LuaJIT's (and PUC Lua's for |x| or |y| >= 2^53): at-or-below is the
---   number 1 or 0 without a branch, min(1, max(0, d * 2^600 * 2^600 + 1)) for d = y' - y (every
---   nonzero difference of doubles is at least 2^-1074, so the product reaches 2^126; d has the
---   sign of the comparison, and of the converted one for an integer y'), and so is whether a
---   crossing edge counts, from the sign of its direction times its side test (cross's filter
---   written out, cross where it cannot vouch). An inner loop walks to the next crossing, so that
---   LuaJIT's trace of it is the walk that crosses nothing, whatever vertex it was recorded on; a
---   crossing is a side trace. The loop with a branch per comparison grew a tree of side traces
---   that passed LuaJIT's limit of 100 per loop in some runs, after which calls ran in the
---   interpreter, 2 to 5 times as long; one loop with a branch per crossing ran 1.2 to 1.3 times
---   the tutorial's time in the runs whose trace was recorded on a crossing (bench/run.lua --only
---   'polygonContains cOrd').
+-- - containsByRuns, LuaJIT's (and PUC Lua's for |x| or |y| >= 2^53): the vertices come in runs
+--   on one side of the ray's height, each walked by one numeric for loop with one comparison
+--   per vertex, the same loop for both sides (a sign picks the side), so that LuaJIT's trace
+--   of it is the walk that crosses nothing, whatever vertex it was recorded on; a crossing is
+--   its side exit, counted without a branch by crossingCounts, and the walk goes on in the same
+--   loop. Measured on LuaJIT (luajit bench/run.lua --only '^polygonContains cOrd', ten runs
+--   each, medians): the previous walk, an inner while loop computing at-or-below as the number
+--   min(1, max(0, (y' - y) 2^1200 + 1)) per vertex, 0.87; this loop as a repeat-until with a
+--   floating-point index, 0.82; as a for loop (an integer index, bounds checks hoisted), 0.80.
+--   A loop of its own for each side ran 0.63 to 0.8 in most runs but 4 to 6 times the
+--   tutorial's time in 4 of 14: when one of the two short loops failed to become a trace
+--   ("leaving loop in root trace"), the side traces of the other copied it unrolled, one per
+--   run length, until LuaJIT gave up and interpreted. The loop with a branch per comparison
+--   grew a tree of side traces that passed LuaJIT's limit of 100 per loop in some runs; one
+--   loop over all vertices without a branch (the side test of every edge) took 1.07.
 -- - PUC Lua's, written out in polygonContains (a call to it cost 0.03 of the tutorial's time on
 --   Lua 5.4): per vertex one read and two comparisons, and at a crossing the x coordinates
 --   compared with x first, the side test (a call of cross) only when x lies between them. The
@@ -1280,14 +1283,18 @@ do
     -- with (y' - y) 2^600 < 0; a run above it (sign = -2^600, tie = 2^-500) at one with
     -- -(y' - y) 2^600 < 2^-500, that is y' - y >= 0 (a nonzero difference of doubles is at least
     -- 2^-1074). The edge into that vertex crosses, going up after a run at or below (dir =
-    -- -sign), down after one above. The numbers stay clear of subnormals, which cost a
-    -- microcode assist per operation (a tie of 2^-1074 took the row from 0.7 to 1.25 times the
-    -- tutorial's time). y' - y converts a Lua 5.3+ integer y'.
+    -- -sign), down after one above. The numbers stay clear of subnormals, slow on x86 (with a
+    -- tie of 2^-1074 the row took 1.2 to 1.3 times the tutorial's time, with 2^-500 about
+    -- 0.84). y' - y converts a Lua 5.3+ integer y'.
     local above = min(1, max(0, (y - points[n]) * 2^600 * 2^600))   -- vertex n above: 1, else 0
     local sign, tie = (1 - 2 * above) * 2^600, above * 2^-500
     local crossings, i = 0, 0   -- vertex i = 0 stands for vertex n
     while true do
-      repeat i = i + 2 until i > n or (points[i] - y) * sign < tie
+      local start = i + 2
+      i = n + 2
+      for k = start, n, 2 do
+        if (points[k] - y) * sign < tie then i = k; break end
+      end
       if i > n then break end
       -- j = n when i = 2, else i - 2
       crossings = crossings + crossingCounts(points, i - 2 + n * max(0, 3 - i), i, x, y, -sign)
