@@ -892,11 +892,13 @@ if JIT then
   -- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
   -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
   -- NaN or infinite, so nothing is certain.
-  -- The turns at the last vertex and at vertex 1 are taken before the loop, and when they
-  -- disagree the call ends there, as on PUC Lua (44 of the 100 stars among bench/run.lua's
-  -- ordinary polygons end there). Only four sums cross that branch: its side
-  -- trace inherits little (with the first turns' differences and products alive there too it
-  -- failed to compile in 1 of 4 runs, "NYI: register coalescing too complex").
+  -- The turns at the last vertex, at vertex 1 and at vertex 2 are taken before the loop, and
+  -- when they disagree the call ends there (58 of the 100 stars among bench/run.lua's ordinary
+  -- polygons end there; 44 with the first two turns only, when `luajit bench/run.lua --only
+  -- '^polygonType ord'`, ten runs each alternating, gave medians of 1.195 and 1.23 with two,
+  -- 1.165 and 1.18 with three). Only four sums cross that branch: its side trace inherits
+  -- little (with the first turns' differences and products alive there too it failed to
+  -- compile in 1 of 4 runs, "NYI: register coalescing too complex").
   local function typeFiltered(points, n)
     local cx, cy = points[n - 1], points[n]
     local ex, ey = cx - points[n - 3], cy - points[n - 2]
@@ -904,21 +906,26 @@ if JIT then
     do
       local qx, qy = points[1], points[2]
       local fx, fy = qx - cx, qy - cy
-      local gx, gy = points[3] - qx, points[4] - qy
+      local px, py = points[3], points[4]
+      local gx, gy = px - qx, py - qy
+      local hx, hy = points[5] - px, points[6] - py
       local l, r = ex * fy, ey * fx
       local l2, r2 = fx * gy, fy * gx
-      local s, s2 = l - r, l2 - r2   -- the turns at the last vertex and at vertex 1
-      lo, hi, errSum = min(s, s2), max(s, s2), abs(l + r) + abs(l2 + r2)
+      local l3, r3 = gx * hy, gy * hx
+      local s, s2, s3 = l - r, l2 - r2, l3 - r3   -- the turns at the last vertex, at 1 and at 2
+      lo, hi = min(s, s2, s3), max(s, s2, s3)
+      errSum = abs(l + r) + abs(l2 + r2) + abs(l3 + r3)
       dirAgree = min(1, max(-1, ex * fx * 2^1000)) + min(1, max(-1, fx * gx * 2^1000))
+        + min(1, max(-1, gx * hx * 2^1000))
     end
     if lo * hi < 0 then
       local bound = CROSS_BOUND * errSum
       if lo < -bound and hi > bound then return "concave" end
       return false
     end
-    cx, cy = points[3], points[4]
-    ex, ey = cx - points[1], cy - points[2]
-    for i = 5, n - 1, 2 do
+    cx, cy = points[5], points[6]
+    ex, ey = cx - points[3], cy - points[4]
+    for i = 7, n - 1, 2 do
       local qx, qy = points[i], points[i + 1]
       local fx, fy = qx - cx, qy - cy
       local l, r = ex * fy, ey * fx
