@@ -941,11 +941,13 @@ if JIT then
   -- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
   -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
   -- NaN or infinite, so nothing is certain.
-  -- The turns at the last vertex and at vertex 1 are taken before the loop, and when they
-  -- disagree the call ends there, as on PUC Lua (44 of the 100 stars among bench/run.lua's
-  -- ordinary polygons end there). Only four sums cross that branch: its side
-  -- trace inherits little (with the first turns' differences and products alive there too it
-  -- failed to compile in 1 of 4 runs, "NYI: register coalescing too complex").
+  -- The turns at the last vertex, at vertex 1 and at vertex 2 are taken before the loop, and
+  -- when they disagree the call ends there (58 of the 100 stars among bench/run.lua's ordinary
+  -- polygons end there; 44 with the first two turns only, when `luajit bench/run.lua --only
+  -- '^polygonType ord'`, ten runs each alternating, gave medians of 1.195 and 1.23 with two,
+  -- 1.165 and 1.18 with three). Only four sums cross that branch: its side trace inherits
+  -- little (with the first turns' differences and products alive there too it failed to
+  -- compile in 1 of 4 runs, "NYI: register coalescing too complex").
   local function typeFiltered(points, n)
     local cx, cy = points[n - 1], points[n]
     local ex, ey = cx - points[n - 3], cy - points[n - 2]
@@ -953,21 +955,26 @@ if JIT then
     do
       local qx, qy = points[1], points[2]
       local fx, fy = qx - cx, qy - cy
-      local gx, gy = points[3] - qx, points[4] - qy
+      local px, py = points[3], points[4]
+      local gx, gy = px - qx, py - qy
+      local hx, hy = points[5] - px, points[6] - py
       local l, r = ex * fy, ey * fx
       local l2, r2 = fx * gy, fy * gx
-      local s, s2 = l - r, l2 - r2   -- the turns at the last vertex and at vertex 1
-      lo, hi, errSum = min(s, s2), max(s, s2), abs(l + r) + abs(l2 + r2)
+      local l3, r3 = gx * hy, gy * hx
+      local s, s2, s3 = l - r, l2 - r2, l3 - r3   -- the turns at the last vertex, at 1 and at 2
+      lo, hi = min(s, s2, s3), max(s, s2, s3)
+      errSum = abs(l + r) + abs(l2 + r2) + abs(l3 + r3)
       dirAgree = min(1, max(-1, ex * fx * 2^1000)) + min(1, max(-1, fx * gx * 2^1000))
+        + min(1, max(-1, gx * hx * 2^1000))
     end
     if lo * hi < 0 then
       local bound = CROSS_BOUND * errSum
       if lo < -bound and hi > bound then return "concave" end
       return false
     end
-    cx, cy = points[3], points[4]
-    ex, ey = cx - points[1], cy - points[2]
-    for i = 5, n - 1, 2 do
+    cx, cy = points[5], points[6]
+    ex, ey = cx - points[3], cy - points[4]
+    for i = 7, n - 1, 2 do
       local qx, qy = points[i], points[i + 1]
       local fx, fy = qx - cx, qy - cy
       local l, r = ex * fy, ey * fx
@@ -1282,98 +1289,75 @@ end
 -- The tutorial divides to find the edge's x; here the comparison is the exact side test
 -- x <= x'  <=>  (p2 - p1) x (q - p1) >= 0 when the edge goes down (y2 > y1), <= 0 when it goes up.
 -- The walk carries whether the last vertex was at or below the ray's height (y >= the ray's y,
--- screen down) and reads an edge's x coordinates only where it crosses. x and y come converted
--- (+ 0.0); every coordinate read at a crossing is converted too, so that Lua 5.3+ integers count
--- as the doubles they convert to. Two bodies, computing the same answer:
--- - LuaJIT (and PUC Lua for |y| >= 2^53): at-or-below is the number 1 or 0 without a branch,
---   min(1, max(0, d * 2^600 * 2^600 + 1)) for d = y' - y (every nonzero difference of doubles
---   is at least 2^-1074, so the product reaches 2^126; d has the sign of the comparison, and of
---   the converted one for an integer y'), and so is whether a crossing edge counts, from the
---   sign of its direction times its side test (cross's filter written out, cross where it
---   cannot vouch). An inner loop walks to the next crossing, so that LuaJIT's trace of it is the
---   walk that crosses nothing, whatever vertex it was recorded on; a crossing is a side trace.
---   The loop with a branch per comparison grew a tree of side traces that passed LuaJIT's limit
---   of 100 per loop in some runs, after which calls ran in the interpreter, 2 to 5 times as long;
---   one loop with a branch per crossing ran 1.2 to 1.3 times the tutorial's time in the runs
---   whose trace was recorded on a crossing (bench/run.lua --only 'polygonContains cOrd').
--- - PUC Lua: per vertex one read and two comparisons. The y coordinates are compared as they
---   are, not converted (one instruction less per vertex: 0.96 to 0.87 times the tutorial's time
---   on Lua 5.4): comparing a Lua 5.3+ integer with the double y gives the converted integer's
---   answer whenever |y| < 2^53 (the integer is then compared as its exact double, or it is
---   beyond 2^53 and so is its conversion, on the same side of y). Larger |y| take the first body.
-local contains
+-- screen down) and reads an edge's x coordinates only where it crosses. x and y are converted
+-- (+ 0.0), and so is every coordinate the walks subtract (cross converts its own), so that Lua
+-- 5.3+ integers count as the doubles they convert to. Two walks, computing the same answer:
+-- - containsByRuns, LuaJIT's (and PUC Lua's for |x| or |y| >= 2^53): the vertices come in runs
+--   on one side of the ray's height, each walked by one numeric for loop with one comparison
+--   per vertex, the same loop for both sides (a sign picks the side), so that LuaJIT's trace
+--   of it is the walk that crosses nothing, whatever vertex it was recorded on; a crossing is
+--   its side exit, counted without a branch by crossingCounts, and the walk goes on in the same
+--   loop. Measured on LuaJIT (luajit bench/run.lua --only '^polygonContains cOrd', ten runs
+--   each, medians): the previous walk, an inner while loop computing at-or-below as the number
+--   min(1, max(0, (y' - y) 2^1200 + 1)) per vertex, 0.87; this loop as a repeat-until with a
+--   floating-point index, 0.82; as a for loop (an integer index, bounds checks hoisted), 0.80.
+--   A loop of its own for each side ran 0.63 to 0.8 in most runs but 4 to 6 times the
+--   tutorial's time in 4 of 14: when one of the two short loops failed to become a trace
+--   ("leaving loop in root trace"), the side traces of the other copied it unrolled, one per
+--   run length, until LuaJIT gave up and interpreted. The loop with a branch per comparison
+--   grew a tree of side traces that passed LuaJIT's limit of 100 per loop in some runs; one
+--   loop over all vertices without a branch (the side test of every edge) took 1.07.
+-- - PUC Lua's, written out in polygonContains (a call to it cost 0.03 of the tutorial's time on
+--   Lua 5.4): per vertex one read and two comparisons, and at a crossing the x coordinates
+--   compared with x first, the side test (a call of cross) only when x lies between them. The
+--   coordinates are compared as they are, not converted (an instruction less each: 0.96 to 0.87
+--   times the tutorial's time on Lua 5.4 for y): comparing a Lua 5.3+ integer with a double
+--   below 2^53 in magnitude gives the converted integer's answer (the integer is then compared
+--   as its exact double, or it is beyond 2^53 and so is its conversion, on the same side).
+local containsByRuns
 do
-  local function containsBranchFree(points, n, x, y)
-    local below = min(1, max(0, (points[n] - y) * 2^600 * 2^600 + 1))
-    local crossings, i = 0, 2
-    while true do
-      -- the next vertex on the other side of the ray's height: a loop of its own, so that
-      -- LuaJIT's trace of it is the walk that crosses nothing
-      local atOrBelow = below
-      while i <= n do
-        atOrBelow = min(1, max(0, (points[i] - y) * 2^600 * 2^600 + 1))
-        if atOrBelow ~= below then break end
-        i = i + 2
-      end
-      if i > n then break end
-      -- the edge from vertex i - 2 crosses the ray's height
-      local j = i == 2 and n or i - 2
-      local x1, y1, x2, y2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0, points[i]
-      local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
-      local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
-      if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
-        -- (NaN and overflow too) through cross, not crossExact directly: called here, the side
-        -- traces of crossExact's first branch failed to compile ("NYI: register coalescing too
-        -- complex") and points near edges took 7 to 80 times the tutorial's time, 4 to 5 this way
-        -- (luajit bench/run.lua --only 'polygonContains cEdge')
-        side = cross(x1, y1, x2, y2, x1, y1, x, y)
-      end
-      -- it counts when side >= 0 going down (atOrBelow - below = 1), side <= 0 going up
-      crossings = crossings + min(1, max(0, (atOrBelow - below) * side * 2^600 * 2^600 + 1))
-      below = atOrBelow
-      i = i + 2
+  -- 1 when the edge from vertex j to vertex i, which crosses the ray's height going down
+  -- (dir = 2^600) or up (dir = -2^600), passes at or right of (x, y), else 0: its side test's
+  -- sign times dir's, clamped without a branch (cross's filter written out, cross where it
+  -- cannot vouch; a nonzero side is at least 2^-1074, so dir * side * 2^600 reaches 2^126).
+  local function crossingCounts(points, j, i, x, y, dir)
+    local x1, y1, x2, y2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0, points[i] + 0.0
+    local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
+    local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
+    if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
+      -- (NaN and overflow too) through cross, not crossExact directly: called here, the side
+      -- traces of crossExact's first branch failed to compile ("NYI: register coalescing too
+      -- complex") and points near edges took 7 to 80 times the tutorial's time, 4 to 5 this way
+      -- (luajit bench/run.lua --only 'polygonContains cEdge')
+      side = cross(x1, y1, x2, y2, x1, y1, x, y)
     end
-    return crossings % 2 == 1
+    return min(1, max(0, dir * side * 2^600 + 1))
   end
 
-  if JIT then
-    contains = containsBranchFree
-  else
-    contains = function(points, n, x, y)
-      if y >= 2^53 or y <= -2^53 then
-        local inside = containsBranchFree(points, n, x, y)
-        return inside
+  containsByRuns = function(points, n, x, y)
+    -- A run of vertices at or below the ray's height (sign = 2^600, tie = 0) ends at a vertex
+    -- with (y' - y) 2^600 < 0; a run above it (sign = -2^600, tie = 2^-500) at one with
+    -- -(y' - y) 2^600 < 2^-500, that is y' - y >= 0 (a nonzero difference of doubles is at least
+    -- 2^-1074). The edge into that vertex crosses, going up after a run at or below (dir =
+    -- -sign), down after one above. The numbers stay clear of subnormals, slow on x86 (with a
+    -- tie of 2^-1074 the row took 1.2 to 1.3 times the tutorial's time, with 2^-500 about
+    -- 0.84). y' - y converts a Lua 5.3+ integer y'.
+    local above = min(1, max(0, (y - points[n]) * 2^600 * 2^600))   -- vertex n above: 1, else 0
+    local sign, tie = (1 - 2 * above) * 2^600, above * 2^-500
+    local crossings, i = 0, 0   -- vertex i = 0 stands for vertex n
+    while true do
+      local start = i + 2
+      i = n + 2
+      for k = start, n, 2 do
+        if (points[k] - y) * sign < tie then i = k; break end
       end
-      -- numbers, not booleans, as LuaJIT once needed (a loop-carried boolean that flips
-      -- aborted its traces, "persistent type instability"); no cost here
-      local crossings, below = 0, 0
-      if points[n] >= y then below = 1 end
-      for i = 2, n, 2 do
-        local y2 = points[i]
-        if below == 1 then
-          if y2 < y then   -- the edge from vertex i - 2 goes up across the ray's height
-            below = 0
-            local j = i == 2 and n or i - 2
-            local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
-            if x <= x1 and x <= x2 then
-              crossings = crossings + 1
-            elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) <= 0 then
-              crossings = crossings + 1
-            end
-          end
-        elseif y2 >= y then   -- it goes down across
-          below = 1
-          local j = i == 2 and n or i - 2
-          local x1, y1, x2 = points[j - 1] + 0.0, points[j] + 0.0, points[i - 1] + 0.0
-          if x <= x1 and x <= x2 then
-            crossings = crossings + 1
-          elseif (x <= x1 or x <= x2) and cross(x1, y1, x2, y2, x1, y1, x, y) >= 0 then
-            crossings = crossings + 1
-          end
-        end
-      end
-      return crossings % 2 == 1
+      if i > n then break end
+      -- j = n when i = 2, else i - 2
+      crossings = crossings + crossingCounts(points, i - 2 + n * max(0, 3 - i), i, x, y, -sign)
+      sign = -sign
+      tie = 2^-500 - tie
     end
+    return crossings % 2 == 1
   end
 end
 
@@ -1391,27 +1375,58 @@ local function checkQuery(fname, points, x, y, level)
   return n
 end
 
--- contains with the argument checks of Polygon:contains.
-local function checkedContains(fname, points, x, y)
-  local n = checkQuery(fname, points, x, y, 4)
-  if n < 6 then return false end
-  return contains(points, n, x + 0.0, y + 0.0)
-end
-
 --- Whether (x, y) lies inside the polygon, by the crossing rule with the tutorial's half-open
 -- boundary. Works for concave and self-intersecting polygons (even-odd). Exact. x and y must be
 -- finite (an error otherwise); the polygon's coordinates are not checked (validate does that).
 -- @return true or false; false for fewer than 3 points.
-function polygon.polygonContains(points, x, y)
+local function polygonContains(points, x, y)
   -- the checks written out where they pass (a Lua call costs about 13 ns on Lua 5.4)
   local n = type(points) == "table" and #points or -1
   if n % 2 ~= 0 or type(x) ~= "number" or type(y) ~= "number" or x - x ~= 0 or y - y ~= 0 then
     checkQuery("polygonContains", points, x, y, 3)
   end
   if n < 6 then return false end
-  local inside = contains(points, n, x + 0.0, y + 0.0)
-  return inside   -- not a tail call: the argument errors point at the caller's line
+  x = x + 0.0
+  y = y + 0.0
+  if JIT or x * x + y * y >= 2^106 then   -- (then |x| or |y| may reach 2^53)
+    local inside = containsByRuns(points, n, x, y)
+    return inside   -- not a tail call: the argument errors point at the caller's line
+  end
+  -- PUC Lua, |x| and |y| below 2^53: the walk written out (see the section's comment)
+  local inside = false
+  local below = points[n] >= y
+  for i = 2, n, 2 do
+    if below then
+      if points[i] < y then   -- the edge into vertex i goes up across the ray's height
+        below = false
+        local j = i - 2
+        if j == 0 then j = n end
+        local x1, x2 = points[j - 1], points[i - 1]
+        if x <= x1 then
+          if x <= x2 or cross(x1, points[j], x2, points[i], x1, points[j], x, y) <= 0 then
+            inside = not inside
+          end
+        elseif x <= x2 and cross(x1, points[j], x2, points[i], x1, points[j], x, y) <= 0 then
+          inside = not inside
+        end
+      end
+    elseif points[i] >= y then   -- it goes down across
+      below = true
+      local j = i - 2
+      if j == 0 then j = n end
+      local x1, x2 = points[j - 1], points[i - 1]
+      if x <= x1 then
+        if x <= x2 or cross(x1, points[j], x2, points[i], x1, points[j], x, y) >= 0 then
+          inside = not inside
+        end
+      elseif x <= x2 and cross(x1, points[j], x2, points[i], x1, points[j], x, y) >= 0 then
+        inside = not inside
+      end
+    end
+  end
+  return inside
 end
+polygon.polygonContains = polygonContains
 
 --------------------------------------------------------------------------------------------------
 -- Projection and the separating axis theorem
@@ -5403,7 +5418,13 @@ end
 
 --- Whether (x, y) lies inside, as polygonContains.
 function Polygon:contains(x, y)
-  local inside = checkedContains("Polygon:contains", self.points, x, y)
+  local points = self.points
+  -- polygonContains' checks, naming this method (there they pass again)
+  local n = type(points) == "table" and #points or -1
+  if n % 2 ~= 0 or type(x) ~= "number" or type(y) ~= "number" or x - x ~= 0 or y - y ~= 0 then
+    checkQuery("Polygon:contains", points, x, y, 3)
+  end
+  local inside = polygonContains(points, x, y)
   return inside
 end
 

@@ -135,6 +135,49 @@ describe("points on and one or two ulps beside edges and vertices", function()
     assert.is_true(far > 1000, "points beyond 2^53: " .. far .. " of " .. checked)
   end)
 
+  it("are placed the same way on either side of the PUC interpreters' switch at 2^53", function()
+    -- Scaled by 2^49 and 2^50 the coordinates reach about 2^52 to 2^54: on the PUC interpreters
+    -- a point with x^2 + y^2 < 2^106 (so |x|, |y| < 2^53) takes the walk that compares x and y
+    -- with unconverted coordinates, any other point the walk that LuaJIT always takes.
+    local t = tally.new("polygonContains vs oracle, scaled by 2^49 and 2^50")
+    local near, far = 0, 0
+    for _, scale in ipairs({ 2 ^ 49, 2 ^ 50 }) do
+      for _, case in ipairs(cases) do
+        local p = {}
+        for i = 1, #case.points do p[i] = case.points[i] * scale end
+        for _, q in ipairs(probe.pointsNear(p, { 0, 0.25, 0.5 })) do
+          local x, y = q[1], q[2]
+          if x * x + y * y < 2 ^ 106 then near = near + 1 else far = far + 1 end
+          t:check(polygon.polygonContains(p, x, y) == oracle.contains(p, x, y), case.name, scale, x, y)
+        end
+      end
+    end
+    assert.are.equal(0, t.count, t:message())
+    assert.is_true(near > 1000 and far > 1000, ("points on either side: %d, %d"):format(near, far))
+  end)
+
+  it("are placed the same way when every coordinate is 2^-440 times as large", function()
+    -- near the small end of the exact range: differences of heights down to about 2^-490, which
+    -- the LuaJIT walk scales by 2^600 and compares with 0 or 2^-500 to tell the sides apart.
+    -- Points moved off 0 by an ulp (subnormal, below the exact range's 2^-447) are left out.
+    local function inRange(v) return v == 0 or math.abs(v) >= 2 ^ -447 end
+    local t = tally.new("polygonContains vs oracle, scaled by 2^-440")
+    local checked = 0
+    for _, case in ipairs(cases) do
+      local p = {}
+      for i = 1, #case.points do p[i] = case.points[i] * 2 ^ -440 end
+      for _, q in ipairs(probe.pointsNear(p, { 0, 0.25, 0.5 })) do
+        local x, y = q[1], q[2]
+        if inRange(x) and inRange(y) then
+          checked = checked + 1
+          t:check(polygon.polygonContains(p, x, y) == oracle.contains(p, x, y), case.name, x, y)
+        end
+      end
+    end
+    assert.are.equal(0, t.count, t:message())
+    assert.is_true(checked > 5000, "points checked: " .. checked)
+  end)
+
   it("follow the half-open rule on horizontal edges and at vertices (hand-computed)", function()
     -- trapezoid (1,1) (6,1) (5,3) (2,3): the top edge y = 1 is outside, the bottom edge y = 3
     -- inside between its ends; the left side is x = 1 + (y - 1) / 2, the right one

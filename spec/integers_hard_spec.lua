@@ -228,6 +228,28 @@ describeIntegers("integer coordinates beyond 2^53", function()
     assert.are.equal(polygon.polygonContains(converted(p), 8, B + 3), polygon.polygonContains(p, 8, B + 3))
   end)
 
+  it("give polygonContains the answer of the converted polygon in x too", function()
+    -- B + 3 converts to B + 4: the converted rectangle's right edge is at x = B + 4, and the
+    -- point (B + 4, 8) lies on it, inside (the ray from it crosses that edge: x <= B + 4);
+    -- as integers it would lie right of B + 3, outside. (B + 2, 8) and (B - 2, 8) are inside
+    -- either way; B - 2 is below 2^53, where the PUC interpreters compare x unconverted.
+    local p = { 0, 0, B + 3, 0, B + 3, 16, 0, 16 }
+    local q = converted(p)
+    for _, x in ipairs({ (B + 4) + 0.0, (B + 2) + 0.0, (B - 2) + 0.0, B - 2, B + 0.0 }) do
+      assert.is_true(polygon.polygonContains(q, x, 8), "converted, x = " .. x)
+      assert.is_true(polygon.polygonContains(p, x, 8), "integers, x = " .. x)
+    end
+    assert.is_false(polygon.polygonContains(p, (B + 8) + 0.0, 8))
+    -- the mirror image: -B - 3 converts to -(B + 4), and a point on that left edge is outside
+    -- (its ray crosses both sides), one at -(B + 2) inside
+    local m = { 0, 0, -B - 3, 0, -B - 3, 16, 0, 16 }
+    local mirrored = { { -(B + 8), false }, { -(B + 4), false }, { -(B + 2), true }, { -(B - 2), true } }
+    for _, c in ipairs(mirrored) do
+      assert.are.equal(c[2], polygon.polygonContains(converted(m), c[1] + 0.0, 8), "converted")
+      assert.are.equal(c[2], polygon.polygonContains(m, c[1] + 0.0, 8), "integers")
+    end
+  end)
+
   it("give the measures the values of the converted polygon", function()
     local p = { B - 4, B, B - 1, B + 3, B + 3, B - 1, B, B + 1 }
     local q = converted(p)
