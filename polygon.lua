@@ -667,23 +667,23 @@ function polygon.polygonAreaAccurate(points)
         -- Twice the area as sum over vertices of x_k (y_{k-1} - y_{k+1}) (the sign does not
         -- matter): with dh = yh_{k-1} - yh_{k+1} and dl = yl_{k-1} - yl_{k+1} (dl rounded),
         -- each term is xh dh + (x dl + xl dh), the first a multiple of q^2 summed exactly in
-        -- hi, the second small and summed in floating point in lo, two terms a step. The odd
-        -- vertices' terms take the even vertices' y, and the even ones the odd: one pass over
-        -- each half, each carrying only the split of the y before (two values, not four), the
-        -- last term wrapping round to y_1. Alongside: sx = sum xh^2, sd = sum dh^2 and
-        -- l2 = sum of lo^2 after each step, one multiplication and one addition per value (the
-        -- floating-point additions are what this loop runs short of; min, max or abs took 0.3
-        -- to 0.9 times polygonArea's time more at 1,000 vertices on LuaJIT). The tests after the
-        -- loops use no per-vertex branch. About 23 floating-point operations per vertex against
-        -- polygonArea's 5; luajit -jdump shows 65 instructions per two vertices, no spill.
+        -- hi, the second small and summed in floating point in lo. The odd vertices' terms
+        -- take the even vertices' y, and the even ones the odd: one pass over each half, each
+        -- carrying only the split of the y before it (two values, not four: on LuaJIT four
+        -- left the loop moving values between registers), the last term wrapping round to
+        -- y_1. Alongside: sx = sum xh^2, sd = sum dh^2 and l2, the sum of lo^2 after every
+        -- second term, which bound everything the tests after the loops need with no branch,
+        -- no call and no abs per vertex (math.max and math.abs per vertex instead took 2.8
+        -- times polygonArea's time at 1,000 vertices on LuaJIT against these sums' 2.3, loops
+        -- otherwise alike, in one run of interleaved rounds; PUC Lua would pay a call for each).
         local hi, lo, sx, sd, l2 = 0.0, 0.0, 0.0, 0.0, 0.0
         local yStart = points[n] + 0.0   -- the first pass begins at x_1 with y_m before it
         for start = 1, 3, 2 do
           local yhP = (yStart + sigma) - sigma
           local ylP = yStart - yhP
           for j = start, n - 7, 8 do
-            -- two terms, at x_k and x_{k+2}; the differences are taken in place of the older
-            -- y's parts (luajit: no moves, one register per carried value)
+            -- two terms, at x_k and x_{k+2}; each difference is taken where the older y's
+            -- part was (luajit: no move between registers but the carried pair's)
             local x = points[j]
             local y = points[j + 3]
             local x2 = points[j + 4]
@@ -694,20 +694,20 @@ function polygon.polygonAreaAccurate(points)
             local yl = y - yh
             local dh = yhP - yh
             local dl = ylP - yl
-            local part = x * dl + xl * dh
-            local sum = xh * dh
-            local xSq = xh * xh
-            local dSq = dh * dh
+            lo = lo - (x * dl + xl * dh)
+            hi = hi - xh * dh
+            sx = sx + xh * xh
+            sd = sd + dh * dh
             xh = (x2 + sigma) - sigma
             xl = x2 - xh
             yhP = (y2 + sigma) - sigma
             ylP = y2 - yhP
             dh = yh - yhP
             dl = yl - ylP
-            lo = lo - (part + (x2 * dl + xl * dh))
-            hi = hi - (sum + xh * dh)
-            sx = sx + (xSq + xh * xh)
-            sd = sd + (dSq + dh * dh)
+            lo = lo - (x2 * dl + xl * dh)
+            hi = hi - xh * dh
+            sx = sx + xh * xh
+            sd = sd + dh * dh
             l2 = l2 + lo * lo
           end
           -- the pass's last terms (at most two), one a step; the last of all takes y_1
@@ -734,22 +734,24 @@ function polygon.polygonAreaAccurate(points)
         local twice = hi + lo
         -- The tests, each squared sum rounded by less than m eps relative (room below):
         -- (1) sx <= 2^100 q^2: every |xh| <= 2^50 q, so |x| <= 2^50 q + q and |xl| <= q.
-        -- (2) y_m, y_1 (each pass's first y) within 2^48 q of 0, and m sd <= 2^96 q^2: every
-        --     further yh is its pass's first one minus a sum of dh, of magnitude at most
-        --     sqrt(m sd) <= 2^48 q (Cauchy-Schwarz), so every |y| <= 2^50 q and |yl| <= q.
-        -- (3) sx sd <= 2^104 q^4: sum |xh dh| <= sqrt(sx sd) <= 2^52 q^2, so every product,
-        --     pair and partial sum of hi is a multiple of q^2 below 2^53 q^2: hi is exact.
+        -- (2) y_m and y_1 (the passes' first y) rounded within 2^48 q of 0, and
+        --     m sd <= 2^96 q^2: every further yh is its pass's first one minus a sum of dh,
+        --     of magnitude at most sqrt(m sd) <= 2^48 q (Cauchy-Schwarz), so every |yh| <=
+        --     2^49 q, |y| <= 2^49 q + q and |yl| <= q.
+        -- (3) sx sd <= 2^104 q^4: sum |xh dh| <= sqrt(sx sd) <= 2^52 q^2, so every product
+        --     and partial sum of hi is a multiple of q^2 below 2^53 q^2: hi is exact.
         -- (4) lo's error: each term errs by at most 3.01 eps U_k, U_k = 2 q |x| + q |dh| >=
-        --     |x dl| + |xl dh| (dl rounded, two products, one sum); the sum of a step's two
-        --     terms by eps (U_k + U_k'), the subtraction from lo by eps |lo| after it. So the
-        --     error is below 1.02 eps (sum |lo| + 4.02 sum U_k), where sum |lo| over the at
-        --     most m / 2 + 4 steps is below sqrt((m / 2 + 4) l2) and sum U_k below
-        --     2 q sqrt(m sx) + 2 m q^2 + q sqrt(m sd). Kept below 2^-56 |twice| (NaN fails),
-        --     a quarter ulp of the result with room: twice, hi + lo rounded once, is then
-        --     within 0.75 ulp of twice the exact area.
+        --     |x dl| + |xl dh| (dl rounded, two products, one sum), and each subtraction from
+        --     lo by eps |lo| after it. The |lo| after the first term of a loop step is at most
+        --     the |lo| after the second plus 1.001 U_k, and l2 sums the squares of the others,
+        --     at most m / 2 + 4 of them. So the error is below
+        --     1.02 eps (2 sqrt((m / 2 + 4) l2) + 4.02 sum U_k), where sum U_k is below
+        --     2 q sqrt(m sx) + 2 m q^2 + q sqrt(m sd), 1.02 covering the rounding of this
+        --     bound. Kept below 2^-56 |twice| (NaN fails), a quarter ulp of the result with
+        --     room: twice, hi + lo rounded once, is then within 0.75 ulp of twice the area.
         if sx <= 2^100 * qSq and m * sd <= 2^96 * qSq and sx * sd <= 2^104 * qSq * qSq then
           local yhLast, yhFirst = (points[n] + sigma) - sigma, (y1 + sigma) - sigma
-          local errBound = 1.02 * 2^-53 * (sqrt((m / 2 + 4) * l2)
+          local errBound = 1.02 * 2^-53 * (2 * sqrt((m / 2 + 4) * l2)
             + 4.02 * (2 * q * sqrt(m * sx) + 2 * m * qSq + q * sqrt(m * sd)))
           local size = twice < 0 and -twice or twice
           if errBound <= 2^-56 * size and yhLast * yhLast <= 2^96 * qSq
