@@ -676,18 +676,29 @@ function polygon.polygonAreaAccurate(points)
         -- no call and no abs per vertex (math.max and math.abs per vertex instead took 2.8
         -- times polygonArea's time at 1,000 vertices on LuaJIT against these sums' 2.3, loops
         -- otherwise alike, in one run of interleaved rounds; PUC Lua would pay a call for each).
+        -- On LuaJIT this loop is bound by its floating-point additions, 13.5 a vertex (one
+        -- fewer a vertex took 9% off its time, one fewer multiplication nothing): so x is
+        -- taken as it is, not relative to vertex 1 (one more subtraction a vertex, 7% more
+        -- time). Instead x and y swap roles when |x_1| > |y_1| (the term becomes
+        -- y_k (x_{k-1} - x_{k+1}), of opposite sign; the index arithmetic costs LuaJIT no
+        -- time): a polygon far from the origin along one axis passes the tests below; one far
+        -- along both fails them and takes Dot2 (bench/workloads.lua's polygons of 1,000
+        -- vertices moved by (d, d): all pass at d = 8 times their radius, none at 32).
+        -- Below, x and y name the coordinates in their roles.
+        local a = (x1 < 0 and -x1 or x1) > (y1 < 0 and -y1 or y1) and 1 or 0
+        local yFirst = points[2 - a] + 0.0
         local hi, lo, sx, sd, l2 = 0.0, 0.0, 0.0, 0.0, 0.0
-        local yStart = points[n] + 0.0   -- the first pass begins at x_1 with y_m before it
+        local yStart = points[n - a] + 0.0   -- the first pass begins at x_1 with y_m before it
         for start = 1, 3, 2 do
           local yhP = (yStart + sigma) - sigma
           local ylP = yStart - yhP
           for j = start, n - 7, 8 do
             -- two terms, at x_k and x_{k+2}; each difference is taken where the older y's
             -- part was (luajit: no move between registers but the carried pair's)
-            local x = points[j]
-            local y = points[j + 3]
-            local x2 = points[j + 4]
-            local y2 = points[j + 7]
+            local x = points[j + a]
+            local y = points[j + 3 - a]
+            local x2 = points[j + 4 + a]
+            local y2 = points[j + 7 - a]
             local xh = (x + sigma) - sigma
             local xl = x - xh
             local yh = (y + sigma) - sigma
@@ -713,8 +724,8 @@ function polygon.polygonAreaAccurate(points)
           -- the pass's last terms (at most two), one a step; the last of all takes y_1
           local i = n - 7 >= start and n + 1 - (n - 7 - start) % 8 or start
           while i < n do
-            local x = points[i]
-            local y = i + 3 <= n and points[i + 3] or y1
+            local x = points[i + a]
+            local y = i + 3 <= n and points[i + 3 - a] or yFirst
             local xh = (x + sigma) - sigma
             local xl = x - xh
             local yh = (y + sigma) - sigma
@@ -729,7 +740,7 @@ function polygon.polygonAreaAccurate(points)
             yhP, ylP = yh, yl
             i = i + 4
           end
-          yStart = y1   -- the second pass begins at x_2 with y_1 before it
+          yStart = yFirst   -- the second pass begins at x_2 with y_1 before it
         end
         local twice = hi + lo
         -- The tests, each squared sum rounded by less than m eps relative (room below):
@@ -750,7 +761,7 @@ function polygon.polygonAreaAccurate(points)
         --     bound. Kept below 2^-56 |twice| (NaN fails), a quarter ulp of the result with
         --     room: twice, hi + lo rounded once, is then within 0.75 ulp of twice the area.
         if sx <= 2^100 * qSq and m * sd <= 2^96 * qSq and sx * sd <= 2^104 * qSq * qSq then
-          local yhLast, yhFirst = (points[n] + sigma) - sigma, (y1 + sigma) - sigma
+          local yhLast, yhFirst = (points[n - a] + sigma) - sigma, (yFirst + sigma) - sigma
           local errBound = 1.02 * 2^-53 * (2 * sqrt((m / 2 + 4) * l2)
             + 4.02 * (2 * q * sqrt(m * sx) + 2 * m * qSq + q * sqrt(m * sd)))
           local size = twice < 0 and -twice or twice
