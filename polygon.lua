@@ -685,20 +685,24 @@ function polygon.polygonAreaAccurate(points)
         -- along both fails them and takes Dot2 (bench/workloads.lua's polygons of 1,000
         -- vertices moved by (d, d): all pass at d = 8 times their radius, none at 32).
         -- Below, x and y name the coordinates in their roles.
+        -- a: 1 when the roles swap; the flat index of a term's x plus yNext is that of the
+        -- next vertex's y (3, or 1 for the next vertex's x when swapped)
         local a = (x1 < 0 and -x1 or x1) > (y1 < 0 and -y1 or y1) and 1 or 0
+        local yNext = 3 - 2 * a
+        local yNext2 = yNext + 4
         local yFirst = points[2 - a] + 0.0
         local hi, lo, sx, sd, l2 = 0.0, 0.0, 0.0, 0.0, 0.0
         local yStart = points[n - a] + 0.0   -- the first pass begins at x_1 with y_m before it
         for start = 1, 3, 2 do
           local yhP = (yStart + sigma) - sigma
           local ylP = yStart - yhP
-          for j = start, n - 7, 8 do
+          for j = start + a, n - 7 + a, 8 do
             -- two terms, at x_k and x_{k+2}; each difference is taken where the older y's
             -- part was (luajit: no move between registers but the carried pair's)
-            local x = points[j + a]
-            local y = points[j + 3 - a]
-            local x2 = points[j + 4 + a]
-            local y2 = points[j + 7 - a]
+            local x = points[j]
+            local y = points[j + yNext]
+            local x2 = points[j + 4]
+            local y2 = points[j + yNext2]
             local xh = (x + sigma) - sigma
             local xl = x - xh
             local yh = (y + sigma) - sigma
