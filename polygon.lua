@@ -618,7 +618,7 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- From 65 to 2,048 vertices first a split in two passes (below); on PUC Lua up to 64 vertices
+-- From 65 to 4,096 vertices first a split in two passes (below); on PUC Lua up to 64 vertices
 -- a split in one pass (below that); where their tests after the loop fail, and on LuaJIT up to
 -- 64 vertices: a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
@@ -646,9 +646,11 @@ function polygon.polygonAreaAccurate(points)
   -- too) the guess cost 10 more Lua 5.4 instructions a call (368 against 358 on
   -- bench/workloads.lua's ordinary polygons, each of which passes the tests either way); a
   -- polygon far narrower than long, or whose middle vertex lies near vertex 1, only fails the
-  -- tests sooner. (Beyond 2,048 vertices the large split's bound on its float part, growing as
-  -- m^1.5, fails for most polygons.)
-  if m <= 2048 and (m > 64 or not JIT) then
+  -- tests sooner. (Beyond 4,096 vertices the large split's bound on its float part fails for
+  -- spiky polygons: on bench/workloads.lua's large star it is 0.09, 0.17, 1.1 and 31 times what
+  -- the test allows at 2,048, 4,096, 16,384 and 100,000 vertices, on its convex polygon 0.04,
+  -- 0.09, 0.5 and 2.7.)
+  if m <= 4096 and (m > 64 or not JIT) then
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
     local g = points[k] - x1

@@ -1,4 +1,4 @@
--- Hard cases for polygonAreaAccurate from 65 to 2,048 vertices, where it first tries a split in
+-- Hard cases for polygonAreaAccurate from 65 to 4,096 vertices, where it first tries a split in
 -- two passes (the odd vertices' terms x_k (y_{k-1} - y_{k+1}), then the even ones', each pass
 -- ending with up to two terms outside its loop of two, the very last one wrapping round to
 -- y_1), then tests after the loops: every |x| and |y| small enough for the split (one vertex
@@ -49,7 +49,7 @@ local function randomStar(r, m)
   return r:int(0, 1) == 1 and shapes.reverse(p) or p
 end
 
-describe("polygonAreaAccurate from 65 to 2,048 vertices", function()
+describe("polygonAreaAccurate from 65 to 4,096 vertices", function()
   it("is within one ulp at every number of vertices from 65 to 96 (each pass's last terms)", function()
     local r, list = prng.new(6502), {}
     for m = 65, 96 do
@@ -59,10 +59,10 @@ describe("polygonAreaAccurate from 65 to 2,048 vertices", function()
     checkAll(list)
   end)
 
-  it("is within one ulp at 2,047, 2,048 and 2,049 vertices", function()
-    local r = prng.new(2048)
-    checkAll({ randomStar(r, 2047), randomStar(r, 2048), randomStar(r, 2049),
-      shapes.noisyCircle(2048, r) })
+  it("is within one ulp at 4,095, 4,096 and 4,097 vertices", function()
+    local r = prng.new(4096)
+    checkAll({ star(r, 4095, 3, -2, 50), star(r, 4096, 3, -2, 50), randomStar(r, 4096),
+      randomStar(r, 4097), shapes.noisyCircle(4096, r) })
   end)
 
   it("is within one ulp when one vertex lies far out in x or in y", function()
