@@ -675,9 +675,10 @@ function polygon.polygonAreaAccurate(points)
         -- left the loop moving values between registers), the last term wrapping round to
         -- y_1. Alongside: sx = sum xh^2, sd = sum dh^2 and l2, the sum of lo^2 after every
         -- second term, which bound everything the tests after the loops need with no branch,
-        -- no call and no abs per vertex (math.max and math.abs per vertex instead took 2.8
-        -- times polygonArea's time at 1,000 vertices on LuaJIT against these sums' 2.3, loops
-        -- otherwise alike, in one run of interleaved rounds; PUC Lua would pay a call for each).
+        -- no call and no abs per vertex (tracking the largest |x|, |dh| and partial sum with
+        -- math.max and math.abs instead took 2.8 times polygonArea's time at 1,000 vertices on
+        -- LuaJIT against 2.3 with a sum of squares, in one run of interleaved rounds; PUC Lua
+        -- would pay a call for each).
         -- On LuaJIT this loop is bound by its floating-point additions, 13.5 a vertex (one
         -- fewer a vertex took 9% off its time, one fewer multiplication nothing): so x is
         -- taken as it is, not relative to vertex 1 (one more subtraction a vertex, 7% more
