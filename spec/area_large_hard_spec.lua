@@ -13,6 +13,7 @@ local oracle = require "oracle"
 local exact = require "exact"
 local prng = require "prng"
 local shapes = require "shapes"
+local garbage = require "garbage"
 
 local function offByMore(points)
   local a = polygon.polygonAreaAccurate(points)
@@ -137,6 +138,17 @@ describe("polygonAreaAccurate from 65 to 4,096 vertices", function()
       assert.are.equal(polygon.polygonAreaAccurate(floats), polygon.polygonAreaAccurate(ints))
       assert.is_nil(offByMore(floats))
     end
+  end)
+
+  it("allocates nothing, on the split and on its fallbacks", function()
+    -- a star near the origin and a spiral strip (the split), a star far along both axes (Dot2)
+    local r = prng.new(99)
+    local near, far = star(r, 1000, 3, -2, 50), star(r, 1000, 1e7, 1e7, 50)
+    local list = { near, far, shapes.spiral(1000, 12) }
+    local sum = 0
+    local kb = garbage.growth(function(i) sum = sum + polygon.polygonAreaAccurate(list[i % 3 + 1]) end, 300)
+    assert.are.equal(0, kb)
+    assert.is_true(sum > 0)
   end)
 
   it("raises an error for a non-finite coordinate at any vertex", function()
