@@ -667,9 +667,9 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- Up to 2,048 vertices on PUC Lua, and from 65 to 2,048 on LuaJIT, first an error-free split
--- (below), whose tests after its loop say whether it is within the bound; otherwise:
--- a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
+-- From 65 to 4,096 vertices first a split in two passes (below); on PUC Lua up to 64 vertices
+-- a split in one pass (below that); where their tests after the loop fail, and on LuaJIT up to
+-- 64 vertices: a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
 -- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
 -- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
 -- of |products| (bounded through their squares, which need no branch or abs). When that second
@@ -685,34 +685,23 @@ function polygon.polygonAreaAccurate(points)
   local n = #points
   if n < 6 then return nil end
   local m = n / 2
-  -- (beyond 2,048 vertices the third test below, growing as m^2, fails for most polygons)
-  if (not JIT or m > 64) and m <= 2048 then
-    -- First a cheaper error-free split (Rump, Ogita and Oishi's ExtractScalar), on PUC Lua and
-    -- on LuaJIT beyond 64 vertices: with a quantum q, a power of two near 2^-20 (2^-22 beyond
-    -- 64 vertices) times the polygon's size,
-    -- (v + sigma) - sigma for sigma = 2^53 q is v rounded to a multiple of q, exactly, and the
-    -- rest v - that is exact and at most q, while |v| <= sigma / 2. Twice the area is
-    -- sum over edges i -> j of (X_i + X_j)(y_j - y_i), X = x - (x_1 rounded): of the rounded
-    -- parts, sh = Xh_i + Xh_j and dh = yh_j - yh_i are exact multiples of q, and so is every
-    -- sum of their products, while below 2^53 q^2: that sum is exact. The rest,
-    -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point. About
-    -- 26 instructions per vertex against Dot2's 42 below (Lua 5.4; at 1,000 vertices 28 a vertex
-    -- with the blocks below, against polygonArea's 9.5). On LuaJIT, where Dot2 meets its target
-    -- up to 16 vertices, the side traces leaving this loop aborted on such short polygons ("NYI:
-    -- register coalescing too complex") and calls ran a thousand times as long; at 1,000
-    -- vertices the split takes 3.7 us against Dot2's 5.5 (luajit, bench/workloads.lua's large
-    -- polygons), and the exits are rare. The tests after the
-    -- loop (sums of squares, Cauchy-Schwarz) prove that every rounded part was exact and that
-    -- the float part is off by less than a quarter ulp of the result; otherwise (a quantum
-    -- guessed badly from vertex 1 and the middle one, a sliver, a polygon far from the origin
-    -- for its size, NaN) Dot2 below decides. One quantum serves both axes, guessed from one
-    -- pair of vertices: from two pairs (1 and m too) the guess cost 10 more Lua 5.4
-    -- instructions a call (368 against 358 on bench/workloads.lua's ordinary polygons, each of
-    -- which passes the tests either way); a polygon far narrower than long, or whose middle
-    -- vertex lies near vertex 1, only fails the tests sooner.
+  -- Both splits round every coordinate to a multiple of a quantum q, a power of two from the
+  -- polygon's size guessed from vertex 1 and the middle vertex: g = |x_k - x_1| + |y_k - y_1|
+  -- (abs is a call on PUC), q 2^-20 times the power of two above g. With sigma = 2^53 q and
+  -- |v| <= 2^52 q, vh = (v + sigma) - sigma (Rump, Ogita and Oishi's ExtractScalar) is v
+  -- rounded to a multiple of q, exactly, and vl = v - vh is exact and at most q; beyond,
+  -- |vh| > 2^51 q, so a bound on every |vh| below that bounds every |v|.
+  -- One quantum serves both axes, guessed from one pair of vertices: from two pairs (1 and m
+  -- too) the guess cost 10 more Lua 5.4 instructions a call (368 against 358 on
+  -- bench/workloads.lua's ordinary polygons, each of which passes the tests either way); a
+  -- polygon far narrower than long, or whose middle vertex lies near vertex 1, only fails the
+  -- tests sooner. (Beyond 4,096 vertices the large split's bound on its float part fails for
+  -- spiky polygons: on bench/workloads.lua's large star it is 0.09, 0.17, 1.1 and 31 times what
+  -- the test allows at 2,048, 4,096, 16,384 and 100,000 vertices, on its convex polygon 0.04,
+  -- 0.09, 0.5 and 2.7.)
+  if m <= 4096 and (m > 64 or not JIT) then
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
-    -- the guess g = |x_k - x_1| + |y_k - y_1| (abs is a call on PUC)
     local g = points[k] - x1
     if g < 0 then g = -g end
     local d = points[k + 1] - y1
@@ -722,40 +711,149 @@ function polygon.polygonAreaAccurate(points)
       local t = g * 2^53
       local q = (t + g) - t
       if q == 0 then q = g end
-      -- 2^-20 of the guess; 2^-22 beyond 64 vertices, where the third test (below) grows
-      -- with m and the block's length and needs the finer quantum for the benchmark's stars of
-      -- 1,000 vertices
-      if m > 64 then q = q * 2^-22 else q = q * 2^-20 end
+      q = q * 2^-20
       local sigma = q * 2^53
-      local x0h = (x1 + sigma) - sigma
-      -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
-      local x, y = points[n - 1], points[n]
-      local xh, yh = (x + sigma) - sigma, (y + sigma) - sigma
-      local xHi, xLo, yLo = xh - x0h, x - xh, y - yh
-      -- hi, lo and sqB (the sum of sh^2 + dh^2) of the current block of edges
-      local hi, lo, sqB = 0.0, 0.0, 0.0
-      local start = 1
-      if m % 2 == 1 then   -- an odd number of edges: one before the pairs
-        x, y = points[1], points[2]
-        local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
-        local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
-        local sh, dh = xHi + x2Hi, y2h - yh
-        local dl = y2Lo - yLo
-        hi, lo = sh * dh, sh * dl + (xLo + x2Lo) * (dh + dl)
-        sqB = sh * sh + dh * dh
-        xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
-      end
-      -- twice the area, the sum of every sh^2 + dh^2 and the largest sqB of a block
-      local twice, sqSum, sqMax = 0.0, 0.0, 0.0
-      -- One block of every edge up to 64 vertices. Beyond, blocks of 32 edges (33 for the first
-      -- with an odd number of edges), each block's hi and lo added exactly (TwoSum) to sum + err.
-      local sum, err = 0.0, 0.0
-      local stop = m <= 64 and n - 3 or start + 60   -- the block's last step
-      while true do
-        if stop > n - 3 then stop = n - 3 end
+      local qSq = q * q
+      if m > 64 then
+        -- Twice the area as sum over vertices of x_k (y_{k-1} - y_{k+1}) (the sign does not
+        -- matter): with dh = yh_{k-1} - yh_{k+1} and dl = yl_{k-1} - yl_{k+1} (dl rounded),
+        -- each term is xh dh + (x dl + xl dh), the first a multiple of q^2 summed exactly in
+        -- hi, the second small and summed in floating point in lo. The odd vertices' terms
+        -- take the even vertices' y, and the even ones the odd: one pass over each half, each
+        -- carrying only the split of the y before it (two values, not four: on LuaJIT four
+        -- left the loop moving values between registers), the last term wrapping round to
+        -- y_1. Alongside: sx = sum xh^2, sd = sum dh^2 and l2, the sum of lo^2 after every
+        -- second term, which bound everything the tests after the loops need with no branch,
+        -- no call and no abs per vertex (tracking the largest |x|, |dh| and partial sum with
+        -- math.max and math.abs instead took 2.8 times polygonArea's time at 1,000 vertices on
+        -- LuaJIT against 2.3 with a sum of squares, in one run of interleaved rounds; PUC Lua
+        -- would pay a call for each).
+        -- On LuaJIT this loop is bound by its floating-point additions, 13.5 a vertex (one
+        -- fewer a vertex took 9% off its time, one fewer multiplication nothing): so x is
+        -- taken as it is, not relative to vertex 1 (one more subtraction a vertex, 7% more
+        -- time). Instead x and y swap roles when |x_1| > |y_1| (the term becomes
+        -- y_k (x_{k-1} - x_{k+1}), of opposite sign; the index arithmetic costs LuaJIT no
+        -- time): a polygon far from the origin along one axis passes the tests below; one far
+        -- along both fails them and takes Dot2 (bench/workloads.lua's polygons of 1,000
+        -- vertices moved by (d, d): all pass at d = 8 times their radius, none at 32).
+        -- Below, x and y name the coordinates in their roles.
+        -- a: 1 when the roles swap; the flat index of a term's x plus yNext is that of the
+        -- next vertex's y (3, or 1 for the next vertex's x when swapped)
+        local a = (x1 < 0 and -x1 or x1) > (y1 < 0 and -y1 or y1) and 1 or 0
+        local yNext = 3 - 2 * a
+        local yNext2 = yNext + 4
+        local yFirst = points[2 - a] + 0.0
+        local hi, lo, sx, sd, l2 = 0.0, 0.0, 0.0, 0.0, 0.0
+        local yStart = points[n - a] + 0.0   -- the first pass begins at x_1 with y_m before it
+        for start = 1, 3, 2 do
+          local yhP = (yStart + sigma) - sigma
+          local ylP = yStart - yhP
+          for j = start + a, n - 7 + a, 8 do
+            -- two terms, at x_k and x_{k+2}; each difference is taken where the older y's
+            -- part was (luajit: no move between registers but the carried pair's)
+            local x = points[j]
+            local y = points[j + yNext]
+            local x2 = points[j + 4]
+            local y2 = points[j + yNext2]
+            local xh = (x + sigma) - sigma
+            local xl = x - xh
+            local yh = (y + sigma) - sigma
+            local yl = y - yh
+            local dh = yhP - yh
+            local dl = ylP - yl
+            lo = lo - (x * dl + xl * dh)
+            hi = hi - xh * dh
+            sx = sx + xh * xh
+            sd = sd + dh * dh
+            xh = (x2 + sigma) - sigma
+            xl = x2 - xh
+            yhP = (y2 + sigma) - sigma
+            ylP = y2 - yhP
+            dh = yh - yhP
+            dl = yl - ylP
+            lo = lo - (x2 * dl + xl * dh)
+            hi = hi - xh * dh
+            sx = sx + xh * xh
+            sd = sd + dh * dh
+            l2 = l2 + lo * lo
+          end
+          -- the pass's last terms (at most two), one a step; the last of all takes y_1
+          local i = n - 7 >= start and n + 1 - (n - 7 - start) % 8 or start
+          while i < n do
+            local x = points[i + a]
+            local y = i + 3 <= n and points[i + 3 - a] or yFirst
+            local xh = (x + sigma) - sigma
+            local xl = x - xh
+            local yh = (y + sigma) - sigma
+            local yl = y - yh
+            local dh = yhP - yh
+            local dl = ylP - yl
+            lo = lo - (x * dl + xl * dh)
+            hi = hi - xh * dh
+            sx = sx + xh * xh
+            sd = sd + dh * dh
+            l2 = l2 + lo * lo
+            yhP, ylP = yh, yl
+            i = i + 4
+          end
+          yStart = yFirst   -- the second pass begins at x_2 with y_1 before it
+        end
+        local twice = hi + lo
+        -- The tests, each squared sum rounded by less than m eps relative (room below):
+        -- (1) sx <= 2^100 q^2: every |xh| <= 2^50 q, so |x| <= 2^50 q + q and |xl| <= q.
+        -- (2) y_m and y_1 (the passes' first y) rounded within 2^48 q of 0, and
+        --     m sd <= 2^96 q^2: every further yh is its pass's first one minus a sum of dh,
+        --     of magnitude at most sqrt(m sd) <= 2^48 q (Cauchy-Schwarz), so every |yh| <=
+        --     2^49 q, |y| <= 2^49 q + q and |yl| <= q.
+        -- (3) sx sd <= 2^104 q^4: sum |xh dh| <= sqrt(sx sd) <= 2^52 q^2, so every product
+        --     and partial sum of hi is a multiple of q^2 below 2^53 q^2: hi is exact.
+        -- (4) lo's error: each term errs by at most 3.01 eps U_k, U_k = 2 q |x| + q |dh| >=
+        --     |x dl| + |xl dh| (dl rounded, two products, one sum), and each subtraction from
+        --     lo by eps |lo| after it. The |lo| after the first term of a loop step is at most
+        --     the |lo| after the second plus 1.001 U_k, and l2 sums the squares of the others,
+        --     at most m / 2 + 4 of them. So the error is below
+        --     1.02 eps (2 sqrt((m / 2 + 4) l2) + 4.02 sum U_k), where sum U_k is below
+        --     2 q sqrt(m sx) + 2 m q^2 + q sqrt(m sd), 1.02 covering the rounding of this
+        --     bound. Kept below 2^-56 |twice| (NaN fails), a quarter ulp of the result with
+        --     room: twice, hi + lo rounded once, is then within 0.75 ulp of twice the area.
+        if sx <= 2^100 * qSq and m * sd <= 2^96 * qSq and sx * sd <= 2^104 * qSq * qSq then
+          local yhLast, yhFirst = (points[n - a] + sigma) - sigma, (yFirst + sigma) - sigma
+          local errBound = 1.02 * 2^-53 * (2 * sqrt((m / 2 + 4) * l2)
+            + 4.02 * (2 * q * sqrt(m * sx) + 2 * m * qSq + q * sqrt(m * sd)))
+          local size = twice < 0 and -twice or twice
+          if errBound <= 2^-56 * size and yhLast * yhLast <= 2^96 * qSq
+            and yhFirst * yhFirst <= 2^96 * qSq then
+            return size * 0.5
+          end
+        end
+      else
+        -- PUC Lua up to 64 vertices: twice the area is sum over edges i -> j of
+        -- (X_i + X_j)(y_j - y_i), X = x - (x_1 rounded): of the rounded parts, sh = Xh_i + Xh_j
+        -- and dh = yh_j - yh_i are exact multiples of q, and so is every sum of their
+        -- products, while below 2^53 q^2: that sum is exact. The rest,
+        -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point.
+        -- About 26 Lua 5.4 instructions per vertex against Dot2's 42 below.
+        local x0h = (x1 + sigma) - sigma
+        -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
+        local x, y = points[n - 1], points[n]
+        local xh, yh = (x + sigma) - sigma, (y + sigma) - sigma
+        local xHi, xLo, yLo = xh - x0h, x - xh, y - yh
+        -- hi, lo and sqSum (the sum of sh^2 + dh^2) of the edges
+        local hi, lo, sqSum = 0.0, 0.0, 0.0
+        local start = 1
+        if m % 2 == 1 then   -- an odd number of edges: one before the pairs
+          x, y = points[1], points[2]
+          local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
+          local x2Hi, x2Lo, y2Lo = x2h - x0h, x - x2h, y - y2h
+          local sh, dh = xHi + x2Hi, y2h - yh
+          local dl = y2Lo - yLo
+          hi, lo = sh * dh, sh * dl + (xLo + x2Lo) * (dh + dl)
+          sqSum = sh * sh + dh * dh
+          xHi, xLo, yh, yLo, start = x2Hi, x2Lo, y2h, y2Lo, 3
+        end
         -- two edges per step, the second writing the parts the first reads (no moves), one
         -- addition to each sum per step
-        for i = start, stop, 4 do
+        for i = start, n - 3, 4 do
           x = points[i]
           y = points[i + 1]
           local x2h, y2h = (x + sigma) - sigma, (y + sigma) - sigma
@@ -774,55 +872,23 @@ function polygon.polygonAreaAccurate(points)
           local dl2 = yLo - y2Lo
           hi = hi + (sh * dh + sh2 * dh2)
           lo = lo + (lo1 + (sh2 * dl2 + (x2Lo + xLo) * (dh2 + dl2)))
-          sqB = sqB + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
+          sqSum = sqSum + ((sh * sh + dh * dh) + (sh2 * sh2 + dh2 * dh2))
         end
-        if m <= 64 then   -- the one block
-          twice, sqSum, sqMax = hi + lo, sqB, sqB
-          break
+        local twice = hi + lo
+        -- With sSq = sum sh^2 and dSq = sum dh^2 (sqSum = sSq + dSq): every |Xh| and
+        -- |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1, below
+        -- sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is then
+        -- below sigma / 2, and every sh, dh exact (the first test).
+        -- sum |sh dh| <= sqrt(sSq dSq) <= sqSum / 2 <= 2^50 q^2 keeps every partial sum of hi
+        -- exact (the second). The float part's error is below (m + 6) eps B (m additions and
+        -- 6 roundings per term), B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 over all edges
+        -- (|yl|, |Xl| <= q); B^2 <= 12 m q^2 (sqSum + 4 m q^2), and 4 (m + 6) B <= |twice| is
+        -- tested squared, 16 * 12 rounded up to 256 (the third). The factors of 4 between 2^50
+        -- and 2^53 cover the rounding of the sums of squares.
+        if x1 * x1 + y1 * y1 + m * sqSum <= 2^100 * qSq and sqSum <= 2^51 * qSq
+          and 256 * (m + 6) * (m + 6) * m * qSq * (sqSum + 4 * m * qSq) < twice * twice then
+          return (twice < 0 and -twice or twice) * 0.5
         end
-        local part = sum + hi   -- sum + hi = part + (TwoSum error), then the same for lo
-        local bv = part - sum
-        err = err + ((sum - (part - bv)) + (hi - bv))
-        sum = part + lo
-        bv = sum - part
-        err = err + ((part - (sum - bv)) + (lo - bv))
-        sqSum = sqSum + sqB
-        if sqB > sqMax then sqMax = sqB end
-        if stop == n - 3 then break end
-        hi, lo, sqB = 0.0, 0.0, 0.0
-        start = stop + 4
-        stop = stop + 64
-      end
-      if m > 64 then
-        twice = sum + err
-        -- err's own roundings: at most f = m / 8 + 4 additions (four per block) of terms below
-        -- eps top each, top the sum of every |hi| and |lo| added: |hi| <= sqB / 2 (as below)
-        -- and each term of lo is below 2 q |sh| + 2 q |dh| + 4 q^2 <= sh^2 + dh^2 + 6 q^2, so
-        -- top <= 2 sqSum + 8 m q^2 (rounding included). So they are below f^2 eps^2 top, kept
-        -- below eps |twice| / 64, which the third test's rounding up leaves room for (NaN fails)
-        local f = m / 8 + 4
-        local errBound = f * f * (2 * sqSum + 8 * m * q * q)
-        if not (errBound <= 2^47 * (twice < 0 and -twice or twice)) then   -- luacheck: ignore 581
-          twice = 0.0   -- the third test fails: Dot2 below decides
-        end
-      end
-      local qSq = q * q
-      local b = m > 64 and 33 or m   -- the most edges in a block
-      -- With sSq = sum sh^2 and dSq = sum dh^2 over all edges (sqSum = sSq + dSq): every |Xh|
-      -- and |yh - yh_1| is at most the sum of |sh| (|dh|) along the walk from vertex 1, below
-      -- sqrt(m sSq) (sqrt(m dSq)) <= 2^50 q; with |x_1|, |y_1| <= 2^50 q every |v| is then
-      -- below sigma / 2, and every sh, dh exact (the first test). In each block
-      -- sum |sh dh| <= sqrt(sSq dSq) <= sqB / 2 <= 2^50 q^2 keeps every partial sum of its hi
-      -- exact (the second). The float part's error is below (b + 6) eps B, b the most edges
-      -- in a block (b additions and 6 roundings per term; the blocks' sums are added exactly),
-      -- B = 2 q sum |sh| + 2 q sum |dh| + 4 m q^2 over all edges (|yl|, |Xl| <= q);
-      -- B^2 <= 12 m q^2 (sqSum + 4 m q^2), and 4 (b + 6) B <= |twice| is tested squared,
-      -- 16 * 12 rounded up to 256 (the third). The factors of 4 between 2^50 and 2^53 cover
-      -- the rounding of the sums of squares.
-      local limit = 2^100 * qSq
-      if x1 * x1 + y1 * y1 + m * sqSum <= limit and sqMax <= 2^51 * qSq
-        and 256 * (b + 6) * (b + 6) * m * qSq * (sqSum + 4 * m * qSq) < twice * twice then
-        return (twice < 0 and -twice or twice) * 0.5
       end
     end
   end

@@ -157,7 +157,8 @@ describe("polygonAreaAccurate against the exact area", function()
 end)
 
 -- The split path: coordinates rounded to multiples of a quantum guessed from vertex 1 and the
--- middle one, beyond 64 vertices summed in blocks of 16 edges. Its tests after the loop must
+-- middle one, beyond 64 vertices in two passes (spec/area_large_hard_spec.lua has more of
+-- those). Its tests after the loop must
 -- catch every case where the guess was wrong (the other vertices far beyond the guessed size,
 -- so that the rounded sums are not exact), where the polygon lies far from the origin for its
 -- size (the rounding is then no longer exact), and where the small parts' float sum is too
@@ -208,7 +209,7 @@ describe("polygonAreaAccurate's split path against the exact area", function()
     checkGenerated(20261122, 1000, function(r, i) return polygonOf(r, i % 5) end)
   end)
 
-  it("is within one ulp on the same kinds of 65 to 1,200 vertices (summed in blocks)", function()
+  it("is within one ulp on the same kinds of 65 to 1,200 vertices (in two passes)", function()
     checkGenerated(8675309, 150, function(r, i) return polygonOf(r, i % 5, 65, 1200) end)
   end)
 
