@@ -4356,56 +4356,116 @@ local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0
 -- nearest foot's face. Coordinates are scaled by k. Returns the last index used and whether
 -- some edge separates the two parts, decided exactly (spanX, spanY bound the scaled coordinate
 -- differences, for projectionTolerance).
-local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
-  local separated = false
-  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
-  local foot2, foot2Reach = secondFoot, secondReach
-  local jit = JIT   -- a local: PUC Lua reads an upvalue by an extra instruction
-  local plain = k == 1 and not jit   -- PUC Lua, unscaled: minProjection's loop inline
-  -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
-  local tolBound = 16 * EPS * (spanX + spanY)
-  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-  for i = 1, ne - 1, 2 do
-    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = normals[i], normals[i + 1]
-      local lo = huge
-      if plain then   -- minProjection's loop, without the call's instructions
-        for j = 1, no - 1, 2 do
-          local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
-          if s < lo then lo = s end
+-- Two bodies computing the same numbers. On LuaJIT the projections by leastProjection; on PUC
+-- Lua minProjection's loop inline (PUC Lua pays for every call), unrolled for a quadrilateral.
+local addFaces
+if JIT then
+  addFaces = function(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
+    local separated = false
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+    local foot2, foot2Reach = secondFoot, secondReach
+    -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
+    local tolBound = 16 * EPS * (spanX + spanY)
+    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+    for i = 1, ne - 1, 2 do
+      local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+      if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+        local ux, uy = normals[i], normals[i + 1]
+        local lo = huge
+        if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
+          local kax, kay = ax * k, ay * k
+          for j = 1, no - 1, 2 do
+            local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+            if s < lo then lo = s end
+          end
+        else
+          lo = leastProjection(other, no, ax, ay, ux, uy)
         end
-      elseif k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
-        local kax, kay = ax * k, ay * k
-        for j = 1, no - 1, 2 do
-          local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
-          if s < lo then lo = s end
+        -- -lo > tolBound >= projectionTolerance: the edge cannot separate
+        if not separated and -lo <= tolBound then
+          separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
         end
-      else
-        lo = leastProjection(other, no, ax, ay, ux, uy)
+        top = top + 1
+        fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
+        local flag, d = internal[i], abs(lift - lo)
+        seam[top], reach[top] = flag, d
+        if flag ~= 0 then
+          if d < seamReach then seamReach = d end
+        elseif d < footReach then
+          foot, footReach, foot2, foot2Reach = top, d, foot, footReach
+        elseif d < foot2Reach then
+          foot2, foot2Reach = top, d
+        end
       end
-      -- -lo > tolBound >= projectionTolerance: the edge cannot separate
-      if not separated and -lo <= tolBound then
-        separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
-      end
-      top = top + 1
-      fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
-      local flag, d = internal[i], lift - lo
-      if jit then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
-      seam[top], reach[top] = flag, d
-      if flag ~= 0 then
-        if d < seamReach then seamReach = d end
-      elseif d < footReach then
-        foot, footReach, foot2, foot2Reach = top, d, foot, footReach
-      elseif d < foot2Reach then
-        foot2, foot2Reach = top, d
-      end
+      ax, ay = bx, by
     end
-    ax, ay = bx, by
+    nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+    return top, separated
   end
-  nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
-  return top, separated
+else
+  addFaces = function(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
+    local separated = false
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+    local foot2, foot2Reach = secondFoot, secondReach
+    local quad, scaled = no == 8 and k == 1, k ~= 1
+    -- lo < loBound, -lo > 16 eps (spanX + spanY), projectionTolerance's bound for any unit
+    -- normal (|ux|, |uy| <= 1; rounding is monotonic): the edge cannot separate
+    local loBound = -(16 * EPS * (spanX + spanY))
+    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+    for i = 1, ne - 1, 2 do
+      local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+      if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+        local ux, uy = normals[i], normals[i + 1]
+        local lo
+        if quad then
+          -- a quadrilateral (a tile, a box): minProjection's loop unrolled, the same numbers
+          -- (the first s is finite, so lo = s is what s < huge gives): constant indices and no
+          -- loop steps, 32 VM instructions where the loop takes 46 (Lua 5.4)
+          lo = ux * (other[1] - ax) + uy * (other[2] - ay)
+          local s = ux * (other[3] - ax) + uy * (other[4] - ay)
+          if s < lo then lo = s end
+          s = ux * (other[5] - ax) + uy * (other[6] - ay)
+          if s < lo then lo = s end
+          s = ux * (other[7] - ax) + uy * (other[8] - ay)
+          if s < lo then lo = s end
+        elseif scaled then   -- the same numbers as unscaled where k is 1
+          lo = huge
+          local kax, kay = ax * k, ay * k
+          for j = 1, no - 1, 2 do
+            local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+            if s < lo then lo = s end
+          end
+        else   -- minProjection's loop, without the call's instructions
+          lo = huge
+          for j = 1, no - 1, 2 do
+            local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
+            if s < lo then lo = s end
+          end
+        end
+        if not separated and lo >= loBound then
+          separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
+        end
+        top = top + 1
+        fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
+        local flag, d = internal[i], lift - lo
+        if d < 0 then d = -d end   -- a comparison, not abs's call
+        seam[top], reach[top] = flag, d
+        if flag ~= 0 then
+          if d < seamReach then seamReach = d end
+        elseif d < footReach then
+          foot, footReach, foot2, foot2Reach = top, d, foot, footReach
+        elseif d < foot2Reach then
+          foot2, foot2Reach = top, d
+        end
+      end
+      ax = bx   -- (two statements: Lua 5.4 moves a multiple assignment through a temporary)
+      ay = by
+    end
+    nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+    return top, separated
+  end
 end
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
@@ -4599,57 +4659,60 @@ local nearParts = {}     -- scratch: those whose boxes come within the window of
 
 -- The parts of a prepared list whose boxes overlap the box x0, y0, x1, y1 (strictly), in order,
 -- into overlapping, and those whose boxes overlap it grown by `window` on every side into
--- nearParts; returns both numbers. Unless `current` (the list was just brought up to date by
--- listView), first sees whether some part changed, as listView does (its table, its length, the
--- coordinates on its box: see preparedParts), and then returns nil at once: the same checks in
--- the same loop as the box tests, which read the same boxes (a push against a flat shape).
+-- nearParts; returns both numbers and, over the parts in nearParts but not in overlapping, the
+-- least of the largest box gaps along x of those whose largest gap is along x, and the same
+-- along y (or huge; see collideParts). First sees whether some part changed,
+-- as listView does (its table, its length, the coordinates on its box: see preparedParts), and
+-- then returns nil at once: the same checks in the same loop as the box tests, which read the
+-- same boxes (after listView they pass: the list is up to date).
 -- Two bodies: on LuaJIT the box tests by the largest gap, one branch a part; on PUC Lua by
 -- comparisons, most parts failing the first or second.
 local partsOverlapping
 if JIT then
-  partsOverlapping = function(info, shape, current, x0, y0, x1, y1, window)
-    local found, near = 0, 0
+  partsOverlapping = function(info, shape, x0, y0, x1, y1, window)
+    local found, near, leastGapX, leastGapY = 0, 0, huge, huge
     local records = info.records
     for k = 1, info.count do
       local part, record = shape[k], records[k]
       local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      if not current then
-        local n = record[10]
-        if part ~= record[9] or #part ~= n then return nil end
-        if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
-            or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
-          return nil
-        end
+      local n = record[10]
+      if part ~= record[9] or #part ~= n then return nil end
+      if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+          or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+        return nil
       end
       -- the largest gap between the boxes (< 0 when they overlap: a - b < 0 exactly when a < b,
       -- no NaN), by max: one branch for most parts (PUC Lua's tests: four, each a side exit)
-      local gap = max(xmin - x1, x0 - xmax, ymin - y1, y0 - ymax)
+      local gapX, gapY = max(xmin - x1, x0 - xmax), max(ymin - y1, y0 - ymax)
+      local gap = max(gapX, gapY)
       if gap < window then
         near = near + 1
         nearParts[near] = k
         if gap < 0 then
           found = found + 1
           overlapping[found] = k
+        elseif gapX >= gapY then
+          leastGapX = min(leastGapX, gapX)
+        else
+          leastGapY = min(leastGapY, gapY)
         end
       end
     end
-    return found, near
+    return found, near, leastGapX, leastGapY
   end
 else
-  partsOverlapping = function(info, shape, current, x0, y0, x1, y1, window)
-    local found, near = 0, 0
+  partsOverlapping = function(info, shape, x0, y0, x1, y1, window)
+    local found, near, leastGapX, leastGapY = 0, 0, huge, huge
     local wx0, wy0, wx1, wy1 = x0 - window, y0 - window, x1 + window, y1 + window
     local records = info.records
     for k = 1, info.count do
       local part, record = shape[k], records[k]
       local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      if not current then
-        local n = record[10]
-        if part ~= record[9] or #part ~= n then return nil end
-        if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
-            or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
-          return nil
-        end
+      local n = record[10]
+      if part ~= record[9] or #part ~= n then return nil end
+      if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+          or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+        return nil
       end
       if xmin < wx1 and wx0 < xmax and ymin < wy1 and wy0 < ymax then
         near = near + 1
@@ -4657,10 +4720,19 @@ else
         if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
           found = found + 1
           overlapping[found] = k
+        else   -- the largest gaps, as on LuaJIT (the same differences)
+          local gapX, gapY = xmin - x1, ymin - y1
+          if x0 - xmax > gapX then gapX = x0 - xmax end
+          if y0 - ymax > gapY then gapY = y0 - ymax end
+          if gapX >= gapY then
+            if gapX < leastGapX then leastGapX = gapX end
+          elseif gapY < leastGapY then
+            leastGapY = gapY
+          end
         end
       end
     end
-    return found, near
+    return found, near, leastGapX, leastGapY
   end
 end
 
@@ -4669,7 +4741,7 @@ end
 -- overlap, dx, dy, or false.
 function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
-  local view1, view2, found, nearCount, window
+  local view1, view2, found, nearCount, window, leastGapX, leastGapY
   if parts1 ~= parts2 then
     -- A list against a flat shape: the list's checks and its parts' box tests in one loop
     -- (partsOverlapping), so the flat shape's box first, its argument errors raised after the
@@ -4684,14 +4756,16 @@ function collideParts(fname, shape1, shape2, wantPush)
     -- (pushes are mostly shorter than half that: see the loop after the search)
     window = flatSide and wantPush and (boxes[3] - boxes[1]) + (boxes[4] - boxes[2]) or 0
     if flatSide and info and info.count == #list then
-      found, nearCount = partsOverlapping(info, list, false, boxes[1], boxes[2], boxes[3], boxes[4], window)
+      found, nearCount, leastGapX, leastGapY =
+        partsOverlapping(info, list, boxes[1], boxes[2], boxes[3], boxes[4], window)
     end
     if found then
       info.fname, info.argname = fname, listName
     else
       info = listView(fname, listName, list)
       if not flatSide then error(message, 3) end
-      found, nearCount = partsOverlapping(info, list, true, boxes[1], boxes[2], boxes[3], boxes[4], window)
+      found, nearCount, leastGapX, leastGapY =
+        partsOverlapping(info, list, boxes[1], boxes[2], boxes[3], boxes[4], window)
     end
     if parts1 then view1, view2 = info, flatSide else view1, view2 = flatSide, info end
   else
@@ -4807,10 +4881,19 @@ function collideParts(fname, shape1, shape2, wantPush)
       local sx, sy = tx, ty
       if parts2 then listBoxes, fb, sx, sy = boxes2, boxes1, -tx, -ty end
       local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
-      local reach, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
+      local reachX, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
+      local reach = reachX
       if reachY > reach then reach = reachY end
       local useNear = not anyBox and 2 * (reach + near) <= window * k
-      for q = 1, useNear and nearCount or (parts1 and count1 or count2) do
+      local last = useNear and nearCount or (parts1 and count1 or count2)
+      -- None of the near parts when each one not in has its largest box gap g (the list's
+      -- part's side less the flat shape's far side, as the tests below compute it), along x say,
+      -- at least leastGapX, and leastGapX k - |sx| >= near: then g k - |sx| >= near fails the
+      -- test on that side (the roundings are monotonic, and fl(a - b) = -fl(b - a)).
+      if useNear and leastGapX * k - reachX >= near and leastGapY * k - reachY >= near then
+        last = 0
+      end
+      for q = 1, last do
         local part = useNear and nearParts[q] or q
         local a = 4 * part
         if (anyBox and listBoxes[a - 3] <= listBoxes[a - 1]
