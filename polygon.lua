@@ -4164,29 +4164,52 @@ local function partTurn(view, k, part, n)
   return turn
 end
 
--- The area sign and the edge normals of part k (finite coordinates) into view.
-local function partNormals(view, k, part, n)
-  local turn = partTurn(view, k, part, n)
-  if turn == 0 then return end   -- never collides: no normal is read
-  local normals = view.normals[k]
-  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
-  for i = 1, n - 1, 2 do
-    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
-    local ux, uy = 0.0, 0.0   -- a repeated vertex gives no edge
-    if bx ~= ax or by ~= ay then
-      ux, uy = (by - ay) * turn, (ax - bx) * turn
-      if JIT then
-        ux, uy = unit(ux, uy)
-      else   -- unit's numbers, without its calls (PUC Lua pays for each, math.max and abs too)
-        local m, mx = uy < 0 and -uy or uy, ux < 0 and -ux or ux
-        if mx > m then m = mx end
-        ux, uy = ux / m, uy / m
-        local len = sqrt(ux * ux + uy * uy)
-        ux, uy = ux / len, uy / len
-      end
+-- The area sign and the edge normals of part k (finite coordinates) into view: unit's numbers.
+-- On PUC Lua without its calls (PUC Lua pays for each, math.max and abs too), one assignment
+-- per statement (Lua 5.4 moves a multiple assignment through a temporary per value).
+local partNormals
+if JIT then
+  partNormals = function(view, k, part, n)
+    local turn = partTurn(view, k, part, n)
+    if turn == 0 then return end   -- never collides: no normal is read
+    local normals = view.normals[k]
+    local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+    for i = 1, n - 1, 2 do
+      local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+      local ux, uy = 0.0, 0.0   -- a repeated vertex gives no edge
+      if bx ~= ax or by ~= ay then ux, uy = unit((by - ay) * turn, (ax - bx) * turn) end
+      normals[i], normals[i + 1] = ux, uy
+      ax, ay = bx, by
     end
-    normals[i], normals[i + 1] = ux, uy
-    ax, ay = bx, by
+  end
+else
+  partNormals = function(view, k, part, n)
+    local turn = partTurn(view, k, part, n)
+    if turn == 0 then return end   -- never collides: no normal is read
+    local normals = view.normals[k]
+    local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+    for i = 1, n - 1, 2 do
+      local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+      if bx ~= ax or by ~= ay then
+        local ux = (by - ay) * turn
+        local uy = (ax - bx) * turn
+        local m = uy   -- max(|uy|, |ux|)
+        if m < 0 then m = -m end
+        local mx = ux
+        if mx < 0 then mx = -mx end
+        if mx > m then m = mx end
+        ux = ux / m
+        uy = uy / m
+        local len = sqrt(ux * ux + uy * uy)
+        normals[i] = ux / len
+        normals[i + 1] = uy / len
+      else   -- a repeated vertex gives no edge
+        normals[i] = 0.0
+        normals[i + 1] = 0.0
+      end
+      ax = bx
+      ay = by
+    end
   end
 end
 
@@ -4453,6 +4476,7 @@ local faceSeam = {}                -- 1 for a face from an internal edge (no foo
 local faceReach = {}               -- |faceC + lift|: how near the origin the face's lifted line passes
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 local pairAdded = {}               -- per pair of parts i, j (at (i - 1) count2 + j): callStamp once in
+local pairPart1, pairPart2 = {}, {}   -- pair p's parts i and j (LuaJIT: see pairsOverlap)
 
 -- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
 -- checks of the views did not see (one off the box of a list's part) raises the argument error
@@ -4473,12 +4497,17 @@ local leastProjection = minProjection
 if JIT then
   leastProjection = function(points, n, ax, ay, nx, ny)
     local lo, last = huge, n - 1
-    for i = 1, last, 8 do
+    for i = 1, last, 16 do
       local i2, i3, i4 = min(i + 2, last), min(i + 4, last), min(i + 6, last)
+      local i5, i6, i7, i8 = min(i + 8, last), min(i + 10, last), min(i + 12, last), min(i + 14, last)
       lo = min(lo, nx * (points[i] - ax) + ny * (points[i + 1] - ay),
         nx * (points[i2] - ax) + ny * (points[i2 + 1] - ay),
         nx * (points[i3] - ax) + ny * (points[i3 + 1] - ay),
-        nx * (points[i4] - ax) + ny * (points[i4 + 1] - ay))
+        nx * (points[i4] - ax) + ny * (points[i4 + 1] - ay),
+        nx * (points[i5] - ax) + ny * (points[i5 + 1] - ay),
+        nx * (points[i6] - ax) + ny * (points[i6 + 1] - ay),
+        nx * (points[i7] - ax) + ny * (points[i7 + 1] - ay),
+        nx * (points[i8] - ax) + ny * (points[i8 + 1] - ay))
     end
     return lo
   end
@@ -4495,65 +4524,179 @@ end
 local faceLift = 0.0   -- lift (see nearestFree) of the call under way, for faceReach
 -- The faces with the nearest and the second nearest foot so far (first in face order among
 -- equals), their reaches, and the nearest reach of an internal edge's face: kept by addFaces.
-local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0, huge, huge
+-- FAR stands for none: finite (keepFeet multiplies it by 0) and beyond every reach (every
+-- coordinate is below 2^501, or scaled below 2^165).
+local FAR = 2^1000
+local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
+local feetKept = 0   -- LuaJIT: the faces 1 .. feetKept are in the five above (see keepFeet)
 
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
--- part give (turn its area sign, normals its outward unit normals; sense 1 for a part of the
--- first shape, -1 for one of the second, whose outward normal points the other way in t), with
--- `other` the part it is paired with, and each face's reach (see nearestFree); keeps the
--- nearest foot's face. Coordinates are scaled by k. Returns the last index used and whether
--- some edge separates the two parts, decided exactly (spanX, spanY bound the scaled coordinate
--- differences, for projectionTolerance).
-local function addFaces(edges, ne, turn, normals, other, no, internal, sense, k, spanX, spanY, top)
-  local separated = false
-  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
-  local foot2, foot2Reach = secondFoot, secondReach
-  local jit = JIT   -- a local: PUC Lua reads an upvalue by an extra instruction
-  local plain = k == 1 and not jit   -- PUC Lua, unscaled: minProjection's loop inline
-  -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic)
-  local tolBound = 16 * EPS * (spanX + spanY)
-  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-  for i = 1, ne - 1, 2 do
-    local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-    if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-      local ux, uy = normals[i], normals[i + 1]
-      local lo = huge
-      if plain then   -- minProjection's loop, without the call's instructions
-        for j = 1, no - 1, 2 do
-          local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
-          if s < lo then lo = s end
-        end
-      elseif k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
-        local kax, kay = ax * k, ay * k
-        for j = 1, no - 1, 2 do
-          local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
-          if s < lo then lo = s end
-        end
-      else
-        lo = leastProjection(other, no, ax, ay, ux, uy)
-      end
-      -- -lo > tolBound >= projectionTolerance: the edge cannot separate
-      if not separated and -lo <= tolBound then
-        separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
-      end
-      top = top + 1
-      fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
-      local flag, d = internal[i], lift - lo
-      if jit then d = abs(d) elseif d < 0 then d = -d end   -- PUC Lua: a comparison, not a call
-      seam[top], reach[top] = flag, d
-      if flag ~= 0 then
-        if d < seamReach then seamReach = d end
-      elseif d < footReach then
-        foot, footReach, foot2, foot2Reach = top, d, foot, footReach
-      elseif d < foot2Reach then
-        foot2, foot2Reach = top, d
-      end
-    end
-    ax, ay = bx, by
+-- part give (normals its outward unit normals; sense 1 for a part of the first shape, -1 for
+-- one of the second, whose outward normal points the other way in t), with `other` the part it
+-- is paired with, and each face's reach (see nearestFree); keeps the nearest feet's faces.
+-- Coordinates are scaled by k (spanX, spanY bound the scaled coordinate differences, for
+-- projectionTolerance). Returns the last index used.
+-- LuaJIT's (PUC Lua's is pairFaces, below: the same faces), in two loops without a branch that
+-- goes both ways (each was a side exit whose side trace LuaJIT could not compile, "NYI: register
+-- coalescing too complex", thousands of times in `luajit -jv examples/arena.lua 300 default`):
+-- the faces, with the projections by leastProjection, here, and the nearest feet, by keepFeet
+-- over all new faces at once when nearestFree needs them (one loop of 4 steps per part was a
+-- quarter of the push's time on the crate and floor of bench/compound.lua, `luajit -jp=l`). Instead
+-- of whether some edge separates the parts it returns 1 when none can (then they overlap for
+-- sure), else 0: collideParts decides those pairs exactly when it needs to (pairsOverlap).
+local addFaces
+
+-- Keeps the nearest feet and the nearest internal face among faces first .. last, in order, as
+-- nearestFoot and the rest describe, and as pairFaces does with branches: here without one
+-- (for LuaJIT). Each choice is a factor 0 or 1 (isAbove), and a sum of products by them is
+-- exactly the value chosen (every value finite: FAR, not huge).
+local function keepFeet(first, last)
+  local foot, footReach, foot2, foot2Reach = nearestFoot, nearestReach, secondFoot, secondReach
+  local seamLeast = seamReach
+  for f = first, last do
+    local d, outer = faceReach[f], 1 - faceSeam[f]
+    -- an outer face nearer than the nearest foot, else nearer than the second
+    local nearer = outer * isAbove(footReach - d)
+    local second = (outer - nearer) * isAbove(foot2Reach - d)
+    local rest = 1 - nearer - second
+    foot2, foot2Reach = nearer * foot + second * f + rest * foot2,
+      nearer * footReach + second * d + rest * foot2Reach
+    foot, footReach = nearer * f + (1 - nearer) * foot, nearer * d + (1 - nearer) * footReach
+    seamLeast = min(seamLeast, d + outer * FAR)   -- an outer face's d + FAR rounds to FAR
   end
   nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
-  return top, separated
+  seamReach = seamLeast
+end
+
+if JIT then
+  addFaces = function(edges, ne, normals, other, no, internal, sense, k, spanX, spanY, top)
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local lift, highest = faceLift, -huge   -- highest: the largest lo
+    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+    for i = 1, ne - 1, 2 do
+      local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+      if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+        local ux, uy = normals[i], normals[i + 1]
+        local lo
+        if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
+          lo = huge
+          local kax, kay = ax * k, ay * k
+          for j = 1, no - 1, 2 do
+            lo = min(lo, ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay))
+          end
+        else
+          lo = leastProjection(other, no, ax, ay, ux, uy)
+        end
+        highest = max(highest, lo)
+        top = top + 1
+        fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
+        seam[top], reach[top] = internal[i], abs(lift - lo)
+      end
+      ax, ay = bx, by
+    end
+    -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic):
+    -- an edge whose -lo exceeds it cannot separate; 1 when every edge's does (no NaN: a
+    -- difference is > 0 exactly when its first term is the larger)
+    return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest)
+  end
+end
+
+-- The faces of both parts of a pair: addFaces for p1 (sense 1) and then for p2 (sense -1), and
+-- 1 when the parts overlap, else 0: decided exactly on PUC Lua; on LuaJIT 0 also when they
+-- may not (see addFaces). On PUC Lua one call for both (the arguments and
+-- the set-up of a call were a tenth of the faces' instructions), minProjection's loop inline,
+-- unrolled for a quadrilateral.
+local pairFaces
+if JIT then
+  pairFaces = function(p1, n1, _, normals1, internal1, p2, n2, _, normals2, internal2,
+                       k, spanX, spanY, top)
+    local sure1, sure2
+    top, sure1 = addFaces(p1, n1, normals1, p2, n2, internal1, 1.0, k, spanX, spanY, top)
+    top, sure2 = addFaces(p2, n2, normals2, p1, n1, internal2, -1.0, k, spanX, spanY, top)
+    return top, sure1 * sure2
+  end
+else
+  pairFaces = function(p1, n1, turn1, normals1, internal1, p2, n2, turn2, normals2, internal2,
+                       k, spanX, spanY, top)
+    local separated = false
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+    local foot2, foot2Reach = secondFoot, secondReach
+    local scaled = k ~= 1
+    -- lo < loBound, -lo > 16 eps (spanX + spanY), projectionTolerance's bound for any unit
+    -- normal (|ux|, |uy| <= 1; rounding is monotonic): the edge cannot separate
+    local loBound = -(16 * EPS * (spanX + spanY))
+    -- p1's edges against p2's vertices, then p2's against p1's (one assignment per statement:
+    -- Lua 5.4 moves a multiple assignment through a temporary per value)
+    local edges, ne, turn, normals, internal, other, no, sense =
+      p1, n1, turn1, normals1, internal1, p2, n2, 1.0
+    for side = 1, 2 do
+      if side == 2 then
+        edges = p2
+        ne = n2
+        turn = turn2
+        normals = normals2
+        internal = internal2
+        other = p1
+        no = n1
+        sense = -1.0
+      end
+      local quad = no == 8 and not scaled
+      local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+      for i = 1, ne - 1, 2 do
+        local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+        if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+          local ux, uy = normals[i], normals[i + 1]
+          local lo
+          if quad then
+            -- a quadrilateral (a tile, a box): minProjection's loop unrolled, the same numbers
+            -- (the first s is finite, so lo = s is what s < huge gives): constant indices and
+            -- no loop steps, 32 VM instructions where the loop takes 46 (Lua 5.4)
+            lo = ux * (other[1] - ax) + uy * (other[2] - ay)
+            local s = ux * (other[3] - ax) + uy * (other[4] - ay)
+            if s < lo then lo = s end
+            s = ux * (other[5] - ax) + uy * (other[6] - ay)
+            if s < lo then lo = s end
+            s = ux * (other[7] - ax) + uy * (other[8] - ay)
+            if s < lo then lo = s end
+          elseif scaled then   -- the same numbers as unscaled where k is 1
+            lo = huge
+            local kax, kay = ax * k, ay * k
+            for j = 1, no - 1, 2 do
+              local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+              if s < lo then lo = s end
+            end
+          else   -- minProjection's loop, without the call's instructions
+            lo = huge
+            for j = 1, no - 1, 2 do
+              local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
+              if s < lo then lo = s end
+            end
+          end
+          if not separated and lo >= loBound then
+            separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
+          end
+          top = top + 1
+          fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
+          local flag, d = internal[i], lift - lo
+          if d < 0 then d = -d end   -- a comparison, not abs's call
+          seam[top], reach[top] = flag, d
+          if flag ~= 0 then
+            if d < seamReach then seamReach = d end
+          elseif d < footReach then
+            foot, footReach, foot2, foot2Reach = top, d, foot, footReach
+          elseif d < foot2Reach then
+            foot2, foot2Reach = top, d
+          end
+        end
+        ax = bx
+        ay = by
+      end
+    end
+    nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+    if separated then return top, 0 end
+    return top, 1
+  end
 end
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
@@ -4580,6 +4723,10 @@ local function nearestFree(np, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
+  if JIT and feetKept < last then   -- (PUC Lua: pairFaces kept them)
+    keepFeet(feetKept + 1, last)
+    feetKept = last
+  end
   -- The nearest foot first, then the second nearest (addFaces keeps them): usually one of them
   -- is free, and then no other foot is nearer (the feet loop below would pick the first free one
   -- in the order of reach, then of faces; it runs when neither is free).
@@ -4704,7 +4851,8 @@ local function pairOverlaps(view1, p1, i, view2, p2, j)
 end
 
 -- Appends the faces of D for part p1 (number i of view1) and p2 (number j of view2) as pair
--- np + 1. Returns np, top and whether the parts overlap, decided exactly.
+-- np + 1, noting i and j (pairsOverlap). Returns np, top and pairFaces' 1 or 0 (whether the
+-- parts overlap; on LuaJIT, overlap for sure).
 local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   -- preparePair's work inline (PUC Lua pays for every call): checkCopy's level counts from there
   if view1.copies then
@@ -4718,7 +4866,7 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
     partNormals(view2, 1, p2, #p2); view2.pending = false
   end
   local turn1, turn2 = view1.turns[i], view2.turns[j]
-  if turn1 == 0 or turn2 == 0 then return np, top, false end   -- zero area: never collides
+  if turn1 == 0 or turn2 == 0 then return np, top, 0 end   -- zero area: never collides
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   local right, bottom, left, low = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
   if JIT then
@@ -4733,13 +4881,12 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   local spanX, spanY = (right - left) * k, (bottom - low) * k
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   faceFirst[np + 1] = top + 1
-  local apart1, apart2
-  top, apart1 = addFaces(p1, n1, turn1, view1.normals[i], p2, n2, view1.internal[i], 1.0, k, spanX, spanY,
-    top)
-  top, apart2 = addFaces(p2, n2, turn2, view2.normals[j], p1, n1, view2.internal[j], -1.0, k, spanX, spanY,
-    top)
+  local overlaps
+  top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
+    p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top)
   faceFirst[np + 2] = top + 1
-  return np + 1, top, not (apart1 or apart2)
+  if JIT then pairPart1[np + 1], pairPart2[np + 1] = i, j end
+  return np + 1, top, overlaps
 end
 
 local overlapping = {}   -- scratch: the parts of a list whose boxes overlap a flat shape's box
@@ -4747,57 +4894,60 @@ local nearParts = {}     -- scratch: those whose boxes come within the window of
 
 -- The parts of a prepared list whose boxes overlap the box x0, y0, x1, y1 (strictly), in order,
 -- into overlapping, and those whose boxes overlap it grown by `window` on every side into
--- nearParts; returns both numbers. Unless `current` (the list was just brought up to date by
--- listView), first sees whether some part changed, as listView does (its table, its length, the
--- coordinates on its box: see preparedParts), and then returns nil at once: the same checks in
--- the same loop as the box tests, which read the same boxes (a push against a flat shape).
+-- nearParts; returns both numbers and, over the parts in nearParts but not in overlapping, the
+-- least of the largest box gaps along x of those whose largest gap is along x, and the same
+-- along y (or huge; see collideParts). First sees whether some part changed,
+-- as listView does (its table, its length, the coordinates on its box: see preparedParts), and
+-- then returns nil at once: the same checks in the same loop as the box tests, which read the
+-- same boxes (after listView they pass: the list is up to date).
 -- Two bodies: on LuaJIT the box tests by the largest gap, one branch a part; on PUC Lua by
 -- comparisons, most parts failing the first or second.
 local partsOverlapping
 if JIT then
-  partsOverlapping = function(info, shape, current, x0, y0, x1, y1, window)
-    local found, near = 0, 0
+  partsOverlapping = function(info, shape, x0, y0, x1, y1, window)
+    local found, near, leastGapX, leastGapY = 0, 0, huge, huge
     local records = info.records
     for k = 1, info.count do
       local part, record = shape[k], records[k]
       local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      if not current then
-        local n = record[10]
-        if part ~= record[9] or #part ~= n then return nil end
-        if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
-            or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
-          return nil
-        end
+      local n = record[10]
+      if part ~= record[9] or #part ~= n then return nil end
+      if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+          or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+        return nil
       end
       -- the largest gap between the boxes (< 0 when they overlap: a - b < 0 exactly when a < b,
       -- no NaN), by max: one branch for most parts (PUC Lua's tests: four, each a side exit)
-      local gap = max(xmin - x1, x0 - xmax, ymin - y1, y0 - ymax)
+      local gapX, gapY = max(xmin - x1, x0 - xmax), max(ymin - y1, y0 - ymax)
+      local gap = max(gapX, gapY)
       if gap < window then
         near = near + 1
         nearParts[near] = k
         if gap < 0 then
           found = found + 1
           overlapping[found] = k
+        elseif gapX >= gapY then
+          leastGapX = min(leastGapX, gapX)
+        else
+          leastGapY = min(leastGapY, gapY)
         end
       end
     end
-    return found, near
+    return found, near, leastGapX, leastGapY
   end
 else
-  partsOverlapping = function(info, shape, current, x0, y0, x1, y1, window)
-    local found, near = 0, 0
+  partsOverlapping = function(info, shape, x0, y0, x1, y1, window)
+    local found, near, leastGapX, leastGapY = 0, 0, huge, huge
     local wx0, wy0, wx1, wy1 = x0 - window, y0 - window, x1 + window, y1 + window
     local records = info.records
     for k = 1, info.count do
       local part, record = shape[k], records[k]
       local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      if not current then
-        local n = record[10]
-        if part ~= record[9] or #part ~= n then return nil end
-        if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
-            or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
-          return nil
-        end
+      local n = record[10]
+      if part ~= record[9] or #part ~= n then return nil end
+      if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+          or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+        return nil
       end
       if xmin < wx1 and wx0 < xmax and ymin < wy1 and wy0 < ymax then
         near = near + 1
@@ -4805,11 +4955,36 @@ else
         if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
           found = found + 1
           overlapping[found] = k
+        else   -- the largest gaps, as on LuaJIT (the same differences)
+          local gapX, gapY = xmin - x1, ymin - y1
+          if x0 - xmax > gapX then gapX = x0 - xmax end
+          if y0 - ymax > gapY then gapY = y0 - ymax end
+          if gapX >= gapY then
+            if gapX < leastGapX then leastGapX = gapX end
+          elseif gapY < leastGapY then
+            leastGapY = gapY
+          end
         end
       end
     end
-    return found, near
+    return found, near, leastGapX, leastGapY
   end
+end
+
+-- Whether some pair 1 .. np overlaps, decided exactly (on LuaJIT, after addPair found none that
+-- overlaps for sure): as the boolean decides each pair.
+local function pairsOverlap(fname, view1, shape1, view2, shape2, np, scaled)
+  for p = 1, np do
+    local i, j = pairPart1[p], pairPart2[p]
+    local p1 = view1.copies and shape1[i] or shape1
+    local p2 = view2.copies and shape2[j] or shape2
+    if scaled then
+      if overlapsConvex(fname, p1, p2) then return true end
+    elseif pairOverlaps(view1, p1, i, view2, p2, j) then
+      return true
+    end
+  end
+  return false
 end
 
 -- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
@@ -4817,7 +4992,7 @@ end
 -- overlap, dx, dy, or false.
 function collideParts(fname, shape1, shape2, wantPush)
   local parts1, parts2 = isParts(shape1), isParts(shape2)
-  local view1, view2, found, nearCount, window
+  local view1, view2, found, nearCount, window, leastGapX, leastGapY
   if parts1 ~= parts2 then
     -- A list against a flat shape: the list's checks and its parts' box tests in one loop
     -- (partsOverlapping), so the flat shape's box first, its argument errors raised after the
@@ -4832,14 +5007,16 @@ function collideParts(fname, shape1, shape2, wantPush)
     -- (pushes are mostly shorter than half that: see the loop after the search)
     window = flatSide and wantPush and (boxes[3] - boxes[1]) + (boxes[4] - boxes[2]) or 0
     if flatSide and info and info.count == #list then
-      found, nearCount = partsOverlapping(info, list, false, boxes[1], boxes[2], boxes[3], boxes[4], window)
+      found, nearCount, leastGapX, leastGapY =
+        partsOverlapping(info, list, boxes[1], boxes[2], boxes[3], boxes[4], window)
     end
     if found then
       info.fname, info.argname = fname, listName
     else
       info = listView(fname, listName, list)
       if not flatSide then error(message, 3) end
-      found, nearCount = partsOverlapping(info, list, true, boxes[1], boxes[2], boxes[3], boxes[4], window)
+      found, nearCount, leastGapX, leastGapY =
+        partsOverlapping(info, list, boxes[1], boxes[2], boxes[3], boxes[4], window)
     end
     if parts1 then view1, view2 = info, flatSide else view1, view2 = flatSide, info end
   else
@@ -4905,10 +5082,11 @@ function collideParts(fname, shape1, shape2, wantPush)
   -- flat shape, by the list's part. One loop over the pairs, not two nested (on LuaJIT an inner
   -- loop of one part, as for a flat second shape, costs a trace exit for every part of the
   -- first).
-  local np, top, hit = 0, 0, false
+  local np, top, hits = 0, 0, 0
   local added = pairAdded   -- a local: PUC Lua reads an upvalue by an extra instruction
   faceLift = 1.25 * margin   -- as nearestFree's lift
-  nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, huge, 0, huge, huge
+  nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
+  feetKept = 0
   if found then
     for f = 1, found do
       local part = overlapping[f]
@@ -4919,7 +5097,7 @@ function collideParts(fname, shape1, shape2, wantPush)
       else
         np, top, overlaps = addPair(view1, shape1, 1, view2, shape2[part], part, k, np, top)
       end
-      if overlaps then hit = true end
+      hits = hits + overlaps
     end
   else
     local i, j = 1, 0
@@ -4932,11 +5110,14 @@ function collideParts(fname, shape1, shape2, wantPush)
         local overlaps
         np, top, overlaps = addPair(view1, parts1 and shape1[i] or shape1, i, view2,
           parts2 and shape2[j] or shape2, j, k, np, top)
-        if overlaps then hit = true end
+        hits = hits + overlaps
       end
     end
   end
-  if not hit then return false end
+  local scaled = magnitude > EXACT_TOP or magnitude < 2^-400   -- as the boolean's
+  if hits == 0 and not (JIT and pairsOverlap(fname, view1, shape1, view2, shape2, np, scaled)) then
+    return false
+  end
   local best, tx, ty = nearestFree(np, margin)
   local near = 4 * margin   -- a box of D this far from t cannot hold it, widened by delta
   while true do
@@ -4955,10 +5136,19 @@ function collideParts(fname, shape1, shape2, wantPush)
       local sx, sy = tx, ty
       if parts2 then listBoxes, fb, sx, sy = boxes2, boxes1, -tx, -ty end
       local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
-      local reach, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
+      local reachX, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
+      local reach = reachX
       if reachY > reach then reach = reachY end
       local useNear = not anyBox and 2 * (reach + near) <= window * k
-      for q = 1, useNear and nearCount or (parts1 and count1 or count2) do
+      local last = useNear and nearCount or (parts1 and count1 or count2)
+      -- None of the near parts when each one not in has its largest box gap g (the list's
+      -- part's side less the flat shape's far side, as the tests below compute it), along x say,
+      -- at least leastGapX, and leastGapX k - |sx| >= near: then g k - |sx| >= near fails the
+      -- test on that side (the roundings are monotonic, and fl(a - b) = -fl(b - a)).
+      if useNear and leastGapX * k - reachX >= near and leastGapY * k - reachY >= near then
+        last = 0
+      end
+      for q = 1, last do
         local part = useNear and nearParts[q] or q
         local a = 4 * part
         if (anyBox and listBoxes[a - 3] <= listBoxes[a - 1]

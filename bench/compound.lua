@@ -10,6 +10,11 @@
 --   lua5.4 bench/compound.lua count pushFloor 300
 --                                              one timing row's VM instructions per call, by
 --                                              function (a debug.sethook count hook)
+--   luajit bench/compound.lua ratio pushFloor pushPairs 100000
+--                                              one row's time over another's, the median (and
+--                                              2nd and 6th) of 7 rounds timing them back to back
+--                                              in one process: steadier than separate rows when
+--                                              the machine is shared
 -- The excess mode compares with spec/support/union.lua, which shares no code with polygon.lua.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local polygon = require "polygon"
@@ -148,6 +153,31 @@ local function count(key, calls)
   end
 end
 
+-- The median, 2nd and 6th of 7 ratios of row key's time to row base's, each round timing both
+-- back to back (`calls` calls each), and row key's median time per call.
+local function ratio(key, base, calls)
+  local bodies = {}
+  for _, row in ipairs(timingRows()) do bodies[row[1]] = row[3] end
+  if not (bodies[key] and bodies[base]) then
+    io.stderr:write("no row " .. tostring(bodies[key] and base or key) .. "\n")
+    os.exit(2)
+  end
+  local function seconds(body)
+    local t0 = os.clock()
+    runRow(body, calls)
+    return os.clock() - t0
+  end
+  seconds(bodies[key]); seconds(bodies[base])   -- warm up (and prepare the lists)
+  local ratios, times = {}, {}
+  for round = 1, 7 do
+    local t = seconds(bodies[key])
+    ratios[round], times[round] = t / seconds(bodies[base]), t / calls * 1e6
+  end
+  table.sort(ratios); table.sort(times)
+  print(("%s / %s: %.2f (%.2f-%.2f), %s %.2f us per call"):format(key, base, ratios[4], ratios[2],
+    ratios[6], key, times[4]))
+end
+
 -- Excess: random clusters of 1-5 convex parts against 1-2, terrains of 12 columns with a crate,
 -- terrains against clusters, both argument orders, at offsets 0, 1e5, 1e9 and 1e12 + 0.375.
 local function excess(seed, trials)
@@ -205,8 +235,10 @@ elseif mode == "only" then
   only(arg[2], tonumber(arg[3]) or 1000)
 elseif mode == "count" then
   count(arg[2], tonumber(arg[3]) or 300)
+elseif mode == "ratio" then
+  ratio(arg[2], arg[3] or "pushPairs", tonumber(arg[4]) or 100000)
 else
   io.stderr:write("usage: lua bench/compound.lua timing [calls] | excess [seed] [scenes]"
-    .. " | only key [calls] | count key [calls]\n")
+    .. " | only key [calls] | count key [calls] | ratio key [base] [calls]\n")
   os.exit(2)
 end
