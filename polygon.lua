@@ -3499,9 +3499,10 @@ local function buildGrid(s)
   until k == s
   for c = cells, 1, -1 do cellStart[c + 1] = cellStart[c] end   -- back to first entries
   cellStart[1] = 1
-  -- nodes at one place share a cell; a crowded cell is all marked shared
+  local kept = 0
   for c = 1, cells do
     local first, last = cellStart[c], cellStart[c + 1] - 1
+    -- nodes at one place share a cell; a crowded cell is all marked shared
     for i = first, last do
       local j = entryNode[i]
       if last - first >= SHARED_RUN then shared[j] = true end
@@ -3509,11 +3510,7 @@ local function buildGrid(s)
         if same(j, entryNode[m]) then shared[j], shared[entryNode[m]] = true, true end
       end
     end
-  end
-  -- keep the nodes not strictly convex and those sharing a place, packed cell after cell
-  local kept = 0
-  for c = 1, cells do
-    local first, last = cellStart[c], cellStart[c + 1] - 1
+    -- keep the nodes not strictly convex and those sharing a place, packed cell after cell
     cellStart[c] = kept + 1
     for i = first, last do
       k = entryNode[i]
