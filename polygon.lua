@@ -3062,7 +3062,7 @@ local function sweep(starts)
   local events, eventCount = sweepEvents(starts)
   -- the order is status[bottom + 1 .. bottom + m]. On LuaJIT an edge coming in or leaving
   -- shifts the shorter side, so bottom moves, by one per event at most: starting it half the
-  -- events up keeps it in the array. (A vertical line meets some 550 edges of a noisy circle
+  -- events up keeps it in the array. (A vertical line meets some 650 edges of a noisy circle
   -- of 10,000 vertices: the shorter side moves 200 entries a vertex where one side moved 440.)
   local m, bottom = 0, JIT and eventCount or 0
   status, touchedAt = newArray(2 * eventCount + 2), {}
