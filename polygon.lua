@@ -1,5 +1,5 @@
 local polygon = {
-  _VERSION     = "polygon 0.5.0",
+  _VERSION     = "polygon 0.6.0",
   _DESCRIPTION = "Polygon geometry for games: winding, area, convexity, centre, point in polygon, "
               .. "separating-axis collision with a minimum translation vector, polygon against circle",
   _URL         = "https://github.com/polygon-lua/polygon.lua",
