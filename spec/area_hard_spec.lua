@@ -10,6 +10,7 @@ local polygon = require "polygon"
 local oracle = require "oracle"
 local exact = require "exact"
 local prng = require "prng"
+local shapes = require "shapes"
 
 local N = 100000
 
@@ -134,12 +135,7 @@ describe("polygonAreaAccurate against the exact area", function()
     checkGenerated(31337, 400, function(r)
       local m, radius = r:int(3, 40), 10 ^ r:int(-3, 4)
       local ox, oy = (r:float() - 0.5) * 10 ^ r:int(0, 12), (r:float() - 0.5) * 10 ^ r:int(0, 12)
-      local p = {}
-      for k = 1, m do
-        local t, rk = (k + 0.8 * (r:float() - 0.5)) * 2 * math.pi / m, radius * (0.3 + r:float())
-        p[#p + 1], p[#p + 2] = ox + rk * math.cos(t), oy + rk * math.sin(t)
-      end
-      return p
+      return shapes.star(r, m, ox, oy, radius)
     end)
   end)
 
@@ -197,10 +193,7 @@ describe("polygonAreaAccurate's split path against the exact area", function()
         p[#p + 1], p[#p + 2] = ox + size * math.cos(t), oy + size * math.sin(t)
       end
     else   -- a star
-      for k = 1, m do
-        local t, rk = (k + 0.8 * (r:float() - 0.5)) * 2 * math.pi / m, size * (0.3 + r:float())
-        p[#p + 1], p[#p + 2] = ox + rk * math.cos(t), oy + rk * math.sin(t)
-      end
+      p = shapes.star(r, m, ox, oy, size)
     end
     return p
   end

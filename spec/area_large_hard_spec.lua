@@ -35,14 +35,7 @@ local function checkAll(list)
 end
 
 -- A star of m vertices: random radii at jittered angles around (ox, oy).
-local function star(r, m, ox, oy, size)
-  local p = {}
-  for k = 1, m do
-    local t, rk = (k + 0.8 * (r:float() - 0.5)) * 2 * math.pi / m, size * (0.3 + r:float())
-    p[#p + 1], p[#p + 2] = ox + rk * math.cos(t), oy + rk * math.sin(t)
-  end
-  return p
-end
+local star = shapes.star
 
 -- A star at a random size (2^-30 to 2^30) and offset (up to 2^40 times that), either winding.
 local function randomStar(r, m)

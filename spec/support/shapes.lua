@@ -157,6 +157,17 @@ function shapes.spiral(n, turns)
   return points
 end
 
+--- A star-shaped polygon of m vertices around (ox, oy) drawn from rng: vertex k at the angle
+-- (k + u) 2 pi / m, u in -0.4 .. 0.4, and the radius size (0.3 + v), v in 0 .. 1 (u, then v).
+function shapes.star(rng, m, ox, oy, size)
+  local points = {}
+  for k = 1, m do
+    local t, r = (k + 0.8 * (rng:float() - 0.5)) * 2 * math.pi / m, size * (0.3 + rng:float())
+    points[#points + 1], points[#points + 2] = ox + r * math.cos(t), oy + r * math.sin(t)
+  end
+  return points
+end
+
 --- A star-shaped outline of n vertices with random radii in [0.6 R, 1.4 R]: simple, concave.
 function shapes.noisyCircle(n, rng)
   local points = {}
