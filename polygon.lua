@@ -1749,7 +1749,10 @@ else
     local d, lo = 1, nx * (p2[1] - cx) + ny * (p2[2] - cy)
     for i = 3, n2 - 1, 2 do
       local s = nx * (p2[i] - cx) + ny * (p2[i + 1] - cy)
-      if s < lo then d, lo = i, s end
+      if s < lo then
+        d = i
+        lo = s
+      end
     end
     local step = turn2 == turn1 and 2 or -2
     local dn = d + step
@@ -1808,7 +1811,9 @@ else
         return false
       end
       if squaredDepth < least or squaredDepth == least and key < leastKey then
-        least, leastOverlap, leastKey = squaredDepth, -lo, key
+        least = squaredDepth
+        leastOverlap = -lo
+        leastKey = key
       end
     end
     if leastKey < n1 then return least, leastOverlap, leastKey, 1 end
@@ -2197,8 +2202,18 @@ end
 -- convexPenetration, then separatingPush: false, or push length, dx, dy (adding (dx, dy) to
 -- every vertex of points2 leaves the polygons touching or apart, exactly).
 local function pushOut(fname, points1, points2, both, kind1, kind2)
-  local n1 = checkPoints(points1, fname, "points1", 4, kind1)
-  local n2 = checkPoints(points2, fname, "points2", 4, kind2)
+  local n1, n2
+  if kind1 and kind2 then   -- both tables: the rest of checkPoints' test, with no call
+    n1 = #points1
+    n2 = #points2
+    if n1 % 2 ~= 0 or n2 % 2 ~= 0 then
+      checkPoints(points1, fname, "points1", 4, kind1)
+      checkPoints(points2, fname, "points2", 4, kind2)
+    end
+  else
+    n1 = checkPoints(points1, fname, "points1", 4, kind1)
+    n2 = checkPoints(points2, fname, "points2", 4, kind2)
+  end
   local depth, ux, uy, owner, edgeEnd, base, inside =
     convexPenetration(points1, n1, points2, n2, both)
   if not depth then
