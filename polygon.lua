@@ -243,9 +243,9 @@ do
     -- ordered as their exact values, and the difference of the rounded ones has the sign;
     -- products that round alike differ by their rounding errors, whose difference has it. A few
     -- operations (TwoDiff's written out: its calls were about a third of the instructions here)
-    -- where stage B below takes four TwoDiffs, two TwoProducts and a Two-Two-Diff. (On LuaJIT, which
-    -- compiles stage B inline, the branches' side traces, inheriting the eight parts, failed to
-    -- compile: "NYI: register coalescing too complex".)
+    -- where stage B below takes four TwoDiffs, two TwoProducts and a Two-Two-Diff. (On LuaJIT,
+    -- which compiles stage B inline, the branches' side traces, inheriting the eight parts,
+    -- failed to compile: "NYI: register coalescing too complex".)
     if not JIT then
       local a, b = ux1 * s, ux0 * s
       local axh = a - b
