@@ -2279,16 +2279,45 @@ end
 -- product of theirs has overflowed or lost bits to underflow.
 local FILTER_LO, FILTER_HI = 2^-900, 2^1000
 
--- The exact sign of (rh + rl)^2 - |(x2, y2) - (x1, y1)|^2: > 0 when the point (x2, y2) lies
--- strictly within rh + rl of (x1, y1). rh + rl is a radius or an exact sum of two.
+-- reachesExact's second stage trusts its double-double gap G when |G| > REACH_BOUND M (below).
+local REACH_BOUND = 64 * EPS * EPS   -- 2^-100, exact
+
+-- A number with the sign of (rh + rl)^2 - |(x2, y2) - (x1, y1)|^2, exact: > 0 when the point
+-- (x2, y2) lies strictly within rh + rl of (x1, y1). rh + rl is a radius (rl = 0) or an exact
+-- sum of two (|rl| <= eps |rh|, from twoDiff). The differences are split exactly, d = dh + dl,
+-- and scaled (see exactTestScale). It is called just after a push, where the circles are within
+-- rounding of touching and the float filter cannot vouch, so on every resolved contact: a game's
+-- "resolve until nothing collides" loop meets it for every pair it has just pushed apart. So a
+-- second stage without loops comes first. With R = rh, X = dxh, Y = dyh (and r, x, y their
+-- lows) the gap is R^2 - X^2 - Y^2 + 2 (R r - X x - Y y) + r^2 - x^2 - y^2; the three squares
+-- are split exactly (TwoProduct), their highs subtracted exactly (two TwoDiffs: b + be + ae),
+-- and the eleven small terms added in floating point. With M = R^2 + X^2 + Y^2 (their highs)
+-- and eps = 2^-53, each small term is at most about 2 eps M, together below 5.01 eps M, so their
+-- float sum (eleven terms, six of them rounded products) is off by less than 12.01 eps times
+-- that: 61 eps^2 M. G = b + the sum rounded once has the sign of b + the float sum, and
+-- |G| > 64 eps^2 M (computed M rounded twice) clears that error: the sign is the exact gap's.
+-- (Every value stays below 2^502 after the scaling, and below M's bound, at least 2^266, an
+-- underflow's absolute error is negligible.) Only near-exact ties reach the expansion: in the
+-- arena of examples/arena.lua (300 frames) 189,427 calls, whose expansions' loops were LuaJIT
+-- traces' side exits that failed to compile ("register coalescing too complex").
 local function reachesExact(x1, y1, x2, y2, rh, rl)
   local dxh, dxl = twoDiff(x2, x1)
   local dyh, dyl = twoDiff(y2, y1)
   local s = exactTestScale(max(abs(dxh), abs(dyh), abs(rh)))
+  rh, rl, dxh, dxl, dyh, dyl = rh * s, rl * s, dxh * s, dxl * s, dyh * s, dyl * s
+  local ph, pl = twoProduct(rh, rh)
+  local xh, xl = twoProduct(dxh, dxh)
+  local yh, yl = twoProduct(dyh, dyh)
+  local a, ae = twoDiff(ph, xh)
+  local b, be = twoDiff(a, yh)
+  local small = (be + ae) + ((pl - xl) - yl) + 2 * ((rh * rl - dxh * dxl) - dyh * dyl)
+    + ((rl * rl - dxl * dxl) - dyl * dyl)
+  local gap = b + small
+  if abs(gap) > REACH_BOUND * ((ph + xh) + yh) then return gap end
   expLen = 0
-  expAddSquare(rh * s, rl * s, 1)
-  expAddSquare(dxh * s, dxl * s, -1)
-  expAddSquare(dyh * s, dyl * s, -1)
+  expAddSquare(rh, rl, 1)
+  expAddSquare(dxh, dxl, -1)
+  expAddSquare(dyh, dyl, -1)
   return expSign()
 end
 

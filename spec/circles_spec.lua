@@ -101,6 +101,30 @@ describe("circlesCollideV", function()
     end)
   end)
 
+  describe("when the sum of the radii is not a double", function()
+    -- r1 + r2 = 1 + 2^-60 rounds to 1, so the float test sees a tie in each case below
+    it("decides gaps of 2^-59 relative to the squares", function()
+      -- centre 2 at (1, 0): (1 + 2^-60)^2 - 1 = 2^-59 + 2^-120 > 0, collides
+      assert.is_truthy(circlesV(0, 0, 1, 1, 0, 2 ^ -60))
+      assert.is_truthy(circlesV(1, 0, 2 ^ -60, 0, 0, 1))
+      -- centre 2 at (1, 2^-29): 1 + 2^-58 > 1 + 2^-59 + 2^-120, apart
+      assert.are.equal(false, circlesV(0, 0, 1, 1, 2 ^ -29, 2 ^ -60))
+      assert.are.equal(false, circlesV(1, 2 ^ -29, 2 ^ -60, 0, 0, 1))
+    end)
+
+    it("decides gaps of 2^-122 relative to the squares", function()
+      -- centre 2 at (1, 2^-30): |c2 - c1|^2 = 1 + 2^-60;
+      -- r2 = 2^-61: (1 + 2^-61)^2 = 1 + 2^-60 + 2^-122, 2^-122 more: collides
+      assert.is_truthy(circlesV(0, 0, 1, 1, 2 ^ -30, 2 ^ -61))
+      assert.is_truthy(circlesV(1, 2 ^ -30, 2 ^ -61, 0, 0, 1))
+      -- r2 = 2^-62: (1 + 2^-62)^2 = 1 + 2^-61 + 2^-124 < 1 + 2^-60: apart
+      assert.are.equal(false, circlesV(0, 0, 1, 1, 2 ^ -30, 2 ^ -62))
+      -- r2 = 2^-61 with centre 2 at (1, 2^-30 + 2^-82): the squared distance gains
+      -- 2 * 2^-30 * 2^-82 + 2^-164 = 2^-111 + 2^-164 > 2^-122: apart
+      assert.are.equal(false, circlesV(0, 0, 1, 1, 2 ^ -30 + 2 ^ -82, 2 ^ -61))
+    end)
+  end)
+
   describe("when the tangent pair is far from the origin", function()
     -- the 3-4-5 touching pair moved by 1e9 and 1e12 (exact: integers below 2^53)
     for _, offset in ipairs({ 1e9, 1e12 }) do
