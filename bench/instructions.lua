@@ -6,7 +6,10 @@
 -- polygonsCollideV). Pair functions (polygonsCollide(V), polygonCollidesWith(V)) run on the
 -- pair workloads; one-polygon functions (polygonType, polygonArea, polygonWindingOrder,
 -- polygonAreaAccurate) on the ordinary polygons, the same at 1e9 and 1,000 vertices, where
--- polygonAreaAccurate is compared with polygonArea as in the benchmark.
+-- polygonAreaAccurate is compared with polygonArea as in the benchmark; polygonCircleCollideV
+-- on the benchmark's circles (at an edge, a corner, missing, inside); circlesCollideV, which the
+-- tutorial has not (no reference), on overlapping pairs, on the same pairs after their push (a
+-- resolve loop's second test: touching within rounding) and on missing pairs.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local W = require "bench.workloads"
 local shapes = require "shapes"
@@ -17,19 +20,59 @@ local fname = arg[1] or "polygonsCollideV"
 local PAIRS = { polygonsCollide = true, polygonsCollideV = true, polygonCollidesWith = true,
   polygonCollidesWithV = true }
 
-local function count(f, A1, A2)
-  for i = 1, #A1 do f(A1[i], A2 and A2[i]) end   -- a warm-up pass (caches, first-call work)
+-- args: arrays of the calls' arguments, up to six (args[k][i]: argument k of call i)
+local function count(f, args)
+  local A1, A2, A3, A4, A5, A6 = args[1], args[2], args[3], args[4], args[5], args[6]
+  local function pass()
+    for i = 1, #A1 do
+      f(A1[i], A2 and A2[i], A3 and A3[i], A4 and A4[i], A5 and A5[i], A6 and A6[i])
+    end
+  end
+  pass()   -- a warm-up pass (caches, first-call work)
   local n = 0
   debug.sethook(function() n = n + 1 end, "", 1)
-  for i = 1, #A1 do f(A1[i], A2 and A2[i]) end
+  pass()
   debug.sethook()
   return n / #A1
+end
+
+-- circlesCollideV's pairs: the benchmark's circles' centres and radii, the second circle along
+-- a direction at a distance from 0.3 to 0.95 times the sum of the radii (overlapping) or 1.2 to
+-- 2 times it (missing); "pushed" moves each overlapping pair's second circle by its push.
+local function circlePairs(which)
+  local C = W.circles(300, { 1, 2, 3, 4 })
+  local X1, Y1, R1, X2, Y2, R2 = {}, {}, {}, {}, {}, {}
+  for i = 1, #C[1] do
+    local r1, r2 = C[4][i], C[4][i % #C[1] + 1]
+    local t, f = i * 2.4, which == "missing" and 1.2 + 0.8 * (i % 7) / 7 or 0.3 + 0.65 * (i % 7) / 7
+    local x1, y1 = C[2][i], C[3][i]
+    local x2, y2 = x1 + (r1 + r2) * f * math.cos(t), y1 + (r1 + r2) * f * math.sin(t)
+    if which == "pushed" then
+      local _, dx, dy = polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
+      x2, y2 = x2 + dx, y2 + dy
+    end
+    X1[i], Y1[i], R1[i], X2[i], Y2[i], R2[i] = x1, y1, r1, x2, y2, r2
+  end
+  return { X1, Y1, R1, X2, Y2, R2 }
 end
 
 -- the reference: the tutorial's function, or for polygonAreaAccurate polygon.lua's polygonArea
 local reference = fname == "polygonAreaAccurate" and polygon.polygonArea or baseline[fname]
 local kinds
-if PAIRS[fname] then
+if fname == "polygonCircleCollideV" then
+  kinds = {
+    { "edge, corner, missing, inside (mixed)", W.circles(300, { 1, 2, 3, 4 }) },
+    { "at an edge", W.circles(300, { 1 }) },
+    { "at a corner", W.circles(300, { 2 }) },
+    { "missing", W.circles(300, { 3 }) },
+  }
+elseif fname == "circlesCollideV" then
+  kinds = {
+    { "overlapping pairs", circlePairs("overlapping") },
+    { "the same pairs after their push", circlePairs("pushed") },
+    { "missing pairs", circlePairs("missing") },
+  }
+elseif PAIRS[fname] then
   kinds = {
     { "mixed pairs (1/3 overlap, touch, miss)", W.pairs(300, { W.pairOverlap, W.pairTouch, W.pairMiss }) },
     { "overlapping pairs", W.pairs(300, { W.pairOverlap }) },
@@ -46,11 +89,15 @@ else
 end
 
 print(("%s, %s: VM instructions per call (reference: %s)"):format(fname, _VERSION,
-  fname == "polygonAreaAccurate" and "polygonArea" or "the tutorial's"))
+  fname == "polygonAreaAccurate" and "polygonArea" or reference and "the tutorial's" or "none"))
 print(("%-40s %10s %10s %7s"):format("workload", "polygon", "reference", "ratio"))
 for _, kind in ipairs(kinds) do
   local args = kind[2]
-  local a = count(polygon[fname], args[1], args[2])
-  local b = count(reference, args[1], args[2])
-  print(("%-40s %10.0f %10.0f %7.3f"):format(kind[1], a, b, a / b))
+  local a = count(polygon[fname], args)
+  if reference then
+    local b = count(reference, args)
+    print(("%-40s %10.0f %10.0f %7.3f"):format(kind[1], a, b, a / b))
+  else
+    print(("%-40s %10.0f %10s %7s"):format(kind[1], a, "-", "-"))
+  end
 end
