@@ -1830,16 +1830,34 @@ end
 -- For reachPastBothEnds: -lo and hi - own, where [lo, hi] is the range of the projections
 -- n . (v - a) of other's vertices and own the least of edges' own. On LuaJIT one loop over both
 -- polygons at once, the shorter one's last vertex read again (harmless to a min or max): half
--- the loops of the two calls, each a loop other traces could copy unrolled.
+-- the loops of the two calls, each a loop other traces could copy unrolled. Up to 8 vertices it
+-- always runs 8 steps, the last vertex read again: a loop whose count is a constant, when a
+-- trace copies it unrolled, has no side exit for the other polygon sizes. Those exits, taken by
+-- every pair of other sizes, failed to compile ("NYI: register coalescing too complex", 160
+-- aborts of the 236 in 2 of 16 runs of `bash bench/aborts.sh 16`; 0 of them in 32 runs after),
+-- for about 4 % more time (`luajit bench/isolated.lua polygonCollidesWithV`, six runs each:
+-- 0.89-0.98 of the tutorial's time before, 0.92-1.00 after). Two other shapes were measured and
+-- dropped: the edge loop flat over (edge, vertex) pairs, as reachPast's, with the verdicts
+-- after it, took 0.99-1.68 (mostly above 1.4); each polygon's eight projections as one
+-- expression, with no inner loop, 0.71-1.68, and 735 to 2,460 of those aborts a run.
 local faceAndFar
 if JIT then
   faceAndFar = function(edges, ne, other, no, ax, ay, nx, ny)
     local lo, hi, own = huge, -huge, huge
-    for i = 1, max(ne, no) - 1, 2 do
-      local j, k = min(i, no - 1), min(i, ne - 1)
-      local s = nx * (other[j] - ax) + ny * (other[j + 1] - ay)
-      lo, hi = min(lo, s), max(hi, s)
-      own = min(own, nx * (edges[k] - ax) + ny * (edges[k + 1] - ay))
+    if ne <= 16 and no <= 16 then
+      for i = 1, 15, 2 do
+        local j, k = min(i, no - 1), min(i, ne - 1)
+        local s = nx * (other[j] - ax) + ny * (other[j + 1] - ay)
+        lo, hi = min(lo, s), max(hi, s)
+        own = min(own, nx * (edges[k] - ax) + ny * (edges[k + 1] - ay))
+      end
+    else
+      for i = 1, max(ne, no) - 1, 2 do
+        local j, k = min(i, no - 1), min(i, ne - 1)
+        local s = nx * (other[j] - ax) + ny * (other[j + 1] - ay)
+        lo, hi = min(lo, s), max(hi, s)
+        own = min(own, nx * (edges[k] - ax) + ny * (edges[k + 1] - ay))
+      end
     end
     return -lo, hi - own
   end
