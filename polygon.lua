@@ -1,5 +1,5 @@
 local polygon = {
-  _VERSION     = "polygon 0.6.0",
+  _VERSION     = "polygon 0.7.0",
   _DESCRIPTION = "Polygon geometry for games: winding, area, convexity, centre, point in polygon, "
               .. "separating-axis collision with a minimum translation vector, polygon against circle",
   _URL         = "https://github.com/polygon-lua/polygon.lua",
@@ -1831,33 +1831,26 @@ end
 -- n . (v - a) of other's vertices and own the least of edges' own. On LuaJIT one loop over both
 -- polygons at once, the shorter one's last vertex read again (harmless to a min or max): half
 -- the loops of the two calls, each a loop other traces could copy unrolled. Up to 8 vertices it
--- always runs 8 steps, the last vertex read again: a loop whose count is a constant, when a
--- trace copies it unrolled, has no side exit for the other polygon sizes. Those exits, taken by
--- every pair of other sizes, failed to compile ("NYI: register coalescing too complex", 160
--- aborts of the 236 in 2 of 16 runs of `bash bench/aborts.sh 16`; 0 of them in 32 runs after),
--- for about 4 % more time (`luajit bench/isolated.lua polygonCollidesWithV`, six runs each:
--- 0.89-0.98 of the tutorial's time before, 0.92-1.00 after). Two other shapes were measured and
--- dropped: the edge loop flat over (edge, vertex) pairs, as reachPast's, with the verdicts
--- after it, took 0.99-1.68 (mostly above 1.4); each polygon's eight projections as one
--- expression, with no inner loop, 0.71-1.68, and 735 to 2,460 of those aborts a run.
+-- always runs 8 steps: a loop whose count is a constant has no side exit for the other polygon
+-- sizes in the copies. Those exits failed to compile ("NYI: register coalescing too complex":
+-- 160 of the 236 NYI aborts in 16 runs of `bash bench/aborts.sh 16`; none at this loop in 48
+-- runs after, while other sites still gave some, 283 in 3 of the last 16), for a few percent
+-- more time (`luajit bench/isolated.lua polygonCollidesWithV`, six runs each: 0.89-0.98 of the
+-- tutorial's time before, 0.84-1.05 after). Two other shapes were measured and dropped: the
+-- edge loop flat over (edge, vertex) pairs, as reachPast's, with the verdicts after it, took
+-- 0.99-1.68 (mostly above 1.4); each polygon's eight projections as one expression, with no
+-- inner loop, 0.71-1.68, with 735 to 2,460 of those aborts a run.
 local faceAndFar
 if JIT then
   faceAndFar = function(edges, ne, other, no, ax, ay, nx, ny)
     local lo, hi, own = huge, -huge, huge
-    if ne <= 16 and no <= 16 then
-      for i = 1, 15, 2 do
-        local j, k = min(i, no - 1), min(i, ne - 1)
-        local s = nx * (other[j] - ax) + ny * (other[j + 1] - ay)
-        lo, hi = min(lo, s), max(hi, s)
-        own = min(own, nx * (edges[k] - ax) + ny * (edges[k + 1] - ay))
-      end
-    else
-      for i = 1, max(ne, no) - 1, 2 do
-        local j, k = min(i, no - 1), min(i, ne - 1)
-        local s = nx * (other[j] - ax) + ny * (other[j + 1] - ay)
-        lo, hi = min(lo, s), max(hi, s)
-        own = min(own, nx * (edges[k] - ax) + ny * (edges[k + 1] - ay))
-      end
+    -- (a trace taking the first choice records the literal 15: a constant count)
+    local last = ne <= 16 and no <= 16 and 15 or max(ne, no) - 1
+    for i = 1, last, 2 do
+      local j, k = min(i, no - 1), min(i, ne - 1)
+      local s = nx * (other[j] - ax) + ny * (other[j + 1] - ay)
+      lo, hi = min(lo, s), max(hi, s)
+      own = min(own, nx * (edges[k] - ax) + ny * (edges[k + 1] - ay))
     end
     return -lo, hi - own
   end
