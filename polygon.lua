@@ -1580,8 +1580,10 @@ end
 -- trace, "leaving loop in root trace") sends every vertex to crossExact, whose stage B decides
 -- all but exactly collinear ones with inexact differences (through cross, the vertices near the
 -- line took its filter's side exit, and those side traces failed to compile too). On PUC Lua one
--- pass returns at the first vertex surely inside, and calls cross only for the vertices the
--- filter cannot place (on a touching pair's shared edge the second pass took a third of this).
+-- pass returns at the first vertex surely inside, and calls crossExact only for the vertices
+-- the filter cannot place (on a touching pair's shared edge the second pass took a third of
+-- this): cross's own filter, on the same products turned by `inside`, could not place them
+-- either, short of a det exactly at its bound, whose sign crossExact gives too.
 local vertexInside
 if JIT then
   vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
@@ -1614,8 +1616,8 @@ else
       local l, r = ex * (py - cy), ey * (px - cx)
       local det, t = l - r, CROSS_BOUND * (l + r)
       if det > t then
-        if det > -t or cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return true end
-      elseif det > -t and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
+        if det > -t or crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return true end
+      elseif det > -t and crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
         return true
       end
     end
@@ -1758,19 +1760,25 @@ else
     local dn = d + step
     if dn > n2 then dn = 1 elseif dn < 1 then dn = n2 - 1 end
     local dx, dy, dnx, dny = p2[d] + 0.0, p2[d + 1] + 0.0, p2[dn] + 0.0, p2[dn + 1] + 0.0
-    local fx, fy = dx - dnx, dy - dny
+    -- f is kept turned by turn1 (exact): the cross product below needs no turn then, and -f's
+    -- outward normal is (-fy, fx)
+    local fx, fy = (dx - dnx) * turn1, (dy - dny) * turn1
     local left1, left2 = n1 / 2, n2 / 2
     local back = -turn1
-    local key
+    -- the key of p2's edge from d is keyAhead + d (its end is dn when p2 is taken forwards, d
+    -- backwards), but n1 + 1 past keyWrap (dn wrapped round to 1)
+    local keyAhead, keyWrap = n1 + (step > 0 and 2 or 0), n1 + n2
+    local key, squaredNormal
     -- (one assignment per statement in this loop: Lua 5.4 gives a multiple assignment a move
     -- through a temporary per value, which here was a tenth of the loop)
     for _ = 1, left1 + left2 do
-      -- the next edge's outward normal n, the least projection lo on it of the other polygon
-      -- (from its current vertex), the edge's key; then its polygon moves on
-      local turnOn = (ex * fy - ey * fx) * turn1   -- > 0: f turns on from e
-      if left2 == 0 or left1 > 0 and (turnOn > 0 or turnOn == 0 and (fx ~= 0 or fy ~= 0)) then
+      -- the next edge's squared outward normal and the least projection lo on that normal of the
+      -- other polygon (from its current vertex), the edge's key; then its polygon moves on
+      local turnOn = ex * fy - ey * fx   -- > 0: f turns on from e
+      if left1 > 0 and (turnOn > 0 or turnOn == 0 and (fx ~= 0 or fy ~= 0)) or left2 == 0 then
         nx = ey * turn1
         ny = ex * back
+        squaredNormal = nx * nx + ny * ny
         lo = nx * (dx - cx) + ny * (dy - cy)
         key = kn
         left1 = left1 - 1
@@ -1783,10 +1791,10 @@ else
         ex = cnx - cx
         ey = cny - cy
       else   -- the edge d -> dn of p2, which is -f
-        nx = fy * back
-        ny = fx * turn1
-        lo = nx * (cx - dx) + ny * (cy - dy)
-        key = n1 + (step > 0 and dn or d)
+        squaredNormal = fy * fy + fx * fx
+        lo = fx * (cy - dy) - fy * (cx - dx)
+        key = keyAhead + d
+        if key > keyWrap then key = n1 + 1 end
         left2 = left2 - 1
         d = dn
         dx = dnx
@@ -1795,12 +1803,12 @@ else
         if dn > n2 then dn = 1 elseif dn < 1 then dn = n2 - 1 end
         dnx = p2[dn] + 0.0
         dny = p2[dn + 1] + 0.0
-        fx = dx - dnx
-        fy = dy - dny
+        fx = (dx - dnx) * turn1
+        fy = (dy - dny) * turn1
       end
       -- (a repeated vertex gives no axis: n = 0, lo = 0, and the squared depth 0 / 0 is NaN,
       -- which every comparison below passes by)
-      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
+      local squaredDepth = lo * (lo / squaredNormal)
       if squaredDepth <= tolSq then   -- decide exactly
         if key < n1 and not edgeReached(p1, n1, turn1, p2, n2, key)
             or key > n1 and not edgeReached(p2, n2, turn2, p1, n1, key - n1) then
@@ -1810,7 +1818,7 @@ else
       elseif lo > 0 then   -- surely apart
         return false
       end
-      if squaredDepth < least or squaredDepth == least and key < leastKey then
+      if squaredDepth <= least and (squaredDepth < least or key < leastKey) then
         least = squaredDepth
         leastOverlap = -lo
         leastKey = key
