@@ -1928,13 +1928,28 @@ end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
 -- component so that neither squaring overflows nor underflows. (nx, ny) must not be (0, 0).
-local function unit(nx, ny)
-  -- max, not a branch: on LuaJIT the branch's side exits, taken for half of all directions, were
-  -- side traces of the callers' big traces (max(|ny|, |nx|) keeps |ny| on ties, as the branch did)
-  local m = max(abs(ny), abs(nx))
-  nx, ny = nx / m, ny / m
-  local len = sqrt(nx * nx + ny * ny)
-  return nx / len, ny / len, len * m
+-- Two bodies computing the same numbers: max, not a branch, on LuaJIT (the branch's side exits,
+-- taken for half of all directions, were side traces of the callers' big traces; max(|ny|, |nx|)
+-- keeps |ny| on ties, as the branch did); comparisons on PUC Lua, where abs and max are three
+-- C calls (|x| of -0 is -0 there, never the larger of the two: (nx, ny) is not (0, 0)).
+local unit
+if JIT then
+  unit = function(nx, ny)
+    local m = max(abs(ny), abs(nx))
+    nx, ny = nx / m, ny / m
+    local len = sqrt(nx * nx + ny * ny)
+    return nx / len, ny / len, len * m
+  end
+else
+  unit = function(nx, ny)
+    local m = ny < 0 and -ny or ny
+    local mx = nx < 0 and -nx or nx
+    if m < mx then m = mx end
+    nx = nx / m
+    ny = ny / m
+    local len = sqrt(nx * nx + ny * ny)
+    return nx / len, ny / len, len * m
+  end
 end
 
 -- Below 2^464 the products of two coordinate differences (each below 2^466 after scaling)
@@ -2094,9 +2109,15 @@ if JIT then
   end
 else
   lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
-    local ex, ey, qx, qy, qbx, qby, dx, dy =
-      pushLine(lines, ia, ib, base, second, lineMoves, ux * push + 0.0, uy * push + 0.0)
-    ex, ey = ex * inside, ey * inside
+    -- pushLine written out (its call took some 10 of a check's 180 VM instructions on Lua 5.4)
+    local dx, dy = ux * push + 0.0, uy * push + 0.0
+    local lx, ly = dx * lineMoves, dy * lineMoves
+    local ex = ((lines[ib] + lx) - (lines[ia] + lx)) * inside
+    local ey = ((lines[ib + 1] + ly) - (lines[ia + 1] + ly)) * inside
+    local qx, qy = lines[base] + lx, lines[base + 1] + ly
+    local qbx, qby = lines[second] + lx, lines[second + 1] + ly
+    dx = dx - lx
+    dy = dy - ly
     local worst = 0.0
     for i = 1, n - 1, 2 do
       local px, py = points[i] + dx, points[i + 1] + dy
