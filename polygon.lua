@@ -355,13 +355,14 @@ local function shoelace(points, n)
   return sum + px * d, xSq, dSq + d * d
 end
 
--- shoelace and the bounding box in one pass, for the collision functions: returns shoelace's
--- three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes xSq + dSq non-finite.
--- On LuaJIT the box is kept with min and max, single instructions there: the comparisons' side
+-- shoelace and the bounding box in one pass, for the collision functions on LuaJIT: returns
+-- shoelace's three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes xSq + dSq
+-- non-finite. The box is kept with min and max, single instructions there: the comparisons' side
 -- exits were side traces of this loop, and with those of the code after it they passed LuaJIT's
 -- 100 side traces per loop, after which whole calls ran in the interpreter (`luajit -jv
 -- bench/run.lua --only 'polygonsCollideV pMix'`). The PUC interpreters call min and max as
--- functions, so there the comparisons are faster. The two bodies compute the same numbers.
+-- functions, so there comparisons are faster, and the area's sign is decided in the same call:
+-- turnAndBounds, below.
 local shoelaceBounds
 if JIT then
   -- The first vertex and the previous one are read from points in every step (LuaJIT hoists the
@@ -381,49 +382,6 @@ if JIT then
     end
     local d = (points[2] + 0.0) - points[n]
     return sum + (points[n - 1] - points[1]) * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
-  end
-else
-  -- Here xSq and dSq come from the box, not from sums: every |X| is at most spanX and every |d|
-  -- at most spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaSignOf's
-  -- bound holds with them (looser, but only slivers notice); two fewer sums per vertex. The
-  -- shoelace sum, not the box (comparisons pass a NaN by), carries a NaN or infinity into xSq.
-  shoelaceBounds = function(points, n)
-    local x0, y1 = points[1] + 0.0, points[2] + 0.0
-    local px, py = 0.0, y1
-    local sum = 0.0
-    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
-    -- Two vertices a step, the previous vertex's X and y in px and py at the start of each:
-    -- the second vertex is read straight into them, so no value is moved (on Lua 5.4 the moves
-    -- and the loop's own instruction were a sixth of the loop). vx is compared as read, a Lua
-    -- 5.3+ integer too: the conversion to a double is monotone, so the extremes converted once
-    -- are the extremes of the converted coordinates (x = vx - x0 converts it, x0 being a double).
-    for i = 3, n - 3, 4 do
-      local vx, y = points[i], points[i + 1] + 0.0
-      local x = vx - x0
-      sum = sum + (px + x) * (y - py)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if y < ymin then ymin = y elseif y > ymax then ymax = y end
-      vx = points[i + 2]
-      py = points[i + 3] + 0.0
-      px = vx - x0
-      sum = sum + (x + px) * (py - y)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if py < ymin then ymin = py elseif py > ymax then ymax = py end
-    end
-    if n % 4 == 0 then   -- an odd number of vertices after the first: the last one alone
-      local vx, y = points[n - 1], points[n] + 0.0
-      local x = vx - x0
-      sum = sum + (px + x) * (y - py)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if y < ymin then ymin = y elseif y > ymax then ymax = y end
-      px = x
-      py = y
-    end
-    sum = sum + px * (y1 - py)
-    xmin = xmin + 0.0
-    xmax = xmax + 0.0
-    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
-    return sum, m * spanX * spanX + (sum - sum), m * spanY * spanY, xmin, xmax, ymin, ymax
   end
 end
 
@@ -502,6 +460,66 @@ local function holdsNonFinite(points, n)
     if v ~= v or v == huge or v == -huge then return true end
   end
   return false
+end
+
+-- PUC Lua's first step of the SAT engine, for one polygon: its turn, the exact sign of its area
+-- (1.0, -1.0 or 0.0), and its box xmin, xmax, ymin, ymax; nil when a coordinate is NaN or
+-- infinite. shoelaceBounds' loop with areaSignOf's test written out after it, in one call where
+-- LuaJIT makes two (on Lua 5.4 a call costs about as much as eight VM instructions).
+-- xSq and dSq come from the box, not from sums: every |X| is at most spanX and every |d| at most
+-- spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaSignOf's bound holds with
+-- them (looser, but only slivers notice); two fewer sums per vertex. The shoelace sum, not the
+-- box (comparisons pass a NaN by), carries a NaN or infinity into xSq.
+local turnAndBounds
+if not JIT then
+  turnAndBounds = function(points, n)
+    local x0, y1 = points[1] + 0.0, points[2] + 0.0
+    local px, py = 0.0, y1
+    local sum = 0.0
+    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+    -- Two vertices a step, the previous vertex's X and y in px and py at the start of each: the
+    -- second vertex is read straight into them, so no value is moved (on Lua 5.4 the moves and
+    -- the loop's own instruction were a sixth of the loop). vx is compared as read, a Lua 5.3+
+    -- integer too: the conversion to a double is monotone, so the extremes converted once are the
+    -- extremes of the converted coordinates (x = vx - x0 converts it, x0 being a double).
+    for i = 3, n - 3, 4 do
+      local vx, y = points[i], points[i + 1] + 0.0
+      local x = vx - x0
+      sum = sum + (px + x) * (y - py)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if y < ymin then ymin = y elseif y > ymax then ymax = y end
+      vx = points[i + 2]
+      py = points[i + 3] + 0.0
+      px = vx - x0
+      sum = sum + (x + px) * (py - y)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if py < ymin then ymin = py elseif py > ymax then ymax = py end
+    end
+    if n % 4 == 0 then   -- an odd number of vertices after the first: the last one alone
+      local vx, y = points[n - 1], points[n] + 0.0
+      local x = vx - x0
+      sum = sum + (px + x) * (y - py)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if y < ymin then ymin = y elseif y > ymax then ymax = y end
+      px = x
+      py = y
+    end
+    sum = sum + px * (y1 - py)
+    xmin = xmin + 0.0
+    xmax = xmax + 0.0
+    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
+    local xSq, dSq = m * spanX * spanX + (sum - sum), m * spanY * spanY
+    -- luacheck: ignore 581 (NaN must count as non-finite)
+    if not (xSq + dSq < huge) and holdsNonFinite(points, n) then return nil end
+    local k = (m + 8) * 2^-50   -- areaSignOf's test (see there)
+    if not (sum * sum > k * k * xSq * dSq) then   -- luacheck: ignore 581 (NaN: not trusted)
+      shoelaceExact(points, n)
+      sum = expSign()
+    end
+    if sum > 0 then return 1.0, xmin, xmax, ymin, ymax end
+    if sum < 0 then return -1.0, xmin, xmax, ymin, ymax end
+    return 0.0, xmin, xmax, ymin, ymax
+  end
 end
 
 --------------------------------------------------------------------------------------------------
@@ -1661,13 +1679,6 @@ end
 -- compiles, and the flat loop took 0.34 of the tutorial's time where the nested ones took 0.41
 -- (`luajit bench/isolated.lua polygonsCollideV`). PUC Lua runs reachBoth instead, below.
 
--- Whether other reaches past the edge of `edges` ending at vertex index k, decided exactly.
-local function edgeReached(edges, ne, turn, other, no, k)
-  local j = k == 1 and ne - 1 or k - 2
-  local ax, ay = edges[j], edges[j + 1]
-  return vertexInside(ax, ay, edges[k], edges[k + 1], ax, ay, turn, other, no)
-end
-
 -- reachPast's and reachBoth's tolerance for polygons within a box of sides spanX and spanY:
 -- (16 eps)^2 (spanX^2 + spanY^2), or every axis decided exactly where that square would
 -- underflow (boxes below about 2^-450 only).
@@ -1732,6 +1743,14 @@ else
   -- the benchmark's mixed pairs with it, 1,297 with a calipers walk per polygon (the tutorial:
   -- 1,865). (On LuaJIT the choice of edge, a data-dependent branch per edge, would be a side
   -- trace, as the walks' exits were.)
+
+  -- Whether other reaches past the edge of `edges` ending at vertex index k, decided exactly.
+  local function edgeReached(edges, ne, turn, other, no, k)
+    local j = k == 1 and ne - 1 or k - 2
+    local ax, ay = edges[j], edges[j + 1]
+    return vertexInside(ax, ay, edges[k], edges[k + 1], ax, ay, turn, other, no)
+  end
+
   reachBoth = function(p1, n1, turn1, p2, n2, turn2, tolSq)
     -- each edge is known by a key: its end's index in p1, or n1 + its end's index in p2, so
     -- that the order of keys is the order of the ties' rule
@@ -1972,44 +1991,46 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 --     index base, with `inside` the cross product's sign on the side the other must leave.
 local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if n1 < 6 or n2 < 6 then return false end
-  -- Each polygon's sums, then at once its turn, the sign of its area decided exactly, so that
-  -- only the sign and the box are kept while the other's sums are taken (on LuaJIT fewer values
-  -- for a side trace to inherit). A NaN or infinity makes the sums non-finite; so does overflow,
-  -- which is not an error.
-  local area1, xSq1, dSq1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
-  -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (xSq1 + dSq1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
-  local turn1 = areaSignOf(p1, n1, area1, xSq1, dSq1)
-  local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
-  -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
-  -- Between the loops, the same numbers in two forms, as in shoelaceBounds: on LuaJIT min,
-  -- max and a division, which have no side exits (the branches' exits were side traces of
-  -- shoelaceBounds' loop, past LuaJIT's 100 per loop); on PUC Lua comparisons, which cost no call.
-  -- The boxes are apart or touching (so are the polygons) when a difference is <= 0; no
+  -- Each polygon's turn, the sign of its area decided exactly, 1 or -1 (zero area never
+  -- collides), and the sizes bounding every |vx - ax| and |vy - ay| in the projections: the box
+  -- around both. A NaN or infinity makes the sums non-finite; so does overflow, which is not an
+  -- error. The boxes are apart or touching (so are the polygons) when a difference is <= 0; no
   -- subtraction of finite doubles rounds across 0.
-  if both then
-    local gap
-    if JIT then
-      gap = min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1)
-    else
-      gap = (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) and 0 or 1
-    end
-    if gap <= 0 then return false end   -- (the one-sided test may still see overlap)
-  end
-  -- zero area never collides
-  if turn1 == 0 then return false end
-  local turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
-  if turn2 == 0 then return false end
-  -- Signs, not magnitudes; and the sizes bounding every |vx - ax| and |vy - ay| in the
-  -- projections: the box around both. (A sure sign is finite: areaSignOf sends an infinite sum
-  -- to the exact path; so t / |t| is 1 or -1 exactly.)
-  local spanX, spanY
+  local turn1, turn2, spanX, spanY
   if JIT then
+    -- Each polygon's sums, then at once its turn, so that only the sign and the box are kept
+    -- while the other's sums are taken (fewer values for a side trace to inherit). Between the
+    -- loops min, max and a division, which have no side exits (the branches' exits were side
+    -- traces of shoelaceBounds' loop, past LuaJIT's 100 per loop).
+    local area1, xSq1, dSq1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
+    -- luacheck: ignore 581 (NaN must count as non-finite)
+    if not (xSq1 + dSq1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+    turn1 = areaSignOf(p1, n1, area1, xSq1, dSq1)
+    local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
+    -- luacheck: ignore 581 (NaN must count as non-finite)
+    if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+    if both and min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1) <= 0 then
+      return false   -- (the one-sided test may still see overlap)
+    end
+    if turn1 == 0 then return false end
+    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
+    if turn2 == 0 then return false end
+    -- (a sure sign is finite: areaSignOf sends an infinite sum to the exact path; so t / |t|
+    -- is 1 or -1 exactly)
     turn1, turn2 = turn1 / abs(turn1), turn2 / abs(turn2)
     spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
   else
-    turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0
+    -- PUC Lua: both in one call per polygon, comparisons instead of min and max (calls here)
+    local sign1, xmin1, xmax1, ymin1, ymax1 = turnAndBounds(p1, n1)
+    if not sign1 then return nil, "points1" end
+    local sign2, xmin2, xmax2, ymin2, ymax2 = turnAndBounds(p2, n2)
+    if not sign2 then return nil, "points2" end
+    if both and (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) then
+      return false   -- (the one-sided test may still see overlap)
+    end
+    if sign1 == 0 or sign2 == 0 then return false end
+    turn1 = sign1
+    turn2 = sign2
     spanX = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
     spanY = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
   end
