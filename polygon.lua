@@ -1629,10 +1629,11 @@ else
     -- (the filter without abs: the bound CROSS_BOUND (|l| + |r|) rounds to the larger of |t|,
     -- t = CROSS_BOUND (l + r), and that bound times |det|, which is below |det|: so det - bound
     -- > 0 exactly when det > t and det > -t, and det + bound <= 0 exactly when neither holds)
+    local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
     for i = 1, n - 1, 2 do
       local px, py = points[i] + 0.0, points[i + 1] + 0.0
       local l, r = ex * (py - cy), ey * (px - cx)
-      local det, t = l - r, CROSS_BOUND * (l + r)
+      local det, t = l - r, crossBound * (l + r)
       if det > t then
         if det > -t or crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return true end
       elseif det > -t and crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
@@ -2140,18 +2141,19 @@ else
     dx = dx - lx
     dy = dy - ly
     local worst = 0.0
+    local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
     for i = 1, n - 1, 2 do
       local px, py = points[i] + dx, points[i + 1] + dy
       local l, r = ex * (py - qy), ey * (px - qx)
       -- first without abs: the bound's |l| + |r| is |l + r| or |l - r|, the larger; det <= -t
       -- and det <= t, t = CROSS_BOUND (l + r), put the vertex surely on the line or outside
       -- (its reach <= 0 <= worst), as most vertices are
-      local det, t = l - r, CROSS_BOUND * (l + r)
+      local det, t = l - r, crossBound * (l + r)
       if det > t or det > -t then
-        local reach = det + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+        local reach = det + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
         if reach > worst then
           l, r = ex * (py - qby), ey * (px - qbx)
-          local fromB = l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
+          local fromB = l - r + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
           if fromB < reach then reach = fromB end
           if reach > worst then worst = reach end
         end
