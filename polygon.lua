@@ -2112,7 +2112,9 @@ end
 -- leaves the loop midway (a trace that ran on into it before it was compiled had unrolled it)
 -- inherits only the push from its parent. With the line's eight numbers held across the loop
 -- such side traces needed more registers than there are ("NYI: register coalescing too complex",
--- retried on every push, `luajit bench/isolated.lua polygonsCollideV`).
+-- retried on every push, `luajit bench/isolated.lua polygonsCollideV`). On PUC Lua, when the
+-- largest is not 0, it also returns |e|^2 and |qx ux| + |qy uy|, which separatingPush needs then
+-- (from pushLine and two calls to abs on LuaJIT).
 local lineShortfall
 if JIT then
   lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
@@ -2159,7 +2161,10 @@ else
         end
       end
     end
-    return worst
+    if worst == 0 then return worst end
+    -- what separatingPush lengthens the push by, so that it calls neither pushLine nor abs
+    local qxu, qyu = qx * ux, qy * uy
+    return worst, ex * ex + ey * ey, (qxu < 0 and -qxu or qxu) + (qyu < 0 and -qyu or qyu)
   end
 end
 
@@ -2189,15 +2194,19 @@ local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, bas
   local allowance = 0.0
   local push = depth   -- first as it is: an exact move along an axis keeps it exact
   for _ = 1, PUSH_ROUNDS do
-    local worst = lineShortfall(lines, ia, edgeEnd, base, second, lineMoves, ux, uy, push, inside,
-      others, no)
+    -- (on PUC Lua lineShortfall also returns |e|^2 and |qx ux| + |qy uy|, when worst > 0)
+    local worst, squaredEdge, lineReach = lineShortfall(lines, ia, edgeEnd, base, second,
+      lineMoves, ux, uy, push, inside, others, no)
     if worst == 0 then return push, ux * push + 0.0, uy * push + 0.0 end   -- + 0.0: -0 to 0
     -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
     -- fell short lies, to within the polygons' size), doubled every round
-    local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, second, lineMoves,
-      ux * push + 0.0, uy * push + 0.0)
-    allowance = allowance == 0 and EPS * (abs(qx * ux) + abs(qy * uy)) or 2 * allowance
-    push = push + worst / sqrt(ex * ex + ey * ey) + allowance
+    if JIT then
+      local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, second, lineMoves,
+        ux * push + 0.0, uy * push + 0.0)
+      squaredEdge, lineReach = ex * ex + ey * ey, abs(qx * ux) + abs(qy * uy)
+    end
+    allowance = allowance == 0 and EPS * lineReach or 2 * allowance
+    push = push + worst / sqrt(squaredEdge) + allowance
     -- only far outside the exact range can the check's products overflow: keep the depth
     if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
   end
