@@ -1631,7 +1631,9 @@ else
     -- > 0 exactly when det > t and det > -t, and det + bound <= 0 exactly when neither holds)
     local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
     for i = 1, n - 1, 2 do
-      local px, py = points[i] + 0.0, points[i + 1] + 0.0
+      -- (as read: cx and cy are doubles, so the differences convert a Lua 5.3+ integer, and
+      -- crossExact takes what cross takes)
+      local px, py = points[i], points[i + 1]
       local l, r = ex * (py - cy), ey * (px - cx)
       local det, t = l - r, crossBound * (l + r)
       if det > t then
@@ -1783,7 +1785,9 @@ else
     -- f is kept turned by turn1 (exact): the cross product below needs no turn then, and -f's
     -- outward normal is (-fy, fx)
     local fx, fy = (dx - dnx) * turn1, (dy - dny) * turn1
-    local left1, left2 = n1 / 2, n2 / 2
+    -- the coordinates of each polygon's edges still to take, an integer on Lua 5.3+ as the
+    -- loop's count (n1 / 2 would be a float)
+    local left1, left2 = n1, n2
     local back = -turn1
     -- the key of p2's edge from d is keyAhead + d (its end is dn when p2 is taken forwards, d
     -- backwards), but n1 + 1 past keyWrap (dn wrapped round to 1)
@@ -1791,7 +1795,7 @@ else
     local key, squaredNormal
     -- (one assignment per statement in this loop: Lua 5.4 gives a multiple assignment a move
     -- through a temporary per value, which here was a tenth of the loop)
-    for _ = 1, left1 + left2 do
+    for _ = 2, n1 + n2, 2 do
       -- the next edge's squared outward normal and the least projection lo on that normal of the
       -- other polygon (from its current vertex), the edge's key; then its polygon moves on
       local turnOn = ex * fy - ey * fx   -- > 0: f turns on from e
@@ -1801,7 +1805,7 @@ else
         squaredNormal = nx * nx + ny * ny
         lo = nx * (dx - cx) + ny * (dy - cy)
         key = kn
-        left1 = left1 - 1
+        left1 = left1 - 2
         cx = cnx
         cy = cny
         kn = kn + 2
@@ -1815,7 +1819,7 @@ else
         lo = fx * (cy - dy) - fy * (cx - dx)
         key = keyAhead + d
         if key > keyWrap then key = n1 + 1 end
-        left2 = left2 - 1
+        left2 = left2 - 2
         d = dn
         dx = dnx
         dy = dny
