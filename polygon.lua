@@ -2106,19 +2106,17 @@ local function pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
     dx - lx, dy - ly
 end
 
--- separatingPush's check of one push along (ux, uy): the largest det + bound over the vertices
--- p of points moved by the push, where det is e x (p - q) turned to be > 0 on the side `inside`
--- (e premultiplied by that sign, which is exact) and bound is cross's error bound, its filter
--- inlined (a call per vertex is most of the loop's time on PUC Lua). No vertex is inside when
--- it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better of
--- the two kept. On LuaJIT the loop is branch-free and takes the line from pushLine in every
--- step: LuaJIT hoists those loads and products out of its compiled loop, and a side trace that
--- leaves the loop midway (a trace that ran on into it before it was compiled had unrolled it)
--- inherits only the push from its parent. With the line's eight numbers held across the loop
--- such side traces needed more registers than there are ("NYI: register coalescing too complex",
--- retried on every push, `luajit bench/isolated.lua polygonsCollideV`). On PUC Lua, when the
--- largest is not 0, it also returns |e|^2 and |qx ux| + |qy uy|, which separatingPush needs then
--- (from pushLine and two calls to abs on LuaJIT).
+-- separatingPush's check of one push along (ux, uy), on LuaJIT (PUC Lua's is written out in its
+-- separatingPush, below): the largest det + bound over the vertices p of points moved by the
+-- push, where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that
+-- sign, which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside
+-- when it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better
+-- of the two kept. The loop is branch-free and takes the line from pushLine in every step:
+-- LuaJIT hoists those loads and products out of its compiled loop, and a side trace that leaves
+-- the loop midway (a trace that ran on into it before it was compiled had unrolled it) inherits
+-- only the push from its parent. With the line's eight numbers held across the loop such side
+-- traces needed more registers than there are ("NYI: register coalescing too complex", retried
+-- on every push, `luajit bench/isolated.lua polygonsCollideV`).
 local lineShortfall
 if JIT then
   lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
@@ -2134,41 +2132,6 @@ if JIT then
         lb - rb + CROSS_BOUND * (abs(lb) + abs(rb))))
     end
     return worst
-  end
-else
-  lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
-    -- pushLine written out (its call took some 10 of a check's 180 VM instructions on Lua 5.4)
-    local dx, dy = ux * push + 0.0, uy * push + 0.0
-    local lx, ly = dx * lineMoves, dy * lineMoves
-    local ex = ((lines[ib] + lx) - (lines[ia] + lx)) * inside
-    local ey = ((lines[ib + 1] + ly) - (lines[ia + 1] + ly)) * inside
-    local qx, qy = lines[base] + lx, lines[base + 1] + ly
-    local qbx, qby = lines[second] + lx, lines[second + 1] + ly
-    dx = dx - lx
-    dy = dy - ly
-    local worst = 0.0
-    local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
-    for i = 1, n - 1, 2 do
-      local px, py = points[i] + dx, points[i + 1] + dy
-      local l, r = ex * (py - qy), ey * (px - qx)
-      -- first without abs: the bound's |l| + |r| is |l + r| or |l - r|, the larger; det <= -t
-      -- and det <= t, t = CROSS_BOUND (l + r), put the vertex surely on the line or outside
-      -- (its reach <= 0 <= worst), as most vertices are
-      local det, t = l - r, crossBound * (l + r)
-      if det > t or det > -t then
-        local reach = det + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
-        if reach > worst then
-          l, r = ex * (py - qby), ey * (px - qbx)
-          local fromB = l - r + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
-          if fromB < reach then reach = fromB end
-          if reach > worst then worst = reach end
-        end
-      end
-    end
-    if worst == 0 then return worst end
-    -- what separatingPush lengthens the push by, so that it calls neither pushLine nor abs
-    local qxu, qyu = qx * ux, qy * uy
-    return worst, ex * ex + ey * ey, (qxu < 0 and -qxu or qxu) + (qyu < 0 and -qyu or qyu)
   end
 end
 
@@ -2187,34 +2150,87 @@ local PUSH_ROUNDS = 64
 -- the bound and the rounding allowance at it, and the check runs again. Deciding such vertices
 -- exactly instead would cost an expansion at nearly every push: its vertex ends on the line.
 -- Returns push length, dx, dy.
-local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
-  if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
-  local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
-  if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
-  local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
-  local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
-  -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
-  -- allowance for it, none on the first check, then that, doubling every further round
-  local allowance = 0.0
-  local push = depth   -- first as it is: an exact move along an axis keeps it exact
-  for _ = 1, PUSH_ROUNDS do
-    -- (on PUC Lua lineShortfall also returns |e|^2 and |qx ux| + |qy uy|, when worst > 0)
-    local worst, squaredEdge, lineReach = lineShortfall(lines, ia, edgeEnd, base, second,
-      lineMoves, ux, uy, push, inside, others, no)
-    if worst == 0 then return push, ux * push + 0.0, uy * push + 0.0 end   -- + 0.0: -0 to 0
-    -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
-    -- fell short lies, to within the polygons' size), doubled every round
-    if JIT then
+-- Two bodies computing the same push. On PUC Lua the check (lineShortfall's, with pushLine's
+-- line) is written out in the loop over the rounds, and its filter is tried first without abs,
+-- which places most vertices: with the calls (twelve arguments for the check, pushLine's eight
+-- results, abs) the push took 395 VM instructions per overlapping pair of the benchmark on Lua
+-- 5.4, 313 so (`lua5.4 bench/instructions.lua`, the push's share counted by a count hook).
+local separatingPush
+if JIT then
+  separatingPush = function(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+    if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
+    local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
+    if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
+    local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+    local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
+    -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
+    -- allowance for it, none on the first check, then that, doubling every further round
+    local allowance = 0.0
+    local push = depth   -- first as it is: an exact move along an axis keeps it exact
+    for _ = 1, PUSH_ROUNDS do
+      local worst = lineShortfall(lines, ia, edgeEnd, base, second, lineMoves, ux, uy, push,
+        inside, others, no)
+      if worst == 0 then return push, ux * push + 0.0, uy * push + 0.0 end   -- + 0.0: -0 to 0
+      -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
+      -- fell short lies, to within the polygons' size), doubled every round
       local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, second, lineMoves,
         ux * push + 0.0, uy * push + 0.0)
-      squaredEdge, lineReach = ex * ex + ey * ey, abs(qx * ux) + abs(qy * uy)
+      allowance = allowance == 0 and EPS * (abs(qx * ux) + abs(qy * uy)) or 2 * allowance
+      push = push + worst / sqrt(ex * ex + ey * ey) + allowance
+      -- only far outside the exact range can the check's products overflow: keep the depth
+      if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
     end
-    allowance = allowance == 0 and EPS * lineReach or 2 * allowance
-    push = push + worst / sqrt(squaredEdge) + allowance
-    -- only far outside the exact range can the check's products overflow: keep the depth
-    if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
+    return depth, ux * depth + 0.0, uy * depth + 0.0
   end
-  return depth, ux * depth + 0.0, uy * depth + 0.0
+else
+  separatingPush = function(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+    if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
+    local lines, nl, points, n, lineMoves = p1, n1, p2, n2, 0.0
+    if owner == 2 then lines, nl, points, n, lineMoves = p2, n2, p1, n1, 1.0 end
+    local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+    local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
+    local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
+    local allowance = 0.0   -- as on LuaJIT
+    local push = depth
+    for _ = 1, PUSH_ROUNDS do
+      -- the line and the move of points' vertices, as pushLine gives them, e turned by inside
+      local dx, dy = ux * push + 0.0, uy * push + 0.0
+      local lx, ly = dx * lineMoves, dy * lineMoves
+      local ex = ((lines[edgeEnd] + lx) - (lines[ia] + lx)) * inside
+      local ey = ((lines[edgeEnd + 1] + ly) - (lines[ia + 1] + ly)) * inside
+      local qx, qy = lines[base] + lx, lines[base + 1] + ly
+      local qbx, qby = lines[second] + lx, lines[second + 1] + ly
+      local vx, vy = dx - lx, dy - ly
+      local worst = 0.0
+      for i = 1, n - 1, 2 do
+        local px, py = points[i] + vx, points[i + 1] + vy
+        local l, r = ex * (py - qy), ey * (px - qx)
+        -- first without abs: the bound's |l| + |r| is |l + r| or |l - r|, the larger; det <= -t
+        -- and det <= t, t = CROSS_BOUND (l + r), put the vertex surely on the line or outside
+        -- (its reach <= 0 <= worst), as most vertices are
+        local det, t = l - r, crossBound * (l + r)
+        if det > t or det > -t then
+          local reach = det + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
+          if reach > worst then
+            l, r = ex * (py - qby), ey * (px - qbx)
+            local fromB = l - r + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
+            if fromB < reach then reach = fromB end
+            if reach > worst then worst = reach end
+          end
+        end
+      end
+      if worst == 0 then return push, dx, dy end
+      local qxu, qyu = qx * ux, qy * uy
+      if allowance == 0 then
+        allowance = EPS * ((qxu < 0 and -qxu or qxu) + (qyu < 0 and -qyu or qyu))
+      else
+        allowance = 2 * allowance
+      end
+      push = push + worst / sqrt(ex * ex + ey * ey) + allowance
+      if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
+    end
+    return depth, ux * depth + 0.0, uy * depth + 0.0
+  end
 end
 
 -- Raises the error for a non-finite coordinate at the caller of the public function, which
