@@ -1636,10 +1636,15 @@ else
       local px, py = points[i], points[i + 1]
       local l, r = ex * (py - cy), ey * (px - cx)
       local det, t = l - r, crossBound * (l + r)
-      if det > t then
-        if det > -t or crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return true end
-      elseif det > -t and crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
-        return true
+      if det > t or det > -t then   -- not surely outside
+        if det > t and det > -t then return true end   -- surely inside
+        -- The exact sign, short of the zeros known without it: p = c, and p = b on the line
+        -- through a (c = a), the vertex of a touching pair's shared edge that crossExact was
+        -- called for in half of its calls (`lua5.4 bench/instructions.lua` pairs).
+        if (px ~= cx or py ~= cy) and (px ~= bx or py ~= by or cx ~= ax or cy ~= ay)
+            and crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
+          return true
+        end
       end
     end
     return false
