@@ -466,10 +466,11 @@ end
 -- (1.0, -1.0 or 0.0), and its box xmin, xmax, ymin, ymax; nil when a coordinate is NaN or
 -- infinite. shoelaceBounds' loop with areaSignOf's test written out after it, in one call where
 -- LuaJIT makes two (on Lua 5.4 a call costs about as much as eight VM instructions).
--- xSq and dSq come from the box, not from sums: every |X| is at most spanX and every |d| at most
--- spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaSignOf's bound holds with
--- them (looser, but only slivers notice); two fewer sums per vertex. The shoelace sum, not the
--- box (comparisons pass a NaN by), carries a NaN or infinity into xSq.
+-- The test's xSq and dSq come from the box, not from sums: every |X| is at most spanX and every
+-- |d| at most spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaSignOf's bound
+-- holds with them (looser, but only slivers notice); two fewer sums per vertex. The shoelace
+-- sum, not the box (comparisons pass a NaN by), carries a NaN or infinity into the check for
+-- them. Only the sign is returned, so a sound filter gives the same turn as areaSignOf's.
 local turnAndBounds
 if not JIT then
   turnAndBounds = function(points, n)
@@ -508,11 +509,12 @@ if not JIT then
     xmin = xmin + 0.0
     xmax = xmax + 0.0
     local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
-    local xSq, dSq = m * spanX * spanX + (sum - sum), m * spanY * spanY
     -- luacheck: ignore 581 (NaN must count as non-finite)
-    if not (xSq + dSq < huge) and holdsNonFinite(points, n) then return nil end
-    local k = (m + 8) * 2^-50   -- areaSignOf's test (see there)
-    if not (sum * sum > k * k * xSq * dSq) then   -- luacheck: ignore 581 (NaN: not trusted)
+    if not ((sum - sum) + spanX + spanY < huge) and holdsNonFinite(points, n) then return nil end
+    -- areaSignOf's test (see there) with xSq = m spanX^2 and dSq = m spanY^2: its bound k^2 xSq
+    -- dSq is the square of k m spanX spanY, which takes fewer operations (and underflows alike)
+    local bound = (m + 8) * 2^-50 * m * spanX * spanY
+    if not (sum * sum > bound * bound) then   -- luacheck: ignore 581 (NaN: not trusted)
       shoelaceExact(points, n)
       sum = expSign()
     end
