@@ -59,8 +59,9 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- do not overlap, built from TwoSum and TwoProduct (Dekker's split). The exact path allocates
 -- nothing: it reuses one scratch array (and when the differences are exact, the common case,
 -- cross needs no loop at all). Hot loops that inline cross's filter say so where they do it,
--- with the measured reason (vertexInside, lineShortfall, polygonType); they call cross where
--- the filter cannot decide, or, in separatingPush, lengthen the push until it can.
+-- with the measured reason (vertexInside, lineShortfall, PUC Lua's separatingPush,
+-- polygonType); they call cross, or its exact stages (crossExact), where the filter cannot
+-- decide, or, in separatingPush, lengthen the push until it can.
 --
 -- LuaJIT and the PUC interpreters want different code: PUC Lua pays for every call (math.min
 -- and math.abs included) and little for a branch; LuaJIT compiles min, max and abs to single
