@@ -59,8 +59,9 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- do not overlap, built from TwoSum and TwoProduct (Dekker's split). The exact path allocates
 -- nothing: it reuses one scratch array (and when the differences are exact, the common case,
 -- cross needs no loop at all). Hot loops that inline cross's filter say so where they do it,
--- with the measured reason (vertexInside, lineShortfall, polygonType); they call cross where
--- the filter cannot decide, or, in separatingPush, lengthen the push until it can.
+-- with the measured reason (vertexInside, lineShortfall, PUC Lua's separatingPush,
+-- polygonType); they call cross, or its exact stages (crossExact), where the filter cannot
+-- decide, or, in separatingPush, lengthen the push until it can.
 --
 -- LuaJIT and the PUC interpreters want different code: PUC Lua pays for every call (math.min
 -- and math.abs included) and little for a branch; LuaJIT compiles min, max and abs to single
@@ -355,13 +356,14 @@ local function shoelace(points, n)
   return sum + px * d, xSq, dSq + d * d
 end
 
--- shoelace and the bounding box in one pass, for the collision functions: returns shoelace's
--- three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes xSq + dSq non-finite.
--- On LuaJIT the box is kept with min and max, single instructions there: the comparisons' side
+-- shoelace and the bounding box in one pass, for the collision functions on LuaJIT: returns
+-- shoelace's three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes xSq + dSq
+-- non-finite. The box is kept with min and max, single instructions there: the comparisons' side
 -- exits were side traces of this loop, and with those of the code after it they passed LuaJIT's
 -- 100 side traces per loop, after which whole calls ran in the interpreter (`luajit -jv
 -- bench/run.lua --only 'polygonsCollideV pMix'`). The PUC interpreters call min and max as
--- functions, so there the comparisons are faster. The two bodies compute the same numbers.
+-- functions, so there comparisons are faster, and the area's sign is decided in the same call:
+-- turnAndBounds, below.
 local shoelaceBounds
 if JIT then
   -- The first vertex and the previous one are read from points in every step (LuaJIT hoists the
@@ -381,49 +383,6 @@ if JIT then
     end
     local d = (points[2] + 0.0) - points[n]
     return sum + (points[n - 1] - points[1]) * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
-  end
-else
-  -- Here xSq and dSq come from the box, not from sums: every |X| is at most spanX and every |d|
-  -- at most spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaSignOf's
-  -- bound holds with them (looser, but only slivers notice); two fewer sums per vertex. The
-  -- shoelace sum, not the box (comparisons pass a NaN by), carries a NaN or infinity into xSq.
-  shoelaceBounds = function(points, n)
-    local x0, y1 = points[1] + 0.0, points[2] + 0.0
-    local px, py = 0.0, y1
-    local sum = 0.0
-    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
-    -- Two vertices a step, the previous vertex's X and y in px and py at the start of each:
-    -- the second vertex is read straight into them, so no value is moved (on Lua 5.4 the moves
-    -- and the loop's own instruction were a sixth of the loop). vx is compared as read, a Lua
-    -- 5.3+ integer too: the conversion to a double is monotone, so the extremes converted once
-    -- are the extremes of the converted coordinates (x = vx - x0 converts it, x0 being a double).
-    for i = 3, n - 3, 4 do
-      local vx, y = points[i], points[i + 1] + 0.0
-      local x = vx - x0
-      sum = sum + (px + x) * (y - py)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if y < ymin then ymin = y elseif y > ymax then ymax = y end
-      vx = points[i + 2]
-      py = points[i + 3] + 0.0
-      px = vx - x0
-      sum = sum + (x + px) * (py - y)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if py < ymin then ymin = py elseif py > ymax then ymax = py end
-    end
-    if n % 4 == 0 then   -- an odd number of vertices after the first: the last one alone
-      local vx, y = points[n - 1], points[n] + 0.0
-      local x = vx - x0
-      sum = sum + (px + x) * (y - py)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if y < ymin then ymin = y elseif y > ymax then ymax = y end
-      px = x
-      py = y
-    end
-    sum = sum + px * (y1 - py)
-    xmin = xmin + 0.0
-    xmax = xmax + 0.0
-    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
-    return sum, m * spanX * spanX + (sum - sum), m * spanY * spanY, xmin, xmax, ymin, ymax
   end
 end
 
@@ -502,6 +461,68 @@ local function holdsNonFinite(points, n)
     if v ~= v or v == huge or v == -huge then return true end
   end
   return false
+end
+
+-- PUC Lua's first step of the SAT engine, for one polygon: its turn, the exact sign of its area
+-- (1.0, -1.0 or 0.0), and its box xmin, xmax, ymin, ymax; nil when a coordinate is NaN or
+-- infinite. shoelaceBounds' loop with areaSignOf's test written out after it, in one call where
+-- LuaJIT makes two (on Lua 5.4 a call takes the time of several VM instructions).
+-- The test's xSq and dSq come from the box, not from sums: every |X| is at most spanX and every
+-- |d| at most spanY, so m spanX^2 and m spanY^2 (m vertices) bound them, and areaSignOf's bound
+-- holds with them (looser, but only slivers notice); two fewer sums per vertex. The shoelace
+-- sum, not the box (comparisons pass a NaN by), carries a NaN or infinity into the check for
+-- them. Only the sign is returned, so a sound filter gives the same turn as areaSignOf's.
+local turnAndBounds
+if not JIT then
+  turnAndBounds = function(points, n)
+    local x0, y1 = points[1] + 0.0, points[2] + 0.0
+    local px, py = 0.0, y1
+    local sum = 0.0
+    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+    -- Two vertices a step, the previous vertex's X and y in px and py at the start of each: the
+    -- second vertex is read straight into them, so no value is moved (on Lua 5.4 the moves and
+    -- the loop's own instruction were a sixth of the loop). vx is compared as read, a Lua 5.3+
+    -- integer too: the conversion to a double is monotone, so the extremes converted once are the
+    -- extremes of the converted coordinates (x = vx - x0 converts it, x0 being a double).
+    for i = 3, n - 3, 4 do
+      local vx, y = points[i], points[i + 1] + 0.0
+      local x = vx - x0
+      sum = sum + (px + x) * (y - py)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if y < ymin then ymin = y elseif y > ymax then ymax = y end
+      vx = points[i + 2]
+      py = points[i + 3] + 0.0
+      px = vx - x0
+      sum = sum + (x + px) * (py - y)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if py < ymin then ymin = py elseif py > ymax then ymax = py end
+    end
+    if n % 4 == 0 then   -- an odd number of vertices after the first: the last one alone
+      local vx, y = points[n - 1], points[n] + 0.0
+      local x = vx - x0
+      sum = sum + (px + x) * (y - py)
+      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+      if y < ymin then ymin = y elseif y > ymax then ymax = y end
+      px = x
+      py = y
+    end
+    sum = sum + px * (y1 - py)
+    xmin = xmin + 0.0
+    xmax = xmax + 0.0
+    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
+    -- luacheck: ignore 581 (NaN must count as non-finite)
+    if not ((sum - sum) + spanX + spanY < huge) and holdsNonFinite(points, n) then return nil end
+    -- areaSignOf's test (see there) with xSq = m spanX^2 and dSq = m spanY^2: its bound k^2 xSq
+    -- dSq is the square of k m spanX spanY, which takes fewer operations (and underflows alike)
+    local bound = (m + 8) * 2^-50 * m * spanX * spanY
+    if not (sum * sum > bound * bound) then   -- luacheck: ignore 581 (NaN: not trusted)
+      shoelaceExact(points, n)
+      sum = expSign()
+    end
+    if sum > 0 then return 1.0, xmin, xmax, ymin, ymax end
+    if sum < 0 then return -1.0, xmin, xmax, ymin, ymax end
+    return 0.0, xmin, xmax, ymin, ymax
+  end
 end
 
 --------------------------------------------------------------------------------------------------
@@ -1536,16 +1557,7 @@ if JIT then
     return lo, hi
   end
   minProjection = projectRange   -- (its second result unused)
-else
-  projectRange = function(points, n, ax, ay, nx, ny)
-    local lo, hi = huge, -huge
-    for i = 1, n - 1, 2 do
-      local s = nx * (points[i] - ax) + ny * (points[i + 1] - ay)
-      if s < lo then lo = s end
-      if s > hi then hi = s end
-    end
-    return lo, hi
-  end
+else   -- (PUC Lua's projectRange is written out in faceAndFar, its one caller there)
   minProjection = function(points, n, ax, ay, nx, ny)
     local lo = huge
     for i = 1, n - 1, 2 do
@@ -1580,8 +1592,10 @@ end
 -- trace, "leaving loop in root trace") sends every vertex to crossExact, whose stage B decides
 -- all but exactly collinear ones with inexact differences (through cross, the vertices near the
 -- line took its filter's side exit, and those side traces failed to compile too). On PUC Lua one
--- pass returns at the first vertex surely inside, and calls cross only for the vertices the
--- filter cannot place (on a touching pair's shared edge the second pass took a third of this).
+-- pass returns at the first vertex surely inside, and calls crossExact only for the vertices
+-- the filter cannot place (on a touching pair's shared edge the second pass took a third of
+-- this): cross's own filter, on the same products turned by `inside`, could not place them
+-- either, short of a det exactly at its bound, whose sign crossExact gives too.
 local vertexInside
 if JIT then
   vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
@@ -1609,14 +1623,22 @@ else
     -- (the filter without abs: the bound CROSS_BOUND (|l| + |r|) rounds to the larger of |t|,
     -- t = CROSS_BOUND (l + r), and that bound times |det|, which is below |det|: so det - bound
     -- > 0 exactly when det > t and det > -t, and det + bound <= 0 exactly when neither holds)
+    local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
     for i = 1, n - 1, 2 do
-      local px, py = points[i] + 0.0, points[i + 1] + 0.0
+      -- (as read: cx and cy are doubles, so the differences convert a Lua 5.3+ integer, and
+      -- crossExact takes what cross takes)
+      local px, py = points[i], points[i + 1]
       local l, r = ex * (py - cy), ey * (px - cx)
-      local det, t = l - r, CROSS_BOUND * (l + r)
-      if det > t then
-        if det > -t or cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then return true end
-      elseif det > -t and cross(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
-        return true
+      local det, t = l - r, crossBound * (l + r)
+      if det > t or det > -t then   -- not surely outside
+        if det > t and det > -t then return true end   -- surely inside
+        -- The exact sign, short of the zeros known without it: p = c, and p = b on the line
+        -- through a (c = a), the far end of a touching pair's shared edge (half of crossExact's
+        -- calls from here on the benchmark's mixed pairs, 51 of 101)
+        if (px ~= cx or py ~= cy) and (px ~= bx or py ~= by or cx ~= ax or cy ~= ay)
+            and crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
+          return true
+        end
       end
     end
     return false
@@ -1658,13 +1680,6 @@ end
 -- could not be compiled ("NYI: register coalescing too complex"); a loop of some 50 steps
 -- compiles, and the flat loop took 0.34 of the tutorial's time where the nested ones took 0.41
 -- (`luajit bench/isolated.lua polygonsCollideV`). PUC Lua runs reachBoth instead, below.
-
--- Whether other reaches past the edge of `edges` ending at vertex index k, decided exactly.
-local function edgeReached(edges, ne, turn, other, no, k)
-  local j = k == 1 and ne - 1 or k - 2
-  local ax, ay = edges[j], edges[j + 1]
-  return vertexInside(ax, ay, edges[k], edges[k + 1], ax, ay, turn, other, no)
-end
 
 -- reachPast's and reachBoth's tolerance for polygons within a box of sides spanX and spanY:
 -- (16 eps)^2 (spanX^2 + spanY^2), or every axis decided exactly where that square would
@@ -1730,6 +1745,14 @@ else
   -- the benchmark's mixed pairs with it, 1,297 with a calipers walk per polygon (the tutorial:
   -- 1,865). (On LuaJIT the choice of edge, a data-dependent branch per edge, would be a side
   -- trace, as the walks' exits were.)
+
+  -- Whether other reaches past the edge of `edges` ending at vertex index k, decided exactly.
+  local function edgeReached(edges, ne, turn, other, no, k)
+    local j = k == 1 and ne - 1 or k - 2
+    local ax, ay = edges[j], edges[j + 1]
+    return vertexInside(ax, ay, edges[k], edges[k + 1], ax, ay, turn, other, no)
+  end
+
   reachBoth = function(p1, n1, turn1, p2, n2, turn2, tolSq)
     -- each edge is known by a key: its end's index in p1, or n1 + its end's index in p2, so
     -- that the order of keys is the order of the ties' rule
@@ -1758,22 +1781,30 @@ else
     local dn = d + step
     if dn > n2 then dn = 1 elseif dn < 1 then dn = n2 - 1 end
     local dx, dy, dnx, dny = p2[d] + 0.0, p2[d + 1] + 0.0, p2[dn] + 0.0, p2[dn + 1] + 0.0
-    local fx, fy = dx - dnx, dy - dny
-    local left1, left2 = n1 / 2, n2 / 2
+    -- f is kept turned by turn1 (exact): the cross product below needs no turn then, and -f's
+    -- outward normal is (-fy, fx)
+    local fx, fy = (dx - dnx) * turn1, (dy - dny) * turn1
+    -- the coordinates of each polygon's edges still to take, an integer on Lua 5.3+ as the
+    -- loop's count (n1 / 2 would be a float)
+    local left1, left2 = n1, n2
     local back = -turn1
-    local key
+    -- the key of p2's edge from d is keyAhead + d (its end is dn when p2 is taken forwards, d
+    -- backwards), but n1 + 1 past keyWrap (dn wrapped round to 1)
+    local keyAhead, keyWrap = n1 + (step > 0 and 2 or 0), n1 + n2
+    local key, squaredNormal
     -- (one assignment per statement in this loop: Lua 5.4 gives a multiple assignment a move
     -- through a temporary per value, which here was a tenth of the loop)
-    for _ = 1, left1 + left2 do
-      -- the next edge's outward normal n, the least projection lo on it of the other polygon
-      -- (from its current vertex), the edge's key; then its polygon moves on
-      local turnOn = (ex * fy - ey * fx) * turn1   -- > 0: f turns on from e
-      if left2 == 0 or left1 > 0 and (turnOn > 0 or turnOn == 0 and (fx ~= 0 or fy ~= 0)) then
+    for _ = 2, n1 + n2, 2 do
+      -- the next edge's squared outward normal and the least projection lo on that normal of the
+      -- other polygon (from its current vertex), the edge's key; then its polygon moves on
+      local turnOn = ex * fy - ey * fx   -- > 0: f turns on from e
+      if left1 > 0 and (turnOn > 0 or turnOn == 0 and (fx ~= 0 or fy ~= 0)) or left2 == 0 then
         nx = ey * turn1
         ny = ex * back
+        squaredNormal = nx * nx + ny * ny
         lo = nx * (dx - cx) + ny * (dy - cy)
         key = kn
-        left1 = left1 - 1
+        left1 = left1 - 2
         cx = cnx
         cy = cny
         kn = kn + 2
@@ -1783,11 +1814,11 @@ else
         ex = cnx - cx
         ey = cny - cy
       else   -- the edge d -> dn of p2, which is -f
-        nx = fy * back
-        ny = fx * turn1
-        lo = nx * (cx - dx) + ny * (cy - dy)
-        key = n1 + (step > 0 and dn or d)
-        left2 = left2 - 1
+        squaredNormal = fy * fy + fx * fx
+        lo = fx * (cy - dy) - fy * (cx - dx)
+        key = keyAhead + d
+        if key > keyWrap then key = n1 + 1 end
+        left2 = left2 - 2
         d = dn
         dx = dnx
         dy = dny
@@ -1795,12 +1826,12 @@ else
         if dn > n2 then dn = 1 elseif dn < 1 then dn = n2 - 1 end
         dnx = p2[dn] + 0.0
         dny = p2[dn + 1] + 0.0
-        fx = dx - dnx
-        fy = dy - dny
+        fx = (dx - dnx) * turn1
+        fy = (dy - dny) * turn1
       end
       -- (a repeated vertex gives no axis: n = 0, lo = 0, and the squared depth 0 / 0 is NaN,
       -- which every comparison below passes by)
-      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
+      local squaredDepth = lo * (lo / squaredNormal)
       if squaredDepth <= tolSq then   -- decide exactly
         if key < n1 and not edgeReached(p1, n1, turn1, p2, n2, key)
             or key > n1 and not edgeReached(p2, n2, turn2, p1, n1, key - n1) then
@@ -1810,7 +1841,7 @@ else
       elseif lo > 0 then   -- surely apart
         return false
       end
-      if squaredDepth < least or squaredDepth == least and key < leastKey then
+      if squaredDepth <= least and (squaredDepth < least or key < leastKey) then
         least = squaredDepth
         leastOverlap = -lo
         leastKey = key
@@ -1855,9 +1886,22 @@ if JIT then
     return -lo, hi - own
   end
 else
+  -- projectRange's and minProjection's loops written out, not called: two calls an edge
+  -- (polygonCollidesWith on Lua 5.4, the benchmark's mixed pairs: 1,614 VM instructions per
+  -- call with the calls, 1,531 without, `lua5.4 bench/instructions.lua polygonCollidesWith`)
   faceAndFar = function(edges, ne, other, no, ax, ay, nx, ny)
-    local lo, hi = projectRange(other, no, ax, ay, nx, ny)
-    return -lo, hi - minProjection(edges, ne, ax, ay, nx, ny)
+    local lo, hi = huge, -huge
+    for i = 1, no - 1, 2 do
+      local s = nx * (other[i] - ax) + ny * (other[i + 1] - ay)
+      if s < lo then lo = s end
+      if s > hi then hi = s end
+    end
+    local own = huge
+    for i = 1, ne - 1, 2 do
+      local s = nx * (edges[i] - ax) + ny * (edges[i + 1] - ay)
+      if s < own then own = s end
+    end
+    return -lo, hi - own
   end
 end
 
@@ -1931,13 +1975,28 @@ end
 
 -- The unit vector along (nx, ny) and the length of (nx, ny), scaled first by the larger
 -- component so that neither squaring overflows nor underflows. (nx, ny) must not be (0, 0).
-local function unit(nx, ny)
-  -- max, not a branch: on LuaJIT the branch's side exits, taken for half of all directions, were
-  -- side traces of the callers' big traces (max(|ny|, |nx|) keeps |ny| on ties, as the branch did)
-  local m = max(abs(ny), abs(nx))
-  nx, ny = nx / m, ny / m
-  local len = sqrt(nx * nx + ny * ny)
-  return nx / len, ny / len, len * m
+-- Two bodies computing the same numbers: max, not a branch, on LuaJIT (the branch's side exits,
+-- taken for half of all directions, were side traces of the callers' big traces; max(|ny|, |nx|)
+-- keeps |ny| on ties, as the branch did); comparisons on PUC Lua, where abs and max are three
+-- C calls (|x| of -0 is -0 there, never the larger of the two: (nx, ny) is not (0, 0)).
+local unit
+if JIT then
+  unit = function(nx, ny)
+    local m = max(abs(ny), abs(nx))
+    nx, ny = nx / m, ny / m
+    local len = sqrt(nx * nx + ny * ny)
+    return nx / len, ny / len, len * m
+  end
+else
+  unit = function(nx, ny)
+    local m = ny < 0 and -ny or ny
+    local mx = nx < 0 and -nx or nx
+    if m < mx then m = mx end
+    nx = nx / m
+    ny = ny / m
+    local len = sqrt(nx * nx + ny * ny)
+    return nx / len, ny / len, len * m
+  end
 end
 
 -- Below 2^464 the products of two coordinate differences (each below 2^466 after scaling)
@@ -1960,44 +2019,46 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 --     index base, with `inside` the cross product's sign on the side the other must leave.
 local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if n1 < 6 or n2 < 6 then return false end
-  -- Each polygon's sums, then at once its turn, the sign of its area decided exactly, so that
-  -- only the sign and the box are kept while the other's sums are taken (on LuaJIT fewer values
-  -- for a side trace to inherit). A NaN or infinity makes the sums non-finite; so does overflow,
-  -- which is not an error.
-  local area1, xSq1, dSq1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
-  -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (xSq1 + dSq1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
-  local turn1 = areaSignOf(p1, n1, area1, xSq1, dSq1)
-  local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
-  -- luacheck: ignore 581 (NaN must count as non-finite)
-  if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
-  -- Between the loops, the same numbers in two forms, as in shoelaceBounds: on LuaJIT min,
-  -- max and a division, which have no side exits (the branches' exits were side traces of
-  -- shoelaceBounds' loop, past LuaJIT's 100 per loop); on PUC Lua comparisons, which cost no call.
-  -- The boxes are apart or touching (so are the polygons) when a difference is <= 0; no
+  -- Each polygon's turn, the sign of its area decided exactly, 1 or -1 (zero area never
+  -- collides), and the sizes bounding every |vx - ax| and |vy - ay| in the projections: the box
+  -- around both. A NaN or infinity makes the sums non-finite; so does overflow, which is not an
+  -- error. The boxes are apart or touching (so are the polygons) when a difference is <= 0; no
   -- subtraction of finite doubles rounds across 0.
-  if both then
-    local gap
-    if JIT then
-      gap = min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1)
-    else
-      gap = (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) and 0 or 1
-    end
-    if gap <= 0 then return false end   -- (the one-sided test may still see overlap)
-  end
-  -- zero area never collides
-  if turn1 == 0 then return false end
-  local turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
-  if turn2 == 0 then return false end
-  -- Signs, not magnitudes; and the sizes bounding every |vx - ax| and |vy - ay| in the
-  -- projections: the box around both. (A sure sign is finite: areaSignOf sends an infinite sum
-  -- to the exact path; so t / |t| is 1 or -1 exactly.)
-  local spanX, spanY
+  local turn1, turn2, spanX, spanY
   if JIT then
+    -- Each polygon's sums, then at once its turn, so that only the sign and the box are kept
+    -- while the other's sums are taken (fewer values for a side trace to inherit). Between the
+    -- loops min, max and a division, which have no side exits (the branches' exits were side
+    -- traces of shoelaceBounds' loop, past LuaJIT's 100 per loop).
+    local area1, xSq1, dSq1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
+    -- luacheck: ignore 581 (NaN must count as non-finite)
+    if not (xSq1 + dSq1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+    turn1 = areaSignOf(p1, n1, area1, xSq1, dSq1)
+    local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
+    -- luacheck: ignore 581 (NaN must count as non-finite)
+    if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+    if both and min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1) <= 0 then
+      return false   -- (the one-sided test may still see overlap)
+    end
+    if turn1 == 0 then return false end
+    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
+    if turn2 == 0 then return false end
+    -- (a sure sign is finite: areaSignOf sends an infinite sum to the exact path; so t / |t|
+    -- is 1 or -1 exactly)
     turn1, turn2 = turn1 / abs(turn1), turn2 / abs(turn2)
     spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
   else
-    turn1, turn2 = turn1 > 0 and 1.0 or -1.0, turn2 > 0 and 1.0 or -1.0
+    -- PUC Lua: both in one call per polygon, comparisons instead of min and max (calls here)
+    local sign1, xmin1, xmax1, ymin1, ymax1 = turnAndBounds(p1, n1)
+    if not sign1 then return nil, "points1" end
+    local sign2, xmin2, xmax2, ymin2, ymax2 = turnAndBounds(p2, n2)
+    if not sign2 then return nil, "points2" end
+    if both and (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) then
+      return false   -- (the one-sided test may still see overlap)
+    end
+    if sign1 == 0 or sign2 == 0 then return false end
+    turn1 = sign1
+    turn2 = sign2
     spanX = (xmax1 > xmax2 and xmax1 or xmax2) - (xmin1 < xmin2 and xmin1 or xmin2)
     spanY = (ymax1 > ymax2 and ymax1 or ymax2) - (ymin1 < ymin2 and ymin1 or ymin2)
   end
@@ -2068,17 +2129,17 @@ local function pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
     dx - lx, dy - ly
 end
 
--- separatingPush's check of one push along (ux, uy): the largest det + bound over the vertices
--- p of points moved by the push, where det is e x (p - q) turned to be > 0 on the side `inside`
--- (e premultiplied by that sign, which is exact) and bound is cross's error bound, its filter
--- inlined (a call per vertex is most of the loop's time on PUC Lua). No vertex is inside when
--- it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better of
--- the two kept. On LuaJIT the loop is branch-free and takes the line from pushLine in every
--- step: LuaJIT hoists those loads and products out of its compiled loop, and a side trace that
--- leaves the loop midway (a trace that ran on into it before it was compiled had unrolled it)
--- inherits only the push from its parent. With the line's eight numbers held across the loop
--- such side traces needed more registers than there are ("NYI: register coalescing too complex",
--- retried on every push, `luajit bench/isolated.lua polygonsCollideV`).
+-- separatingPush's check of one push along (ux, uy), on LuaJIT (PUC Lua's is written out in its
+-- separatingPush, below): the largest det + bound over the vertices p of points moved by the
+-- push, where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that
+-- sign, which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside
+-- when it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better
+-- of the two kept. The loop is branch-free and takes the line from pushLine in every step:
+-- LuaJIT hoists those loads and products out of its compiled loop, and a side trace that leaves
+-- the loop midway (a trace that ran on into it before it was compiled had unrolled it) inherits
+-- only the push from its parent. With the line's eight numbers held across the loop such side
+-- traces needed more registers than there are ("NYI: register coalescing too complex", retried
+-- on every push, `luajit bench/isolated.lua polygonsCollideV`).
 local lineShortfall
 if JIT then
   lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
@@ -2092,31 +2153,6 @@ if JIT then
       local lb, rb = ex * (py - qby), ey * (px - qbx)
       worst = max(worst, min(l - r + CROSS_BOUND * (abs(l) + abs(r)),
         lb - rb + CROSS_BOUND * (abs(lb) + abs(rb))))
-    end
-    return worst
-  end
-else
-  lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
-    local ex, ey, qx, qy, qbx, qby, dx, dy =
-      pushLine(lines, ia, ib, base, second, lineMoves, ux * push + 0.0, uy * push + 0.0)
-    ex, ey = ex * inside, ey * inside
-    local worst = 0.0
-    for i = 1, n - 1, 2 do
-      local px, py = points[i] + dx, points[i + 1] + dy
-      local l, r = ex * (py - qy), ey * (px - qx)
-      -- first without abs: the bound's |l| + |r| is |l + r| or |l - r|, the larger; det <= -t
-      -- and det <= t, t = CROSS_BOUND (l + r), put the vertex surely on the line or outside
-      -- (its reach <= 0 <= worst), as most vertices are
-      local det, t = l - r, CROSS_BOUND * (l + r)
-      if det > t or det > -t then
-        local reach = det + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-        if reach > worst then
-          l, r = ex * (py - qby), ey * (px - qbx)
-          local fromB = l - r + CROSS_BOUND * ((l < 0 and -l or l) + (r < 0 and -r or r))
-          if fromB < reach then reach = fromB end
-          if reach > worst then worst = reach end
-        end
-      end
     end
     return worst
   end
@@ -2137,30 +2173,87 @@ local PUSH_ROUNDS = 64
 -- the bound and the rounding allowance at it, and the check runs again. Deciding such vertices
 -- exactly instead would cost an expansion at nearly every push: its vertex ends on the line.
 -- Returns push length, dx, dy.
-local function separatingPush(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
-  if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
-  local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
-  if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
-  local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
-  local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
-  -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
-  -- allowance for it, none on the first check, then that, doubling every further round
-  local allowance = 0.0
-  local push = depth   -- first as it is: an exact move along an axis keeps it exact
-  for _ = 1, PUSH_ROUNDS do
-    local worst = lineShortfall(lines, ia, edgeEnd, base, second, lineMoves, ux, uy, push, inside,
-      others, no)
-    if worst == 0 then return push, ux * push + 0.0, uy * push + 0.0 end   -- + 0.0: -0 to 0
-    -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
-    -- fell short lies, to within the polygons' size), doubled every round
-    local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, second, lineMoves,
-      ux * push + 0.0, uy * push + 0.0)
-    allowance = allowance == 0 and EPS * (abs(qx * ux) + abs(qy * uy)) or 2 * allowance
-    push = push + worst / sqrt(ex * ex + ey * ey) + allowance
-    -- only far outside the exact range can the check's products overflow: keep the depth
-    if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
+-- Two bodies computing the same push. On PUC Lua the check (lineShortfall's, with pushLine's
+-- line) is written out in the loop over the rounds, and its filter is tried first without abs,
+-- which places most vertices: with the calls (twelve arguments for the check, pushLine's eight
+-- results, abs) the push took 395 VM instructions per overlapping pair of the benchmark on Lua
+-- 5.4, 313 so (`lua5.4 bench/instructions.lua`, the push's share counted by a count hook).
+local separatingPush
+if JIT then
+  separatingPush = function(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+    if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
+    local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
+    if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
+    local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+    local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
+    -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
+    -- allowance for it, none on the first check, then that, doubling every further round
+    local allowance = 0.0
+    local push = depth   -- first as it is: an exact move along an axis keeps it exact
+    for _ = 1, PUSH_ROUNDS do
+      local worst = lineShortfall(lines, ia, edgeEnd, base, second, lineMoves, ux, uy, push,
+        inside, others, no)
+      if worst == 0 then return push, ux * push + 0.0, uy * push + 0.0 end   -- + 0.0: -0 to 0
+      -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
+      -- fell short lies, to within the polygons' size), doubled every round
+      local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, second, lineMoves,
+        ux * push + 0.0, uy * push + 0.0)
+      allowance = allowance == 0 and EPS * (abs(qx * ux) + abs(qy * uy)) or 2 * allowance
+      push = push + worst / sqrt(ex * ex + ey * ey) + allowance
+      -- only far outside the exact range can the check's products overflow: keep the depth
+      if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
+    end
+    return depth, ux * depth + 0.0, uy * depth + 0.0
   end
-  return depth, ux * depth + 0.0, uy * depth + 0.0
+else
+  separatingPush = function(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
+    if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
+    local lines, nl, points, n, lineMoves = p1, n1, p2, n2, 0.0
+    if owner == 2 then lines, nl, points, n, lineMoves = p2, n2, p1, n1, 1.0 end
+    local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
+    local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
+    local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
+    local allowance = 0.0   -- as on LuaJIT
+    local push = depth
+    for _ = 1, PUSH_ROUNDS do
+      -- the line and the move of points' vertices, as pushLine gives them, e turned by inside
+      local dx, dy = ux * push + 0.0, uy * push + 0.0
+      local lx, ly = dx * lineMoves, dy * lineMoves
+      local ex = ((lines[edgeEnd] + lx) - (lines[ia] + lx)) * inside
+      local ey = ((lines[edgeEnd + 1] + ly) - (lines[ia + 1] + ly)) * inside
+      local qx, qy = lines[base] + lx, lines[base + 1] + ly
+      local qbx, qby = lines[second] + lx, lines[second + 1] + ly
+      local vx, vy = dx - lx, dy - ly
+      local worst = 0.0
+      for i = 1, n - 1, 2 do
+        local px, py = points[i] + vx, points[i + 1] + vy
+        local l, r = ex * (py - qy), ey * (px - qx)
+        -- first without abs: the bound's |l| + |r| is |l + r| or |l - r|, the larger; det <= -t
+        -- and det <= t, t = CROSS_BOUND (l + r), put the vertex surely on the line or outside
+        -- (its reach <= 0 <= worst), as most vertices are
+        local det, t = l - r, crossBound * (l + r)
+        if det > t or det > -t then
+          local reach = det + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
+          if reach > worst then
+            l, r = ex * (py - qby), ey * (px - qbx)
+            local fromB = l - r + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
+            if fromB < reach then reach = fromB end
+            if reach > worst then worst = reach end
+          end
+        end
+      end
+      if worst == 0 then return push, dx, dy end
+      local qxu, qyu = qx * ux, qy * uy
+      if allowance == 0 then
+        allowance = EPS * ((qxu < 0 and -qxu or qxu) + (qyu < 0 and -qyu or qyu))
+      else
+        allowance = 2 * allowance
+      end
+      push = push + worst / sqrt(ex * ex + ey * ey) + allowance
+      if not (push < huge) then break end   -- luacheck: ignore 581 (NaN too)
+    end
+    return depth, ux * depth + 0.0, uy * depth + 0.0
+  end
 end
 
 -- Raises the error for a non-finite coordinate at the caller of the public function, which
