@@ -4704,7 +4704,7 @@ if JIT then
   end
 else
   pairFaces = function(p1, n1, turn1, normals1, internal1, p2, n2, turn2, normals2, internal2,
-                       k, spanX, spanY, top)
+                       k, spanX, spanY, top, boxes1, a, boxes2, b)
     local separated = false
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
     local lift, foot, footReach = faceLift, nearestFoot, nearestReach
@@ -4717,6 +4717,7 @@ else
     -- Lua 5.4 moves a multiple assignment through a temporary per value)
     local edges, ne, turn, normals, internal, other, no, sense =
       p1, n1, turn1, normals1, internal1, p2, n2, 1.0
+    local otherBoxes, o = boxes2, b
     for side = 1, 2 do
       if side == 2 then
         edges = p2
@@ -4727,15 +4728,37 @@ else
         other = p1
         no = n1
         sense = -1.0
+        otherBoxes = boxes1
+        o = a
       end
-      local quad = no == 8 and not scaled
+      local quad = no == 8
+      -- the other part's box (exact: its least and greatest coordinates, as floats)
+      local oxmin, oymin = otherBoxes[o - 3], otherBoxes[o - 2]
+      local oxmax, oymax = otherBoxes[o - 1], otherBoxes[o]
       local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
       for i = 1, ne - 1, 2 do
         local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
         if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
           local ux, uy = normals[i], normals[i + 1]
           local lo
-          if quad then
+          if scaled then   -- the same numbers as unscaled where k is 1
+            lo = huge
+            local kax, kay = ax * k, ay * k
+            for j = 1, no - 1, 2 do
+              local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+              if s < lo then lo = s end
+            end
+          elseif uy == 0 then
+            -- An axis-parallel edge (a tile's, a box's): its unit normal is exactly (1, 0) or
+            -- (-1, 0) up to the zero's sign (unit's scaling), so each projection is
+            -- +-(vx - ax) up to the sign of a zero, and rounding is monotonic: the least is
+            -- the other part's box side less ax, the same number minProjection gives (a zero's
+            -- sign aside, which nothing after reads: lo only meets sums with lift and margin,
+            -- both > 0, and comparisons), by one subtraction instead of a projection a vertex.
+            if ux > 0 then lo = oxmin - ax else lo = ax - oxmax end
+          elseif ux == 0 then   -- the same along y
+            if uy > 0 then lo = oymin - ay else lo = ay - oymax end
+          elseif quad then
             -- a quadrilateral (a tile, a box): minProjection's loop unrolled, the same numbers
             -- (the first s is finite, so lo = s is what s < huge gives): constant indices and
             -- no loop steps, 32 VM instructions where the loop takes 46 (Lua 5.4)
@@ -4746,13 +4769,6 @@ else
             if s < lo then lo = s end
             s = ux * (other[7] - ax) + uy * (other[8] - ay)
             if s < lo then lo = s end
-          elseif scaled then   -- the same numbers as unscaled where k is 1
-            lo = huge
-            local kax, kay = ax * k, ay * k
-            for j = 1, no - 1, 2 do
-              local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
-              if s < lo then lo = s end
-            end
           else   -- minProjection's loop, without the call's instructions
             lo = huge
             for j = 1, no - 1, 2 do
@@ -4970,7 +4986,7 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   faceFirst[np + 1] = top + 1
   local overlaps
   top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
-    p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top)
+    p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b)
   faceFirst[np + 2] = top + 1
   if JIT then pairPart1[np + 1], pairPart2[np + 1] = i, j end
   return np + 1, top, overlaps
