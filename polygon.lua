@@ -4277,9 +4277,17 @@ else
     local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
     for i = 1, n - 1, 2 do
       local bx, by = part[i] + 0.0, part[i + 1] + 0.0
-      if bx ~= ax or by ~= ay then
-        local ux = (by - ay) * turn
-        local uy = (ax - bx) * turn
+      local ux = (by - ay) * turn
+      local uy = (ax - bx) * turn
+      if uy == 0 and ux ~= 0 then
+        -- a vertical edge (a tile's, a box's): what the lines below give, (+-1, uy), uy a
+        -- zero of turn's sign, without their division and square root
+        normals[i] = ux > 0 and 1.0 or -1.0
+        normals[i + 1] = uy
+      elseif ux == 0 and uy ~= 0 then   -- a horizontal one
+        normals[i] = ux
+        normals[i + 1] = uy > 0 and 1.0 or -1.0
+      elseif bx ~= ax or by ~= ay then
         local m = uy   -- max(|uy|, |ux|)
         if m < 0 then m = -m end
         local mx = ux
