@@ -4218,6 +4218,19 @@ end
 -- PUC Lua, in the loop over every part). A flat array is seen through one of two scratch views,
 -- filled on every call.
 
+-- 1 when points[1 .. n] is a rectangle with axis-parallel sides whose edge into vertex 1 is
+-- vertical, 2 when that edge is horizontal, else 0, as the coordinates' floats give it (its
+-- box xmin < xmax, ymin < ymax: no side has length 0). Such a part's faces take no projection
+-- (pairFaces).
+local function rectKind(points, n, xmin, ymin, xmax, ymax)
+  if n ~= 8 or not (xmin < xmax and ymin < ymax) then return 0 end
+  local x1, y1, x2, y2 = points[1] + 0.0, points[2] + 0.0, points[3] + 0.0, points[4] + 0.0
+  local x3, y3, x4, y4 = points[5] + 0.0, points[6] + 0.0, points[7] + 0.0, points[8] + 0.0
+  if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then return 1 end
+  if y4 == y1 and x1 == x2 and y2 == y3 and x3 == x4 then return 2 end
+  return 0
+end
+
 -- The box of part k (n coordinates) of a list into view.boxes and its record; false when a
 -- coordinate is inf or NaN.
 local function partBox(view, k, part, n)
@@ -4237,6 +4250,7 @@ local function partBox(view, k, part, n)
   boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
   record[1], record[2], record[3], record[4] = xmin, ymin, xmax, ymax
   record[5], record[6], record[7], record[8] = ixmin, iymin, ixmax, iymax
+  view.rects[k] = finite == 0 and rectKind(part, n, xmin, ymin, xmax, ymax) or 0
   return finite == 0
 end
 
@@ -4328,7 +4342,7 @@ end
 local function prepareParts(fname, argname, parts)
   local count = #parts
   local info = { count = count, lengths = {}, internal = {}, copies = {}, boxes = {}, turns = {},
-                 normals = {}, records = {}, checked = {} }
+                 normals = {}, records = {}, checked = {}, rects = {} }
   for k = 1, count do
     local part = parts[k]
     local n = #part
@@ -4483,7 +4497,7 @@ end
 -- larger array comes (once, never shrunk).
 local function newFlatView()
   return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {},
-           turns = {}, normals = { {} }, pending = false, turnPending = false }
+           turns = {}, normals = { {} }, rects = { 0 }, pending = false, turnPending = false }
 end
 local flatView1, flatView2 = newFlatView(), newFlatView()
 
@@ -4538,6 +4552,15 @@ else
       xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
     end
     view.magnitude, view.left, view.top, view.right, view.bottom = magnitude, xmin, ymin, xmax, ymax
+    -- a rectangle's area sign from comparisons: twice its area is 2 (x2 - x1) (y3 - y1) for
+    -- kind 1, -2 (x3 - x1) (y2 - y1) for kind 2 (flatView then computes no area sign)
+    local rect = finite == 0 and rectKind(shape, n, xmin, ymin, xmax, ymax) or 0
+    view.rects[1] = rect
+    if rect == 1 then
+      view.turns[1] = (shape[3] + 0.0 > shape[1] + 0.0) == (shape[6] + 0.0 > shape[2] + 0.0) and 1.0 or -1.0
+    elseif rect == 2 then
+      view.turns[1] = (shape[5] + 0.0 > shape[1] + 0.0) == (shape[4] + 0.0 > shape[2] + 0.0) and -1.0 or 1.0
+    end
     return finite == 0
   end
 end
@@ -4560,7 +4583,7 @@ local function flatView(fname, argname, shape, view)
     for i = view.edgeRoom + 1, n do flags[i] = 0 end
     view.edgeRoom = n
   end
-  view.lengths[1], view.pending, view.turnPending = n, true, true
+  view.lengths[1], view.pending, view.turnPending = n, true, view.rects[1] == 0
   if JIT then shapeBox(view) end   -- PUC Lua: flatBox did
   return view
 end
@@ -4712,7 +4735,7 @@ if JIT then
   end
 else
   pairFaces = function(p1, n1, turn1, normals1, internal1, p2, n2, turn2, normals2, internal2,
-                       k, spanX, spanY, top, boxes1, a, boxes2, b)
+                       k, spanX, spanY, top, boxes1, a, boxes2, b, rect1, rect2)
     local separated = false
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
     local lift, foot, footReach = faceLift, nearestFoot, nearestReach
@@ -4725,7 +4748,7 @@ else
     -- Lua 5.4 moves a multiple assignment through a temporary per value)
     local edges, ne, turn, normals, internal, other, no, sense =
       p1, n1, turn1, normals1, internal1, p2, n2, 1.0
-    local otherBoxes, o = boxes2, b
+    local ownBoxes, e, otherBoxes, o, rect = boxes1, a, boxes2, b, rect1
     for side = 1, 2 do
       if side == 2 then
         edges = p2
@@ -4736,57 +4759,111 @@ else
         other = p1
         no = n1
         sense = -1.0
+        ownBoxes = boxes2
+        e = b
         otherBoxes = boxes1
         o = a
+        rect = rect2
       end
       local quad = no == 8
       -- the other part's box (exact: its least and greatest coordinates, as floats)
       local oxmin, oymin = otherBoxes[o - 3], otherBoxes[o - 2]
       local oxmax, oymax = otherBoxes[o - 1], otherBoxes[o]
+      -- An axis-parallel rectangle (see rectKind): its faces without reading its vertices or
+      -- normals. Each side's least projection is the axis-parallel edge's below (the same
+      -- number); its edges alternate between vertical and horizontal sides (a vertical one
+      -- first for rect 1), the first vertical one at v1's x, the first horizontal one at v1's y.
+      local vertical, loX, loX2, nx, loY, loY2, ny = rect == 1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+      if scaled then
+        rect = 0
+      elseif rect ~= 0 then
+        local exmin, eymin = ownBoxes[e - 3], ownBoxes[e - 2]
+        loX = exmin - oxmax   -- the left side's (outward normal (-1, 0)), then the right's
+        loX2 = oxmin - ownBoxes[e - 1]
+        nx = -1.0
+        if edges[1] + 0.0 ~= exmin then
+          loX2 = loX
+          loX = oxmin - ownBoxes[e - 1]
+          nx = 1.0
+        end
+        loY = eymin - oymax   -- the top side's (outward normal (0, -1)), then the bottom's
+        loY2 = oymin - ownBoxes[e]
+        ny = -1.0
+        if edges[2] + 0.0 ~= eymin then
+          loY2 = loY
+          loY = oymin - ownBoxes[e]
+          ny = 1.0
+        end
+      end
       local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
       for i = 1, ne - 1, 2 do
-        local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-        if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-          local ux, uy = normals[i], normals[i + 1]
-          local lo
-          if scaled then   -- the same numbers as unscaled where k is 1
-            lo = huge
-            local kax, kay = ax * k, ay * k
-            for j = 1, no - 1, 2 do
-              local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+        local ux, uy, lo
+        if rect ~= 0 then
+          if vertical then
+            ux = nx
+            uy = 0.0
+            lo = loX
+            nx = -nx   -- the next vertical side is the opposite one
+            loX = loX2
+          else
+            ux = 0.0
+            uy = ny
+            lo = loY
+            ny = -ny
+            loY = loY2
+          end
+          vertical = not vertical
+          -- the side separates exactly when the other part lies beyond it or on its line
+          if lo >= 0 then separated = true end
+        else
+          local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+          if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+            ux = normals[i]
+            uy = normals[i + 1]
+            if scaled then   -- the same numbers as unscaled where k is 1
+              lo = huge
+              local kax, kay = ax * k, ay * k
+              for j = 1, no - 1, 2 do
+                local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+                if s < lo then lo = s end
+              end
+            elseif uy == 0 then
+              -- An axis-parallel edge (a tile's, a box's): its unit normal is exactly (1, 0) or
+              -- (-1, 0) up to the zero's sign (unit's scaling), so each projection is
+              -- +-(vx - ax) up to the sign of a zero, and rounding is monotonic: the least is
+              -- the other part's box side less ax, the same number minProjection gives (a
+              -- zero's sign aside, which nothing after reads: lo only meets sums with lift and
+              -- margin, both > 0, and comparisons), by one subtraction instead of a projection
+              -- a vertex.
+              if ux > 0 then lo = oxmin - ax else lo = ax - oxmax end
+            elseif ux == 0 then   -- the same along y
+              if uy > 0 then lo = oymin - ay else lo = ay - oymax end
+            elseif quad then
+              -- a quadrilateral: minProjection's loop unrolled, the same numbers (the first s
+              -- is finite, so lo = s is what s < huge gives): constant indices and no loop
+              -- steps, 32 VM instructions where the loop takes 46 (Lua 5.4)
+              lo = ux * (other[1] - ax) + uy * (other[2] - ay)
+              local s = ux * (other[3] - ax) + uy * (other[4] - ay)
               if s < lo then lo = s end
+              s = ux * (other[5] - ax) + uy * (other[6] - ay)
+              if s < lo then lo = s end
+              s = ux * (other[7] - ax) + uy * (other[8] - ay)
+              if s < lo then lo = s end
+            else   -- minProjection's loop, without the call's instructions
+              lo = huge
+              for j = 1, no - 1, 2 do
+                local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
+                if s < lo then lo = s end
+              end
             end
-          elseif uy == 0 then
-            -- An axis-parallel edge (a tile's, a box's): its unit normal is exactly (1, 0) or
-            -- (-1, 0) up to the zero's sign (unit's scaling), so each projection is
-            -- +-(vx - ax) up to the sign of a zero, and rounding is monotonic: the least is
-            -- the other part's box side less ax, the same number minProjection gives (a zero's
-            -- sign aside, which nothing after reads: lo only meets sums with lift and margin,
-            -- both > 0, and comparisons), by one subtraction instead of a projection a vertex.
-            if ux > 0 then lo = oxmin - ax else lo = ax - oxmax end
-          elseif ux == 0 then   -- the same along y
-            if uy > 0 then lo = oymin - ay else lo = ay - oymax end
-          elseif quad then
-            -- a quadrilateral (a tile, a box): minProjection's loop unrolled, the same numbers
-            -- (the first s is finite, so lo = s is what s < huge gives): constant indices and
-            -- no loop steps, 32 VM instructions where the loop takes 46 (Lua 5.4)
-            lo = ux * (other[1] - ax) + uy * (other[2] - ay)
-            local s = ux * (other[3] - ax) + uy * (other[4] - ay)
-            if s < lo then lo = s end
-            s = ux * (other[5] - ax) + uy * (other[6] - ay)
-            if s < lo then lo = s end
-            s = ux * (other[7] - ax) + uy * (other[8] - ay)
-            if s < lo then lo = s end
-          else   -- minProjection's loop, without the call's instructions
-            lo = huge
-            for j = 1, no - 1, 2 do
-              local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
-              if s < lo then lo = s end
+            if not separated and lo >= loBound then
+              separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
             end
           end
-          if not separated and lo >= loBound then
-            separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
-          end
+          ax = bx
+          ay = by
+        end
+        if lo then
           top = top + 1
           fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
           local flag, d = internal[i], lift - lo
@@ -4800,8 +4877,6 @@ else
             foot2, foot2Reach = top, d
           end
         end
-        ax = bx
-        ay = by
       end
     end
     nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
@@ -4966,15 +5041,18 @@ end
 -- parts overlap; on LuaJIT, overlap for sure).
 local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   -- preparePair's work inline (PUC Lua pays for every call): checkCopy's level counts from there
+  -- (a flat rectangle needs no normals unscaled: pairFaces reads none; flatBox gave its sign)
   if view1.copies then
     if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 5) end
   elseif view1.pending then
-    partNormals(view1, 1, p1, #p1); view1.pending = false
+    view1.pending = false
+    if k ~= 1 or view1.rects[1] == 0 then partNormals(view1, 1, p1, #p1) end
   end
   if view2.copies then
     if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 5) end
   elseif view2.pending then
-    partNormals(view2, 1, p2, #p2); view2.pending = false
+    view2.pending = false
+    if k ~= 1 or view2.rects[1] == 0 then partNormals(view2, 1, p2, #p2) end
   end
   local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, 0 end   -- zero area: never collides
@@ -4994,7 +5072,8 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   faceFirst[np + 1] = top + 1
   local overlaps
   top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
-    p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b)
+    p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b,
+    view1.rects[i], view2.rects[j])
   faceFirst[np + 2] = top + 1
   if JIT then pairPart1[np + 1], pairPart2[np + 1] = i, j end
   return np + 1, top, overlaps
