@@ -4231,6 +4231,22 @@ local function rectKind(points, n, xmin, ymin, xmax, ymax)
   return 0
 end
 
+-- The sides of a rectangle of kind rect (rectKind; xmin, ymin its box's), numbered left 1, top
+-- 2, right 3, bottom 4 (outward normals (-1, 0), (0, -1), (1, 0), (0, 1)), into sides: at odd
+-- index i the side of the edge into vertex index i, at i + 1 the opposite side. Its edges
+-- alternate between vertical and horizontal sides (a vertical one first for rect 1), the first
+-- vertical one at v1's x, the first horizontal one at v1's y, then their opposites.
+local function rectSides(sides, points, rect, xmin, ymin)
+  local vertical, horizontal = 1, 2
+  if points[1] + 0.0 ~= xmin then vertical = 3 end
+  if points[2] + 0.0 ~= ymin then horizontal = 4 end
+  local first, second = horizontal, vertical
+  if rect == 1 then first, second = vertical, horizontal end
+  local third, fourth = (first + 1) % 4 + 1, (second + 1) % 4 + 1
+  sides[1], sides[2], sides[3], sides[4] = first, third, second, fourth
+  sides[5], sides[6], sides[7], sides[8] = third, first, fourth, second
+end
+
 -- The box of part k (n coordinates) of a list into view.boxes and its record; false when a
 -- coordinate is inf or NaN.
 local function partBox(view, k, part, n)
@@ -4250,7 +4266,9 @@ local function partBox(view, k, part, n)
   boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b] = xmin, ymin, xmax, ymax
   record[1], record[2], record[3], record[4] = xmin, ymin, xmax, ymax
   record[5], record[6], record[7], record[8] = ixmin, iymin, ixmax, iymax
-  view.rects[k] = finite == 0 and rectKind(part, n, xmin, ymin, xmax, ymax) or 0
+  local rect = finite == 0 and rectKind(part, n, xmin, ymin, xmax, ymax) or 0
+  view.rects[k] = rect
+  if rect ~= 0 then rectSides(view.sides[k], part, rect, xmin, ymin) end
   return finite == 0
 end
 
@@ -4342,7 +4360,7 @@ end
 local function prepareParts(fname, argname, parts)
   local count = #parts
   local info = { count = count, lengths = {}, internal = {}, copies = {}, boxes = {}, turns = {},
-                 normals = {}, records = {}, checked = {}, rects = {} }
+                 normals = {}, records = {}, checked = {}, rects = {}, sides = {} }
   for k = 1, count do
     local part = parts[k]
     local n = #part
@@ -4351,6 +4369,7 @@ local function prepareParts(fname, argname, parts)
     local flags = {}
     for i = 1, n - 1, 2 do flags[i] = 0 end
     info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
+    info.sides[k] = {}
     info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n }, 0
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
@@ -4497,7 +4516,8 @@ end
 -- larger array comes (once, never shrunk).
 local function newFlatView()
   return { count = 1, lengths = {}, internal = { {} }, edgeRoom = 0, boxes = {},
-           turns = {}, normals = { {} }, rects = { 0 }, pending = false, turnPending = false }
+           turns = {}, normals = { {} }, rects = { 0 }, sides = { {} }, pending = false,
+           turnPending = false }
 end
 local flatView1, flatView2 = newFlatView(), newFlatView()
 
@@ -4556,6 +4576,7 @@ else
     -- kind 1, -2 (x3 - x1) (y2 - y1) for kind 2 (flatView then computes no area sign)
     local rect = finite == 0 and rectKind(shape, n, xmin, ymin, xmax, ymax) or 0
     view.rects[1] = rect
+    if rect ~= 0 then rectSides(view.sides[1], shape, rect, xmin, ymin) end
     if rect == 1 then
       view.turns[1] = (shape[3] + 0.0 > shape[1] + 0.0) == (shape[6] + 0.0 > shape[2] + 0.0) and 1.0 or -1.0
     elseif rect == 2 then
@@ -4885,6 +4906,91 @@ else
   end
 end
 
+-- Two axis-parallel rectangles (rectKind; PUC Lua, unscaled): the faces pairFaces gives, less
+-- those that change nothing. D is then a box: each side of p2 gives the line of the opposite
+-- side of p1, the same numbers (lo of p1's right side, oxmin - exmax, is lo of p2's left side,
+-- ax - oxmax, with the same roles). A later face equal to an earlier one, line and flag (seam
+-- or outer), decides nothing: pushFree's test is the same, it is never nearer than its twin,
+-- which comes first (feet and crossings keep the first of equals), and the crossings it gives
+-- are its twin's (the same point, (c1 y2 - c2 y1) / det with the lines swapped is the same
+-- number). So a side of p2 gives a face only when its flag differs from that of p1's side on
+-- its line (a seam of the list against the flat shape's outer edge, whose foot is tried).
+-- sides1, sides2: the parts' sides in edge order (see rectSides). Returns the last face's
+-- index and 1 when the rectangles overlap (exactly: no side has the other rectangle beyond it
+-- or on its line), else 0.
+local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
+local sideLo, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
+local function rectPairFaces(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top)
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local sideX, sideY, los, flags = SIDE_X, SIDE_Y, sideLo, sideFlag
+  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+  local foot2, foot2Reach = secondFoot, secondReach
+  -- p1's sides' lo, as the axis-parallel edges' in pairFaces
+  local loLeft = boxes1[a - 3] - boxes2[b - 1]
+  local loTop = boxes1[a - 2] - boxes2[b]
+  local loRight = boxes2[b - 3] - boxes1[a - 1]
+  local loBottom = boxes2[b - 2] - boxes1[a]
+  los[1] = loLeft
+  los[2] = loTop
+  los[3] = loRight
+  los[4] = loBottom
+  -- p1's sides in the order of its edges, then those of p2 whose flags differ: two loops, the
+  -- face's code in both (one loop over the eight edges took 5 more VM instructions an edge to
+  -- tell the two apart; one assignment per statement, as in pairFaces)
+  for i = 1, 7, 2 do
+    local line, flag = sides1[i], internal1[i]
+    flags[line] = flag
+    local lo = los[line]
+    local d = lift - lo
+    if d < 0 then d = -d end   -- a comparison, not abs's call
+    top = top + 1
+    fx[top] = sideX[line]
+    fy[top] = sideY[line]
+    fc[top] = -lo
+    seam[top] = flag
+    reach[top] = d
+    if flag ~= 0 then
+      if d < seamReach then seamReach = d end
+    elseif d < footReach then
+      foot2 = foot
+      foot2Reach = footReach
+      foot = top
+      footReach = d
+    elseif d < foot2Reach then
+      foot2 = top
+      foot2Reach = d
+    end
+  end
+  for i = 1, 7, 2 do
+    local line, flag = sides2[i + 1], internal2[i]
+    if flag ~= flags[line] then   -- else as the face of p1's on the same line: nothing to add
+      local lo = los[line]
+      local d = lift - lo
+      if d < 0 then d = -d end
+      top = top + 1
+      fx[top] = sideX[line]
+      fy[top] = sideY[line]
+      fc[top] = -lo
+      seam[top] = flag
+      reach[top] = d
+      if flag ~= 0 then
+        if d < seamReach then seamReach = d end
+      elseif d < footReach then
+        foot2 = foot
+        foot2Reach = footReach
+        foot = top
+        footReach = d
+      elseif d < foot2Reach then
+        foot2 = top
+        foot2Reach = d
+      end
+    end
+  end
+  nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+  if loLeft < 0 and loTop < 0 and loRight < 0 and loBottom < 0 then return top, 1 end
+  return top, 0
+end
+
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
 local function pushFree(tx, ty, np, margin)
   local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
@@ -5057,6 +5163,15 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, 0 end   -- zero area: never collides
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
+  faceFirst[np + 1] = top + 1
+  local overlaps
+  local rect1, rect2 = view1.rects[i], view2.rects[j]
+  if not JIT and k == 1 and rect1 ~= 0 and rect2 ~= 0 then
+    top, overlaps = rectPairFaces(view1.sides[i], view1.internal[i], boxes1, a, view2.sides[j],
+      view2.internal[j], boxes2, b, top)
+    faceFirst[np + 2] = top + 1
+    return np + 1, top, overlaps
+  end
   local right, bottom, left, low = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
   if JIT then
     right, bottom = max(right, boxes2[b - 1]), max(bottom, boxes2[b])
@@ -5069,8 +5184,6 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   end
   local spanX, spanY = (right - left) * k, (bottom - low) * k
   local n1, n2 = view1.lengths[i], view2.lengths[j]
-  faceFirst[np + 1] = top + 1
-  local overlaps
   top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
     p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b,
     view1.rects[i], view2.rects[j])
