@@ -4463,6 +4463,14 @@ end
 local function checkCopy(view, k, part, level)
   view.checked[k] = callStamp
   local copy, n = view.copies[k], view.lengths[k]
+  if n == 8 then   -- a quadrilateral (a tile, a box) unrolled: constant indices, no loop steps
+    if part[1] == copy[1] and part[2] == copy[2] and part[3] == copy[3] and part[4] == copy[4]
+        and part[5] == copy[5] and part[6] == copy[6] and part[7] == copy[7] and part[8] == copy[8] then
+      return
+    end
+    refreshPart(view, k, part, n, level + 1)
+    return
+  end
   for i = 1, n do
     if part[i] ~= copy[i] then
       refreshPart(view, k, part, n, level + 1)
@@ -4667,6 +4675,11 @@ local faceReach = {}               -- |faceC + lift|: how near the origin the fa
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 local pairAdded = {}               -- per pair of parts i, j (at (i - 1) count2 + j): callStamp once in
 local pairPart1, pairPart2 = {}, {}   -- pair p's parts i and j (LuaJIT: see pairsOverlap)
+-- PUC Lua: pairBox[p] is 1 when pair p's D is a box (rectPairFaces), with its sides' constants
+-- plus margin: t is inside D widened by margin when tx < boxRight[p], -tx < boxLeft[p],
+-- ty < boxDown[p] and -ty < boxUp[p] (pushFree); else 0
+local pairBox, boxRight, boxLeft, boxDown, boxUp = {}, {}, {}, {}, {}
+local faceMargin = 0.0   -- margin (see nearestFree) of the call under way, for boxRight and the rest
 
 -- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
 -- checks of the views did not see (one off the box of a list's part) raises the argument error
@@ -4970,34 +4983,41 @@ end
 -- index and 1 when the rectangles overlap (exactly: no side has the other rectangle beyond it
 -- or on its line), else 0.
 local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
-local sideLo, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
-local function rectPairFaces(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top)
+local sideConstant, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
+local function rectPairFaces(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top, p)
   local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-  local sideX, sideY, los, flags = SIDE_X, SIDE_Y, sideLo, sideFlag
+  local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
   local lift, foot, footReach = faceLift, nearestFoot, nearestReach
   local foot2, foot2Reach = secondFoot, secondReach
-  -- p1's sides' lo, as the axis-parallel edges' in pairFaces
-  local loLeft = boxes1[a - 3] - boxes2[b - 1]
-  local loTop = boxes1[a - 2] - boxes2[b]
-  local loRight = boxes2[b - 3] - boxes1[a - 1]
-  local loBottom = boxes2[b - 2] - boxes1[a]
-  los[1] = loLeft
-  los[2] = loTop
-  los[3] = loRight
-  los[4] = loBottom
+  -- p1's sides' faceC, -lo of the axis-parallel edges in pairFaces (fl(b - a) = -fl(a - b))
+  local cLeft = boxes2[b - 1] - boxes1[a - 3]
+  local cTop = boxes2[b] - boxes1[a - 2]
+  local cRight = boxes1[a - 1] - boxes2[b - 3]
+  local cBottom = boxes1[a] - boxes2[b - 2]
+  sideC[1] = cLeft
+  sideC[2] = cTop
+  sideC[3] = cRight
+  sideC[4] = cBottom
+  local margin = faceMargin   -- pushFree's constants: the faces' fc + margin, the same numbers
+  pairBox[p] = 1
+  boxLeft[p] = cLeft + margin
+  boxUp[p] = cTop + margin
+  boxRight[p] = cRight + margin
+  boxDown[p] = cBottom + margin
   -- p1's sides in the order of its edges, then those of p2 whose flags differ: two loops, the
   -- face's code in both (one loop over the eight edges took 5 more VM instructions an edge to
-  -- tell the two apart; one assignment per statement, as in pairFaces)
+  -- tell the two apart; one assignment per statement, as in pairFaces). The reach lift + c is
+  -- pairFaces' lift - lo.
   for i = 1, 7, 2 do
     local line, flag = sides1[i], internal1[i]
     flags[line] = flag
-    local lo = los[line]
-    local d = lift - lo
+    local c = sideC[line]
+    local d = lift + c
     if d < 0 then d = -d end   -- a comparison, not abs's call
     top = top + 1
     fx[top] = sideX[line]
     fy[top] = sideY[line]
-    fc[top] = -lo
+    fc[top] = c
     seam[top] = flag
     reach[top] = d
     if flag ~= 0 then
@@ -5015,13 +5035,13 @@ local function rectPairFaces(sides1, internal1, boxes1, a, sides2, internal2, bo
   for i = 1, 7, 2 do
     local line, flag = sides2[i + 1], internal2[i]
     if flag ~= flags[line] then   -- else as the face of p1's on the same line: nothing to add
-      local lo = los[line]
-      local d = lift - lo
+      local c = sideC[line]
+      local d = lift + c
       if d < 0 then d = -d end
       top = top + 1
       fx[top] = sideX[line]
       fy[top] = sideY[line]
-      fc[top] = -lo
+      fc[top] = c
       seam[top] = flag
       reach[top] = d
       if flag ~= 0 then
@@ -5038,24 +5058,52 @@ local function rectPairFaces(sides1, internal1, boxes1, a, sides2, internal2, bo
     end
   end
   nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
-  if loLeft < 0 and loTop < 0 and loRight < 0 and loBottom < 0 then return top, 1 end
+  if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
   return top, 0
 end
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
-local function pushFree(tx, ty, np, margin)
-  local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
-  for p = 1, np do
-    local inside = true
-    for f = first[p], first[p + 1] - 1 do
-      if fx[f] * tx + fy[f] * ty >= fc[f] + margin then
-        inside = false
-        break
+local pushFree
+if JIT then
+  pushFree = function(tx, ty, np, margin)
+    local first, fx, fy, fc = faceFirst, faceX, faceY, faceC
+    for p = 1, np do
+      local inside = true
+      for f = first[p], first[p + 1] - 1 do
+        if fx[f] * tx + fy[f] * ty >= fc[f] + margin then
+          inside = false
+          break
+        end
+      end
+      if inside then return false end
+    end
+    return true
+  end
+else
+  -- A box's D by its four constants (pairBox): the faces' tests, as a face (1, 0) gives
+  -- 1 tx + 0 ty, which is tx (a zero's sign aside), and so on; written as the negation of their
+  -- disjunction, so that a NaN is inside, as there.
+  pushFree = function(tx, ty, np, margin)
+    local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
+    local isBox = pairBox
+    for p = 1, np do
+      if isBox[p] ~= 0 then
+        if not (tx >= boxRight[p] or -tx >= boxLeft[p] or ty >= boxDown[p] or -ty >= boxUp[p]) then
+          return false
+        end
+      else
+        local inside = true
+        for f = first[p], first[p + 1] - 1 do
+          if fx[f] * tx + fy[f] * ty >= fc[f] + margin then
+            inside = false
+            break
+          end
+        end
+        if inside then return false end
       end
     end
-    if inside then return false end
+    return true
   end
-  return true
 end
 
 local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
@@ -5219,7 +5267,7 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   local rect1, rect2 = view1.rects[i], view2.rects[j]
   if not JIT and k == 1 and rect1 ~= 0 and rect2 ~= 0 then
     top, overlaps = rectPairFaces(view1.sides[i], view1.internal[i], boxes1, a, view2.sides[j],
-      view2.internal[j], boxes2, b, top)
+      view2.internal[j], boxes2, b, top, np + 1)
     faceFirst[np + 2] = top + 1
     return np + 1, top, overlaps
   end
@@ -5235,6 +5283,7 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   end
   local spanX, spanY = (right - left) * k, (bottom - low) * k
   local n1, n2 = view1.lengths[i], view2.lengths[j]
+  if not JIT then pairBox[np + 1] = 0 end
   top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
     p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b,
     view1.rects[i], view2.rects[j])
@@ -5345,7 +5394,9 @@ end
 -- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
 -- overlap, dx, dy, or false.
 function collideParts(fname, shape1, shape2, wantPush)
-  local parts1, parts2 = isParts(shape1), isParts(shape2)
+  -- isParts inline (PUC Lua pays for every call)
+  local parts1 = type(shape1) == "table" and type(shape1[1]) == "table"
+  local parts2 = type(shape2) == "table" and type(shape2[1]) == "table"
   local view1, view2, found, nearCount, window, leastGapX, leastGapY
   if parts1 ~= parts2 then
     -- A list against a flat shape: the list's checks and its parts' box tests in one loop
@@ -5439,6 +5490,7 @@ function collideParts(fname, shape1, shape2, wantPush)
   local np, top, hits = 0, 0, 0
   local added = pairAdded   -- a local: PUC Lua reads an upvalue by an extra instruction
   faceLift = 1.25 * margin   -- as nearestFree's lift
+  faceMargin = margin
   nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
   feetKept = 0
   if found then
@@ -5468,7 +5520,7 @@ function collideParts(fname, shape1, shape2, wantPush)
       end
     end
   end
-  local scaled = magnitude > EXACT_TOP or magnitude < 2^-400   -- as the boolean's
+  local scaled = k ~= 1   -- as the boolean's (powerScale's k is never 1 there)
   if hits == 0 and not (JIT and pairsOverlap(fname, view1, shape1, view2, shape2, np, scaled)) then
     return false
   end
