@@ -4553,6 +4553,18 @@ if JIT then
     if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
     local boxes = view.boxes
     boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+    -- an axis-parallel rectangle: its sides and its area sign (see PUC Lua's flatBox)
+    local rect = finite == 0 and rectKind(shape, n, xmin, ymin, xmax, ymax) or 0
+    view.rects[1] = rect
+    if rect ~= 0 then
+      rectSides(view.sides[1], shape, rect, xmin, ymin)
+      local x1, y1 = shape[1] + 0.0, shape[2] + 0.0
+      if rect == 1 then
+        view.turns[1] = (shape[3] + 0.0 > x1) == (shape[6] + 0.0 > y1) and 1.0 or -1.0
+      else
+        view.turns[1] = (shape[5] + 0.0 > x1) == (shape[4] + 0.0 > y1) and -1.0 or 1.0
+      end
+    end
     return finite == 0
   end
 else
@@ -4984,7 +4996,34 @@ end
 -- or on its line), else 0.
 local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
 local sideConstant, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
-local function rectPairFaces(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top, p)
+local rectPairFaces
+if JIT then
+  -- LuaJIT's: all eight faces, without a branch (p2's equal ones change nothing, see above),
+  -- the nearest feet kept later by keepFeet, as for addFaces' faces.
+  rectPairFaces = function(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top)
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local sideX, sideY, sideC, lift = SIDE_X, SIDE_Y, sideConstant, faceLift
+    local cLeft, cTop = boxes2[b - 1] - boxes1[a - 3], boxes2[b] - boxes1[a - 2]
+    local cRight, cBottom = boxes1[a - 1] - boxes2[b - 3], boxes1[a] - boxes2[b - 2]
+    sideC[1], sideC[2], sideC[3], sideC[4] = cLeft, cTop, cRight, cBottom
+    for i = 1, 7, 2 do
+      local line = sides1[i]
+      local c = sideC[line]
+      top = top + 1
+      fx[top], fy[top], fc[top], seam[top], reach[top] = sideX[line], sideY[line], c, internal1[i],
+        abs(lift + c)
+    end
+    for i = 1, 7, 2 do
+      local line = sides2[i + 1]
+      local c = sideC[line]
+      top = top + 1
+      fx[top], fy[top], fc[top], seam[top], reach[top] = sideX[line], sideY[line], c, internal2[i],
+        abs(lift + c)
+    end
+    return top, isAbove(min(cLeft, cTop, cRight, cBottom))
+  end
+else
+rectPairFaces = function(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top, p)
   local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
   local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
   local lift, foot, footReach = faceLift, nearestFoot, nearestReach
@@ -5060,6 +5099,7 @@ local function rectPairFaces(sides1, internal1, boxes1, a, sides2, internal2, bo
   nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
   if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
   return top, 0
+end
 end
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
@@ -5246,18 +5286,22 @@ end
 -- parts overlap; on LuaJIT, overlap for sure).
 local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   -- preparePair's work inline (PUC Lua pays for every call): checkCopy's level counts from there
-  -- (a flat rectangle needs no normals unscaled: pairFaces reads none; flatBox gave its sign)
+  -- A flat rectangle needs no normals unscaled (flatBox gave its sign): rectPairFaces and PUC
+  -- Lua's pairFaces read none; LuaJIT's addFaces reads them against a part not a rectangle, so
+  -- there they wait for such a pair.
   if view1.copies then
     if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 5) end
   elseif view1.pending then
-    view1.pending = false
-    if k ~= 1 or view1.rects[1] == 0 then partNormals(view1, 1, p1, #p1) end
+    local needed = k ~= 1 or view1.rects[1] == 0 or JIT and view2.rects[j] == 0
+    if needed then partNormals(view1, 1, p1, #p1) end
+    view1.pending = JIT and not needed
   end
   if view2.copies then
     if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 5) end
   elseif view2.pending then
-    view2.pending = false
-    if k ~= 1 or view2.rects[1] == 0 then partNormals(view2, 1, p2, #p2) end
+    local needed = k ~= 1 or view2.rects[1] == 0 or JIT and view1.rects[i] == 0
+    if needed then partNormals(view2, 1, p2, #p2) end
+    view2.pending = JIT and not needed
   end
   local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, 0 end   -- zero area: never collides
@@ -5265,10 +5309,11 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   faceFirst[np + 1] = top + 1
   local overlaps
   local rect1, rect2 = view1.rects[i], view2.rects[j]
-  if not JIT and k == 1 and rect1 ~= 0 and rect2 ~= 0 then
+  if k == 1 and rect1 ~= 0 and rect2 ~= 0 then
     top, overlaps = rectPairFaces(view1.sides[i], view1.internal[i], boxes1, a, view2.sides[j],
       view2.internal[j], boxes2, b, top, np + 1)
     faceFirst[np + 2] = top + 1
+    if JIT then pairPart1[np + 1], pairPart2[np + 1] = i, j end
     return np + 1, top, overlaps
   end
   local right, bottom, left, low = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
