@@ -4982,101 +4982,81 @@ else
   end
 end
 
--- Two axis-parallel rectangles (rectKind; PUC Lua, unscaled): the faces pairFaces gives, less
--- those that change nothing. D is then a box: each side of p2 gives the line of the opposite
--- side of p1, the same numbers (lo of p1's right side, oxmin - exmax, is lo of p2's left side,
--- ax - oxmax, with the same roles). A later face equal to an earlier one, line and flag (seam
--- or outer), decides nothing: pushFree's test is the same, it is never nearer than its twin,
--- which comes first (feet and crossings keep the first of equals), and the crossings it gives
--- are its twin's (the same point, (c1 y2 - c2 y1) / det with the lines swapped is the same
--- number). So a side of p2 gives a face only when its flag differs from that of p1's side on
--- its line (a seam of the list against the flat shape's outer edge, whose foot is tried).
--- sides1, sides2: the parts' sides in edge order (see rectSides). Returns the last face's
--- index and 1 when the rectangles overlap (exactly: no side has the other rectangle beyond it
--- or on its line), else 0.
+-- Two axis-parallel rectangles (rectKind, unscaled), part i of view1 (p1) and part j of view2
+-- (p2), as pair p: the faces pairFaces gives, less those that change nothing. D is then a box:
+-- each side of p2 gives the line of the opposite side of p1, the same numbers (lo of p1's right
+-- side, oxmin - exmax, is lo of p2's left side, ax - oxmax, with the same roles). A later face
+-- equal to an earlier one, line and flag (seam or outer), decides nothing: pushFree's test is
+-- the same, it is never nearer than its twin, which comes first (feet and crossings keep the
+-- first of equals), and the crossings it gives are its twin's (the same point: (c1 y2 - c2 y1)
+-- / det with the lines swapped is the same number). So a side of p2 gives a face only when its
+-- flag differs from that of p1's side on its line (a seam of the list against the flat shape's
+-- outer edge, whose foot is tried). The views' sides give the sides in edge order (see
+-- rectSides). Returns the last face's index and 1 when the rectangles overlap (exactly: no side
+-- has the other rectangle beyond it or on its line), else 0.
 local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
 local sideConstant, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
 local rectPairFaces
 if JIT then
   -- LuaJIT's: all eight faces, without a branch (p2's equal ones change nothing, see above),
   -- the nearest feet kept later by keepFeet, as for addFaces' faces.
-  rectPairFaces = function(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top)
+  rectPairFaces = function(view1, i, view2, j, top)
+    local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
+    local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
     local sideX, sideY, sideC, lift = SIDE_X, SIDE_Y, sideConstant, faceLift
     local cLeft, cTop = boxes2[b - 1] - boxes1[a - 3], boxes2[b] - boxes1[a - 2]
     local cRight, cBottom = boxes1[a - 1] - boxes2[b - 3], boxes1[a] - boxes2[b - 2]
     sideC[1], sideC[2], sideC[3], sideC[4] = cLeft, cTop, cRight, cBottom
-    for i = 1, 7, 2 do
-      local line = sides1[i]
+    for e = 1, 7, 2 do
+      local line = sides1[e]
       local c = sideC[line]
       top = top + 1
-      fx[top], fy[top], fc[top], seam[top], reach[top] = sideX[line], sideY[line], c, internal1[i],
+      fx[top], fy[top], fc[top], seam[top], reach[top] = sideX[line], sideY[line], c, internal1[e],
         abs(lift + c)
     end
-    for i = 1, 7, 2 do
-      local line = sides2[i + 1]
+    for e = 1, 7, 2 do
+      local line = sides2[e + 1]
       local c = sideC[line]
       top = top + 1
-      fx[top], fy[top], fc[top], seam[top], reach[top] = sideX[line], sideY[line], c, internal2[i],
+      fx[top], fy[top], fc[top], seam[top], reach[top] = sideX[line], sideY[line], c, internal2[e],
         abs(lift + c)
     end
     return top, isAbove(min(cLeft, cTop, cRight, cBottom))
   end
 else
-rectPairFaces = function(sides1, internal1, boxes1, a, sides2, internal2, boxes2, b, top, p)
-  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-  local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
-  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
-  local foot2, foot2Reach = secondFoot, secondReach
-  -- p1's sides' faceC, -lo of the axis-parallel edges in pairFaces (fl(b - a) = -fl(a - b))
-  local cLeft = boxes2[b - 1] - boxes1[a - 3]
-  local cTop = boxes2[b] - boxes1[a - 2]
-  local cRight = boxes1[a - 1] - boxes2[b - 3]
-  local cBottom = boxes1[a] - boxes2[b - 2]
-  sideC[1] = cLeft
-  sideC[2] = cTop
-  sideC[3] = cRight
-  sideC[4] = cBottom
-  local margin = faceMargin   -- pushFree's constants: the faces' fc + margin, the same numbers
-  pairBox[p] = 1
-  boxLeft[p] = cLeft + margin
-  boxUp[p] = cTop + margin
-  boxRight[p] = cRight + margin
-  boxDown[p] = cBottom + margin
-  -- p1's sides in the order of its edges, then those of p2 whose flags differ: two loops, the
-  -- face's code in both (one loop over the eight edges took 5 more VM instructions an edge to
-  -- tell the two apart; one assignment per statement, as in pairFaces). The reach lift + c is
-  -- pairFaces' lift - lo.
-  for i = 1, 7, 2 do
-    local line, flag = sides1[i], internal1[i]
-    flags[line] = flag
-    local c = sideC[line]
-    local d = lift + c
-    if d < 0 then d = -d end   -- a comparison, not abs's call
-    top = top + 1
-    fx[top] = sideX[line]
-    fy[top] = sideY[line]
-    fc[top] = c
-    seam[top] = flag
-    reach[top] = d
-    if flag ~= 0 then
-      if d < seamReach then seamReach = d end
-    elseif d < footReach then
-      foot2 = foot
-      foot2Reach = footReach
-      foot = top
-      footReach = d
-    elseif d < foot2Reach then
-      foot2 = top
-      foot2Reach = d
-    end
-  end
-  for i = 1, 7, 2 do
-    local line, flag = sides2[i + 1], internal2[i]
-    if flag ~= flags[line] then   -- else as the face of p1's on the same line: nothing to add
+  rectPairFaces = function(view1, i, view2, j, top, p)
+    local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
+    local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
+    local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+    local foot2, foot2Reach = secondFoot, secondReach
+    -- p1's sides' faceC, -lo of the axis-parallel edges in pairFaces (fl(b - a) = -fl(a - b))
+    local cLeft = boxes2[b - 1] - boxes1[a - 3]
+    local cTop = boxes2[b] - boxes1[a - 2]
+    local cRight = boxes1[a - 1] - boxes2[b - 3]
+    local cBottom = boxes1[a] - boxes2[b - 2]
+    sideC[1] = cLeft
+    sideC[2] = cTop
+    sideC[3] = cRight
+    sideC[4] = cBottom
+    local margin = faceMargin   -- pushFree's constants: the faces' fc + margin, the same numbers
+    pairBox[p] = 1
+    boxLeft[p] = cLeft + margin
+    boxUp[p] = cTop + margin
+    boxRight[p] = cRight + margin
+    boxDown[p] = cBottom + margin
+    -- p1's sides in the order of its edges, then those of p2 whose flags differ: two loops, the
+    -- face's code in both (one loop over the eight edges took 5 more VM instructions an edge to
+    -- tell the two apart; one assignment per statement, as in pairFaces). The reach lift + c is
+    -- pairFaces' lift - lo.
+    for e = 1, 7, 2 do
+      local line, flag = sides1[e], internal1[e]
+      flags[line] = flag
       local c = sideC[line]
       local d = lift + c
-      if d < 0 then d = -d end
+      if d < 0 then d = -d end   -- a comparison, not abs's call
       top = top + 1
       fx[top] = sideX[line]
       fy[top] = sideY[line]
@@ -5095,11 +5075,35 @@ rectPairFaces = function(sides1, internal1, boxes1, a, sides2, internal2, boxes2
         foot2Reach = d
       end
     end
+    for e = 1, 7, 2 do
+      local line, flag = sides2[e + 1], internal2[e]
+      if flag ~= flags[line] then   -- else as the face of p1's on the same line: nothing to add
+        local c = sideC[line]
+        local d = lift + c
+        if d < 0 then d = -d end
+        top = top + 1
+        fx[top] = sideX[line]
+        fy[top] = sideY[line]
+        fc[top] = c
+        seam[top] = flag
+        reach[top] = d
+        if flag ~= 0 then
+          if d < seamReach then seamReach = d end
+        elseif d < footReach then
+          foot2 = foot
+          foot2Reach = footReach
+          foot = top
+          footReach = d
+        elseif d < foot2Reach then
+          foot2 = top
+          foot2Reach = d
+        end
+      end
+    end
+    nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+    if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
+    return top, 0
   end
-  nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
-  if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
-  return top, 0
-end
 end
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin.
@@ -5305,17 +5309,15 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   end
   local turn1, turn2 = view1.turns[i], view2.turns[j]
   if turn1 == 0 or turn2 == 0 then return np, top, 0 end   -- zero area: never collides
-  local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   faceFirst[np + 1] = top + 1
-  local overlaps
-  local rect1, rect2 = view1.rects[i], view2.rects[j]
-  if k == 1 and rect1 ~= 0 and rect2 ~= 0 then
-    top, overlaps = rectPairFaces(view1.sides[i], view1.internal[i], boxes1, a, view2.sides[j],
-      view2.internal[j], boxes2, b, top, np + 1)
+  if k == 1 and view1.rects[i] ~= 0 and view2.rects[j] ~= 0 then
+    local overlaps
+    top, overlaps = rectPairFaces(view1, i, view2, j, top, np + 1)
     faceFirst[np + 2] = top + 1
     if JIT then pairPart1[np + 1], pairPart2[np + 1] = i, j end
     return np + 1, top, overlaps
   end
+  local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
   local right, bottom, left, low = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
   if JIT then
     right, bottom = max(right, boxes2[b - 1]), max(bottom, boxes2[b])
@@ -5329,6 +5331,7 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   local spanX, spanY = (right - left) * k, (bottom - low) * k
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   if not JIT then pairBox[np + 1] = 0 end
+  local overlaps
   top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
     p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b,
     view1.rects[i], view2.rects[j])
