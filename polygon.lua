@@ -4687,7 +4687,7 @@ local faceReach = {}               -- |faceC + lift|: how near the origin the fa
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 local pairAdded = {}               -- per pair of parts i, j (at (i - 1) count2 + j): callStamp once in
 local pairPart1, pairPart2 = {}, {}   -- pair p's parts i and j (LuaJIT: see pairsOverlap)
--- PUC Lua: pairBox[p] is 1 when pair p's D is a box (rectPairFaces), with its sides' constants
+-- pairBox[p] is 1 when pair p's D is a box (rectPairFaces), with its sides' constants
 -- plus margin: t is inside D widened by margin when tx < boxRight[p], -tx < boxLeft[p],
 -- ty < boxDown[p] and -ty < boxUp[p] (pushFree); else 0
 local pairBox, boxRight, boxLeft, boxDown, boxUp = {}, {}, {}, {}, {}
@@ -5000,7 +5000,7 @@ local rectPairFaces
 if JIT then
   -- LuaJIT's: all eight faces, without a branch (p2's equal ones change nothing, see above),
   -- the nearest feet kept later by keepFeet, as for addFaces' faces.
-  rectPairFaces = function(view1, i, view2, j, top)
+  rectPairFaces = function(view1, i, view2, j, top, p)
     local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
     local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
@@ -5008,6 +5008,9 @@ if JIT then
     local cLeft, cTop = boxes2[b - 1] - boxes1[a - 3], boxes2[b] - boxes1[a - 2]
     local cRight, cBottom = boxes1[a - 1] - boxes2[b - 3], boxes1[a] - boxes2[b - 2]
     sideC[1], sideC[2], sideC[3], sideC[4] = cLeft, cTop, cRight, cBottom
+    local margin = faceMargin   -- pushFree's constants, as PUC Lua's below
+    pairBox[p], boxLeft[p], boxUp[p], boxRight[p], boxDown[p] = 1, cLeft + margin, cTop + margin,
+      cRight + margin, cBottom + margin
     for e = 1, 7, 2 do
       local line = sides1[e]
       local c = sideC[line]
@@ -5106,12 +5109,20 @@ else
   end
 end
 
--- Whether t lies outside every D of pairs 1 .. np widened by margin.
-local pushFree
-if JIT then
-  pushFree = function(tx, ty, np, margin)
-    local first, fx, fy, fc = faceFirst, faceX, faceY, faceC
-    for p = 1, np do
+-- Whether t lies outside every D of pairs 1 .. np widened by margin. A box's D by its four
+-- constants (pairBox): the faces' tests, as a face (1, 0) gives 1 tx + 0 ty, which is tx (a
+-- zero's sign aside), and so on; written as the negation of their disjunction, so that a NaN
+-- is inside, as there. (On LuaJIT no faster on the crate and floor of bench/compound.lua than
+-- reading the faces, within the noise: one body for both.)
+local function pushFree(tx, ty, np, margin)
+  local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
+  local isBox = pairBox
+  for p = 1, np do
+    if isBox[p] ~= 0 then
+      if not (tx >= boxRight[p] or -tx >= boxLeft[p] or ty >= boxDown[p] or -ty >= boxUp[p]) then
+        return false
+      end
+    else
       local inside = true
       for f = first[p], first[p + 1] - 1 do
         if fx[f] * tx + fy[f] * ty >= fc[f] + margin then
@@ -5121,33 +5132,8 @@ if JIT then
       end
       if inside then return false end
     end
-    return true
   end
-else
-  -- A box's D by its four constants (pairBox): the faces' tests, as a face (1, 0) gives
-  -- 1 tx + 0 ty, which is tx (a zero's sign aside), and so on; written as the negation of their
-  -- disjunction, so that a NaN is inside, as there.
-  pushFree = function(tx, ty, np, margin)
-    local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
-    local isBox = pairBox
-    for p = 1, np do
-      if isBox[p] ~= 0 then
-        if not (tx >= boxRight[p] or -tx >= boxLeft[p] or ty >= boxDown[p] or -ty >= boxUp[p]) then
-          return false
-        end
-      else
-        local inside = true
-        for f = first[p], first[p + 1] - 1 do
-          if fx[f] * tx + fy[f] * ty >= fc[f] + margin then
-            inside = false
-            break
-          end
-        end
-        if inside then return false end
-      end
-    end
-    return true
-  end
+  return true
 end
 
 local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
@@ -5330,7 +5316,7 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   end
   local spanX, spanY = (right - left) * k, (bottom - low) * k
   local n1, n2 = view1.lengths[i], view2.lengths[j]
-  if not JIT then pairBox[np + 1] = 0 end
+  pairBox[np + 1] = 0
   local overlaps
   top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
     p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b,
