@@ -4210,8 +4210,9 @@ end
 -- A view of a shape is what the collisions read of it: count, lengths[k], boxes (xmin, ymin,
 -- xmax, ymax of part k at 4k - 3 .. 4k), turns[k] (area sign 1, -1 or 0: signs, never
 -- magnitudes, are multiplied), normals[k] (the outward unit normal of the edge ending at vertex
--- index i at [i], [i + 1]), internal[k], and over all parts size (the largest coordinate
--- magnitude) and the box left, top, right, bottom. A list's preparation is its view, with
+-- index i at [i], [i + 1]), internal[k], rects[k] (rectKind's 0, 1 or 2) and sides[k] (a
+-- rectangle's sides, rectSides), and over all parts size (the largest coordinate magnitude)
+-- and the box left, top, right, bottom. A list's preparation is its view, with
 -- records[k] for the per-call checks: xmin, ymin, xmax, ymax of part k at [1] .. [4] again, the
 -- indices of the coordinates that gave them at [5] .. [8], the part's table at [9] (false after
 -- a non-finite coordinate) and its length at [10] (constant indices: one instruction each on
