@@ -34,6 +34,24 @@ local function timingRows()
   local cornerCrates = {}
   for k = 0, 99 do cornerCrates[#cornerCrates + 1] = parts.box(5 + k * 0.03, 85, 8, 8) end
 
+  -- shapes that are not axis-parallel rectangles, for the general faces: the crate turned by
+  -- 0.5 radian against the floor, and the crate against a floor of 20 columns with sloped tops
+  local turned = {}
+  for k = 0, 99 do
+    local cx, cy, c, s = 4 + k * 1.91, 98, math.cos(0.5), math.sin(0.5)
+    local p = {}
+    for _, v in ipairs({ { -4, -4 }, { 4, -4 }, { 4, 4 }, { -4, 4 } }) do
+      p[#p + 1] = cx + c * v[1] - s * v[2]
+      p[#p + 1] = cy + s * v[1] + c * v[2]
+    end
+    turned[k + 1] = p
+  end
+  local slope = {}
+  for k = 0, 19 do
+    local y1, y2 = 100 + (k % 3) * 2, 100 + ((k + 1) % 3) * 2
+    slope[k + 1] = { k * 10, y1, k * 10 + 10, y2, k * 10 + 10, y1 + 30, k * 10, y1 + 30 }
+  end
+
   local needed = {}   -- for each crate, the floor parts whose boxes overlap its box
   for k, c in ipairs(crates) do
     local list = {}
@@ -78,6 +96,12 @@ local function timingRows()
     end },
     { "pushCorner", "compound V: crate in a concave corner", function(i)
       return (V(corner, cornerCrates[i % 100 + 1]))
+    end },
+    { "pushTurned", "compound V: turned crate vs 20-part floor", function(i)
+      return (V(floor, turned[i % 100 + 1]))
+    end },
+    { "pushSlope", "compound V: crate vs 20 sloped columns", function(i)
+      return (V(slope, crates[i % 100 + 1]))
     end },
     { "circleFloor", "compound circle V: circle vs 20-part floor", function(i)
       return (polygon.polygonCircleCollideV(floor, 5 + (i % 100) * 1.9, 97, 5))

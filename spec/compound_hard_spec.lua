@@ -76,6 +76,47 @@ describe("compound shapes against the union oracle", function()
     assert.is_true(worst < 1e-2, "worst relative excess " .. worst)
   end)
 
+  it("agrees on lists of axis-parallel rectangles (tiles) against boxes and tiles, both orders", function()
+    -- every part a rectangle: seams on both sides, vertices in every order and winding
+    local g = prng.new(4242)
+    local function tileList(cols, rows, size, ox, oy)
+      local list = {}
+      for r = 0, rows - 1 do
+        for c = 0, cols - 1 do
+          if #list == 0 or g:float() < 0.7 then
+            local b = parts.box(ox + c * size, oy + r * size, size, size)
+            if g:float() < 0.5 then b = { b[1], b[2], b[7], b[8], b[5], b[6], b[3], b[4] } end
+            local start = 2 * g:int(0, 3)   -- the first vertex any corner
+            local turned = {}
+            for i = 1, 8 do turned[i] = b[(i - 1 + start) % 8 + 1] end
+            list[#list + 1] = turned
+          end
+        end
+      end
+      return list
+    end
+    local wrong = newWrong()
+    local collisions, beyondSlack, worst = 0, 0, 0
+    for trial = 1, 120 do
+      local off = OFFSETS[trial % #OFFSETS + 1]
+      local s1 = tileList(g:int(1, 4), g:int(1, 3), g:pick({ 1, 2.5, 10 }), off, off)
+      local s2 = tileList(g:int(1, 2), g:int(1, 2), g:pick({ 0.5, 3, 7 }),
+        off + g:range(-2, 10), off + g:range(-2, 10))
+      for _, order in ipairs({ { s1, s2 }, { s2, s1 } }) do
+        local excess, slack, least = check(order[1], order[2], wrong)
+        if excess then
+          collisions = collisions + 1
+          if excess > slack then beyondSlack = beyondSlack + 1 end
+          worst = math.max(worst, excess / (least + slack))
+        end
+      end
+    end
+    assertNone(wrong)
+    assert.is_true(collisions > 60, collisions .. " collisions")
+    assert.is_true(beyondSlack <= collisions / 50, beyondSlack .. " of " .. collisions)
+    assert.is_true(worst < 1e-2, "worst relative excess " .. worst)
+  end)
+
   it("finds the least translation exactly (within the margin) for crates on terrain", function()
     -- every push along a face: the margin bounds the excess everywhere
     local g = prng.new(77)
