@@ -4890,7 +4890,13 @@ local feetKept = 0   -- LuaJIT: the faces 1 .. feetKept are in the five above (s
 -- coalescing too complex", thousands of times in `luajit -jv examples/arena.lua 300 default`):
 -- the faces, with the projections by leastProjection, here, and the nearest feet, by keepFeet
 -- over all new faces at once when nearestFree needs them (one loop of 4 steps per part was a
--- quarter of the push's time on the crate and floor of bench/compound.lua, `luajit -jp=l`). Instead
+-- quarter of the push's time on the crate and floor of bench/compound.lua, `luajit -jp=l`). The
+-- face loop runs a constant 8 steps for parts of up to 8 vertices (a repeated vertex, as the last
+-- one read again is, adds no face, without a branch): the copies of a loop counting a part's
+-- vertices had a side exit for every other part size, and those failed to compile in the arena
+-- (`luajit -jv examples/arena.lua 300 default`, NYI aborts in this section, 8 runs each:
+-- 0, 0, 272, 803, 4, 102, 520 and 0 before, at most 4 a run after; its frames 6.9-9.3 ms before,
+-- 5.3-6.8 after, 3 runs each). Instead
 -- of whether some edge separates the parts it returns 1 when none can (then they overlap for
 -- sure), else 0: collideParts decides those pairs exactly when it needs to (pairsOverlap).
 local addFaces
@@ -4922,25 +4928,30 @@ if JIT then
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
     local lift, highest = faceLift, -huge   -- highest: the largest lo
     local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-    for i = 1, ne - 1, 2 do
-      local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-      if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-        local ux, uy = normals[i], normals[i + 1]
-        local lo
-        if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
-          lo = huge
-          local kax, kay = ax * k, ay * k
-          for j = 1, no - 1, 2 do
-            lo = min(lo, ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay))
-          end
-        else
-          lo = leastProjection(other, no, ax, ay, ux, uy)
+    -- up to 8 vertices a constant count, the last vertex again past the last (see faceAndFar)
+    local last = ne <= 16 and 15 or ne - 1
+    for i = 1, last, 2 do
+      local l = min(i, ne - 1)
+      local bx, by = edges[l] + 0.0, edges[l + 1] + 0.0
+      -- 1 for an edge, 0 for a repeated vertex, which gives none (its normal is (0, 0)): its
+      -- face is written past top, and left there
+      local edge = isAbove(abs(bx - ax) + abs(by - ay))
+      local ux, uy = normals[l], normals[l + 1]
+      local lo
+      if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
+        lo = huge
+        local kax, kay = ax * k, ay * k
+        for j = 1, no - 1, 2 do
+          lo = min(lo, ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay))
         end
-        highest = max(highest, lo)
-        top = top + 1
-        fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
-        seam[top], reach[top] = internal[i], abs(lift - lo)
+      else
+        lo = leastProjection(other, no, ax, ay, ux, uy)
       end
+      highest = max(highest, lo - (1 - edge) * FAR)
+      local slot = top + 1
+      fx[slot], fy[slot], fc[slot] = ux * sense, uy * sense, -lo
+      seam[slot], reach[slot] = internal[l], abs(lift - lo)
+      top = top + edge
       ax, ay = bx, by
     end
     -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic):

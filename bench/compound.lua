@@ -60,6 +60,16 @@ local function timingRows()
     end
     needed[k] = list
   end
+  local neededTurned = {}   -- the same for the turned crates
+  for k, c in ipairs(turned) do
+    local x0, y0, x1, y1 = polygon.polygonBounds(c)
+    local list = {}
+    for _, p in ipairs(floor) do
+      local px0, py0, px1, py1 = polygon.polygonBounds(p)
+      if px0 < x1 and x0 < px1 and py0 < y1 and y0 < py1 then list[#list + 1] = p end
+    end
+    neededTurned[k] = list
+  end
 
   return {
     { "pushFloor", "compound V: crate vs 20-part floor", function(i)
@@ -99,6 +109,11 @@ local function timingRows()
     end },
     { "pushTurned", "compound V: turned crate vs 20-part floor", function(i)
       return (V(floor, turned[i % 100 + 1]))
+    end },
+    { "pushTurnedPairs", "sum of convex V pair calls it needs (turned)", function(i)
+      local c, sum = turned[i % 100 + 1], 0
+      for _, p in ipairs(neededTurned[i % 100 + 1]) do sum = sum + (V(p, c) or 0) end
+      return sum
     end },
     { "pushSlope", "compound V: crate vs 20 sloped columns", function(i)
       return (V(slope, crates[i % 100 + 1]))
