@@ -1651,13 +1651,16 @@ end
 -- has the sign of lo for sure, with room for the rounding of both squares, and one comparison
 -- with a number computed once per call replaces a tolerance per edge. Within it, vertexInside
 -- decides exactly.
--- Two bodies. On LuaJIT one flat loop runs over every (edge, vertex) pair, projecting with max
--- and min, and an edge's verdict is taken when its last vertex is projected: the nested loops
--- (a loop of 6 to 8 steps per edge) often failed to become traces of their own ("leaving loop in
--- root trace"), other traces then copied them unrolled, and side traces leaving those copies
--- could not be compiled ("NYI: register coalescing too complex"); a loop of some 50 steps
--- compiles, and the flat loop took 0.34 of the tutorial's time where the nested ones took 0.41
--- (`luajit bench/isolated.lua polygonsCollideV`). PUC Lua runs reachBoth instead, below.
+-- Two bodies. On LuaJIT, for `other` of at most 8 vertices, one loop over the edges projects
+-- all of other's vertices in one expression (the last one repeated for fewer, harmless to a
+-- min), with no inner loop: LuaJIT hoists the vertices' loads out of the loop, the edges are
+-- independent of each other, and only a rare edge (within tolSq, or apart) leaves the loop's
+-- trace. Larger polygons, and the rare edges whose -0.0 or NaN a selection without a branch
+-- would not keep as the comparisons do, run reachPastFull: one flat loop over every (edge,
+-- vertex) pair, whose edge's verdict is a side exit of its trace taken at every edge's last
+-- vertex (nested loops over a polygon's 6 to 8 vertices failed to become traces of their own,
+-- "leaving loop in root trace", and their unrolled copies' side traces failed to compile, "NYI:
+-- register coalescing too complex"). PUC Lua runs reachBoth instead, below.
 
 -- Whether other reaches past the edge of `edges` ending at vertex index k, decided exactly.
 local function edgeReached(edges, ne, turn, other, no, k)
@@ -1675,9 +1678,15 @@ local function squaredTolerance(spanX, spanY)
   return tolSq
 end
 
+-- 1 when d > 0, else 0, without a branch (for LuaJIT: d is a difference of doubles or inf, never
+-- NaN; a positive one is at least 2^-1074, which the two factors take above 1, and 0 stays 0).
+local function isAbove(d)
+  return min(1, max(0, d * 2^1000 * 2^1000))
+end
+
 local reachPast, reachBoth
 if JIT then
-  reachPast = function(edges, ne, turn, other, no, _, tolSq)
+  local reachPastFull = function(edges, ne, turn, other, no, tolSq)
     local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
     local ia, ib = ne - 1, 1
     local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
@@ -1709,6 +1718,53 @@ if JIT then
         nx, ny = ((edges[jb + 1] + 0.0) - ay) * turn, (ax - edges[jb]) * turn
         lo, i = huge, 1
       end
+    end
+    return leastSquared, leastOverlap, leastEnd
+  end
+
+  reachPast = function(edges, ne, turn, other, no, tolSq)
+    if no > 16 then
+      local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
+      return least, overlap, edgeEnd
+    end
+    -- other's vertices 2 to 8, the last one repeated for fewer (harmless to a min)
+    local j2, j3, j4 = min(3, no - 1), min(5, no - 1), min(7, no - 1)
+    local j5, j6, j7, j8 = min(9, no - 1), min(11, no - 1), min(13, no - 1), no - 1
+    local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
+    local ia = ne - 1
+    for ib = 1, ne - 1, 2 do
+      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+      local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
+      local lo = min(nx * (other[1] - ax) + ny * (other[2] - ay),
+        nx * (other[j2] - ax) + ny * (other[j2 + 1] - ay),
+        nx * (other[j3] - ax) + ny * (other[j3 + 1] - ay),
+        nx * (other[j4] - ax) + ny * (other[j4 + 1] - ay),
+        nx * (other[j5] - ax) + ny * (other[j5 + 1] - ay),
+        nx * (other[j6] - ax) + ny * (other[j6 + 1] - ay),
+        nx * (other[j7] - ax) + ny * (other[j7 + 1] - ay),
+        nx * (other[j8] - ax) + ny * (other[j8 + 1] - ay))
+      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
+      if not (squaredDepth > tolSq and squaredDepth < huge and lo < 0) then
+        -- a repeated vertex (no axis), beyond the exact range, or lo >= 0 (then -0.0 as
+        -- reachPastFull gives it): the loop over every pair
+        if not (squaredDepth < huge) then   -- luacheck: ignore 581 (NaN too)
+          local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
+          return least, overlap, edgeEnd
+        end
+        if squaredDepth > tolSq then return false end   -- surely apart
+        if not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn, other, no) then
+          return false
+        end
+        if lo >= 0 then
+          local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
+          return least, overlap, edgeEnd
+        end
+      end
+      local better = isAbove(leastSquared - squaredDepth)
+      leastSquared = min(leastSquared, squaredDepth)
+      leastOverlap = better * -lo + (1 - better) * leastOverlap
+      leastEnd = better * ib + (1 - better) * leastEnd
+      ia = ib
     end
     return leastSquared, leastOverlap, leastEnd
   end
@@ -1819,12 +1875,6 @@ else
     if leastKey < n1 then return least, leastOverlap, leastKey, 1 end
     return least, leastOverlap, leastKey - n1, 2
   end
-end
-
--- 1 when d > 0, else 0, without a branch (for LuaJIT: d is a difference of doubles or inf, never
--- NaN; a positive one is at least 2^-1074, which the two factors take above 1, and 0 stays 0).
-local function isAbove(d)
-  return min(1, max(0, d * 2^1000 * 2^1000))
 end
 
 -- For reachPastBothEnds: -lo and hi - own, where [lo, hi] is the range of the projections
@@ -2010,9 +2060,9 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     local tolSq = 2^-98 * (spanX * spanX + spanY * spanY)   -- squaredTolerance, inlined
     if tolSq < 2^-1000 then tolSq = huge end
     if JIT then
-      squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, tolSq)
+      squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, tolSq)
       if not squaredDepth then return false end
-      local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, tolSq)
+      local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, tolSq)
       if not squaredDepth2 then return false end
       owner = 1
       if squaredDepth2 < squaredDepth then   -- keep the least penetration
