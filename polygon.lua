@@ -367,7 +367,7 @@ if JIT then
   -- The first vertex and the previous one are read from points in every step (LuaJIT hoists the
   -- first and forwards the previous): only the seven sums cross from one step to the next, so a
   -- side trace that leaves the loop midway inherits few values (see lineShortfall).
-  shoelaceBounds = function(points, n)
+  local shoelaceBoundsLoop = function(points, n)
     local sum, xSq, dSq = 0.0, 0.0, 0.0
     local xmin, xmax, ymin, ymax = points[1] + 0.0, points[1] + 0.0, points[2] + 0.0, points[2] + 0.0
     for i = 3, n - 1, 2 do
@@ -381,6 +381,35 @@ if JIT then
     end
     local d = (points[2] + 0.0) - points[n]
     return sum + (points[n - 1] - points[1]) * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
+  end
+  shoelaceBounds = function(points, n)
+    if n > 16 then
+      local sum, xSq, dSq, xmin, xmax, ymin, ymax = shoelaceBoundsLoop(points, n)
+      return sum, xSq, dSq, xmin, xmax, ymin, ymax
+    end
+    -- vertices 2 to 8, the last one repeated for fewer (its edges add 0 to the sum)
+    local x1, y1 = points[1] + 0.0, points[2] + 0.0
+    local j = min(3, n - 1)
+    local x2, y2 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(5, n - 1)
+    local x3, y3 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(7, n - 1)
+    local x4, y4 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(9, n - 1)
+    local x5, y5 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(11, n - 1)
+    local x6, y6 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(13, n - 1)
+    local x7, y7 = points[j] + 0.0, points[j + 1] + 0.0
+    local x8, y8 = points[n - 1] + 0.0, points[n] + 0.0
+    local xmin, xmax = min(x1, x2, x3, x4, x5, x6, x7, x8), max(x1, x2, x3, x4, x5, x6, x7, x8)
+    local ymin, ymax = min(y1, y2, y3, y4, y5, y6, y7, y8), max(y1, y2, y3, y4, y5, y6, y7, y8)
+    x2, x3, x4, x5, x6, x7, x8 = x2 - x1, x3 - x1, x4 - x1, x5 - x1, x6 - x1, x7 - x1, x8 - x1
+    local sum = ((x2 * (y2 - y1) + (x2 + x3) * (y3 - y2)) + ((x3 + x4) * (y4 - y3)
+      + (x4 + x5) * (y5 - y4))) + (((x5 + x6) * (y6 - y5) + (x6 + x7) * (y7 - y6))
+      + ((x7 + x8) * (y8 - y7) + x8 * (y1 - y8)))
+    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
+    return sum, m * spanX * spanX + (sum - sum), m * spanY * spanY, xmin, xmax, ymin, ymax
   end
 else
   -- Here xSq and dSq come from the box, not from sums: every |X| is at most spanX and every |d|
