@@ -1776,14 +1776,16 @@ if JIT then
     for ib = 1, ne - 1, 2 do
       local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
       local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
-      local lo = min(nx * (other[1] - ax) + ny * (other[2] - ay),
-        nx * (other[j2] - ax) + ny * (other[j2 + 1] - ay),
-        nx * (other[j3] - ax) + ny * (other[j3 + 1] - ay),
-        nx * (other[j4] - ax) + ny * (other[j4 + 1] - ay),
-        nx * (other[j5] - ax) + ny * (other[j5 + 1] - ay),
-        nx * (other[j6] - ax) + ny * (other[j6 + 1] - ay),
-        nx * (other[j7] - ax) + ny * (other[j7 + 1] - ay),
-        nx * (other[j8] - ax) + ny * (other[j8 + 1] - ay))
+      -- (a tree of mins, not a chain: the edges' work overlaps more where each is shorter)
+      local lo = min(
+        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
+                nx * (other[j2] - ax) + ny * (other[j2 + 1] - ay)),
+            min(nx * (other[j3] - ax) + ny * (other[j3 + 1] - ay),
+                nx * (other[j4] - ax) + ny * (other[j4 + 1] - ay))),
+        min(min(nx * (other[j5] - ax) + ny * (other[j5 + 1] - ay),
+                nx * (other[j6] - ax) + ny * (other[j6 + 1] - ay)),
+            min(nx * (other[j7] - ax) + ny * (other[j7 + 1] - ay),
+                nx * (other[j8] - ax) + ny * (other[j8 + 1] - ay))))
       local squaredDepth = lo * (lo / (nx * nx + ny * ny))
       if not (squaredDepth > tolSq and squaredDepth < huge and lo < 0) then
         -- a repeated vertex (no axis), beyond the exact range, or lo >= 0 (then -0.0 as
