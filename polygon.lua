@@ -1768,46 +1768,48 @@ if JIT then
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
     end
-    -- other's vertices 2 to 8, the last one repeated for fewer (harmless to a min)
-    local j2, j3, j4 = min(3, no - 1), min(5, no - 1), min(7, no - 1)
-    local j5, j6, j7, j8 = min(9, no - 1), min(11, no - 1), min(13, no - 1), no - 1
     local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
+    local rareEnd, rareLeast, rareSquared   -- the first edge the loop cannot take as it is
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
       local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
       local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
-      -- (a tree of mins, not a chain: the edges' work overlaps more where each is shorter)
+      -- other's vertices, the last one repeated for fewer than 8 (harmless to a min; the indices
+      -- are not locals, which a side trace leaving the loop would take over in registers), as a
+      -- tree of mins, not a chain: the edges' work overlaps more where each is shorter
       local lo = min(
         min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
-                nx * (other[j2] - ax) + ny * (other[j2 + 1] - ay)),
-            min(nx * (other[j3] - ax) + ny * (other[j3 + 1] - ay),
-                nx * (other[j4] - ax) + ny * (other[j4 + 1] - ay))),
-        min(min(nx * (other[j5] - ax) + ny * (other[j5 + 1] - ay),
-                nx * (other[j6] - ax) + ny * (other[j6 + 1] - ay)),
-            min(nx * (other[j7] - ax) + ny * (other[j7 + 1] - ay),
-                nx * (other[j8] - ax) + ny * (other[j8 + 1] - ay))))
+                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
+            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
+                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
+        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
+                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
+            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
+                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
       local squaredDepth = lo * (lo / (nx * nx + ny * ny))
       if not (squaredDepth > tolSq and squaredDepth < huge and lo < 0) then
-        -- a repeated vertex (no axis), beyond the exact range, or lo >= 0 (then -0.0 as
-        -- reachPastFull gives it): the loop over every pair
-        if not (squaredDepth < huge) then   -- luacheck: ignore 581 (NaN too)
-          local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
-          return least, overlap, edgeEnd
-        end
-        if squaredDepth > tolSq then return false end   -- surely apart
-        if not vertexInside(ax, ay, edges[ib], edges[ib + 1], ax, ay, turn, other, no) then
-          return false
-        end
-        if lo >= 0 then
-          local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
-          return least, overlap, edgeEnd
-        end
+        rareEnd, rareLeast, rareSquared = ib, lo, squaredDepth
+        break
       end
       local better = isAbove(leastSquared - squaredDepth)
       leastSquared = min(leastSquared, squaredDepth)
       leastOverlap = better * -lo + (1 - better) * leastOverlap
       leastEnd = better * ib + (1 - better) * leastEnd
       ia = ib
+    end
+    if rareEnd then
+      -- apart, surely or decided exactly; else (reached past exactly, no axis, beyond the exact
+      -- range) reachPastFull decides from the start
+      if rareSquared > tolSq and rareSquared < huge and rareLeast > 0 then return false end
+      if rareSquared <= tolSq then
+        local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+        if not vertexInside(ax, ay, edges[rareEnd], edges[rareEnd + 1], ax, ay, turn, other,
+                            no) then
+          return false
+        end
+      end
+      local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
+      return least, overlap, edgeEnd
     end
     return leastSquared, leastOverlap, leastEnd
   end
