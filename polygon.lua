@@ -70,8 +70,10 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- across their loops, since a side trace leaving a loop must take them all over in registers,
 -- and avoid short inner loops: a loop of a few steps (a polygon's vertices) often fails to
 -- become a trace of its own, and other traces then copy it unrolled, with a side exit for every
--- other polygon size (so the SAT's loops run flat over (edge, vertex) pairs; `bash
--- bench/aborts.sh` counts what LuaJIT still aborts). The PUC bodies count instructions instead
+-- other polygon size (so the SAT's hot paths read up to 8 vertices in one expression, the last
+-- one repeated for fewer, and run flat over (edge, vertex) pairs beyond; a short loop has no
+-- data-dependent exit but its last; `bash bench/aborts.sh` counts what LuaJIT still aborts).
+-- The PUC bodies count instructions instead
 -- (`lua5.4 bench/instructions.lua`): the two-sided SAT walks both polygons' edges at once
 -- (rotating calipers), one projection an edge, where LuaJIT projects every pair.
 --
@@ -361,12 +363,15 @@ end
 -- exits were side traces of this loop, and with those of the code after it they passed LuaJIT's
 -- 100 side traces per loop, after which whole calls ran in the interpreter (`luajit -jv
 -- bench/run.lua --only 'polygonsCollideV pMix'`). The PUC interpreters call min and max as
--- functions, so there the comparisons are faster. The two bodies compute the same numbers.
+-- functions, so there the comparisons are faster. The two bodies compute the same box and sum;
+-- xSq and dSq may differ (the PUC body's, and the LuaJIT body's up to 8 vertices, bound them by
+-- the box), which changes only how often areaSignOf needs its exact path, never its sign.
 local shoelaceBounds
 if JIT then
-  -- The first vertex and the previous one are read from points in every step (LuaJIT hoists the
-  -- first and forwards the previous): only the seven sums cross from one step to the next, so a
-  -- side trace that leaves the loop midway inherits few values (see lineShortfall).
+  -- Beyond 8 vertices a loop. The first vertex and the previous one are read from points in
+  -- every step (LuaJIT hoists the first and forwards the previous): only the seven sums cross
+  -- from one step to the next, so a side trace that leaves the loop midway inherits few values
+  -- (see lineShortfall).
   local shoelaceBoundsLoop = function(points, n)
     local sum, xSq, dSq = 0.0, 0.0, 0.0
     local xmin, xmax, ymin, ymax = points[1] + 0.0, points[1] + 0.0, points[2] + 0.0, points[2] + 0.0
@@ -387,7 +392,11 @@ if JIT then
       local sum, xSq, dSq, xmin, xmax, ymin, ymax = shoelaceBoundsLoop(points, n)
       return sum, xSq, dSq, xmin, xmax, ymin, ymax
     end
-    -- vertices 2 to 8, the last one repeated for fewer (its edges add 0 to the sum)
+    -- Up to 8 vertices no loop: a loop of 3 to 8 steps is a trace of its own whose entry and
+    -- exit cost more than its steps (a miss, decided by the boxes, took 0.27 to 0.32 of the
+    -- tutorial's time with the loop, 0.12 to 0.16 without: `luajit bench/isolated.lua
+    -- polygonsCollideV miss`). Vertices 2 to 8, the last one repeated for fewer (its edges add
+    -- 0 to the sum); the sum in pairs, as a tree, where the loop's is a chain.
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local j = min(3, n - 1)
     local x2, y2 = points[j] + 0.0, points[j + 1] + 0.0
@@ -1700,14 +1709,21 @@ end
 -- decides exactly.
 -- Two bodies. On LuaJIT, for `other` of at most 8 vertices, one loop over the edges projects
 -- all of other's vertices in one expression (the last one repeated for fewer, harmless to a
--- min), with no inner loop: LuaJIT hoists the vertices' loads out of the loop, the edges are
--- independent of each other, and only a rare edge (within tolSq, or apart) leaves the loop's
--- trace. Larger polygons, and the rare edges whose -0.0 or NaN a selection without a branch
--- would not keep as the comparisons do, run reachPastFull: one flat loop over every (edge,
--- vertex) pair, whose edge's verdict is a side exit of its trace taken at every edge's last
--- vertex (nested loops over a polygon's 6 to 8 vertices failed to become traces of their own,
--- "leaving loop in root trace", and their unrolled copies' side traces failed to compile, "NYI:
--- register coalescing too complex"). PUC Lua runs reachBoth instead, below.
+-- min), with no inner loop and no data-dependent exit but one: LuaJIT hoists the vertices'
+-- loads out of the loop, the edges do not wait for each other (the least is kept by selection
+-- with isAbove), and the first edge within tolSq or apart (a touching pair's) leaves the loop
+-- and is decided after it; if it is reached past after all, reachPastFull decides from the
+-- start, as it does for larger polygons and where a selection would not keep -0.0 or NaN as
+-- the comparisons do. Taking that edge inside the loop, the side traces of vertexInside ran on
+-- into the loop before it was compiled and copied it, and the copy's exits failed to compile
+-- ("NYI: register coalescing too complex", `bash bench/aborts.sh 6 polygonsCollideV`).
+-- reachPastFull is one flat loop over every (edge, vertex) pair, whose edge's verdict is a side
+-- exit of its trace taken at every edge's last vertex (nested loops over a polygon's 6 to 8
+-- vertices failed to become traces of their own, "leaving loop in root trace", and their
+-- unrolled copies' side traces failed to compile). With the one loop over the edges
+-- polygonsCollideV took 0.24 to 0.27 of the tutorial's time where the flat loop took 0.28 to
+-- 0.33, and its overlapping pairs 0.27 to 0.29, not 0.36 to 0.42 (`luajit bench/isolated.lua
+-- polygonsCollideV` and `... polygonsCollideV overlap`). PUC Lua runs reachBoth instead, below.
 
 -- Whether other reaches past the edge of `edges` ending at vertex index k, decided exactly.
 local function edgeReached(edges, ne, turn, other, no, k)
