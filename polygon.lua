@@ -1638,11 +1638,74 @@ if JIT then
     local sure, maybe = -huge, -huge
     -- how many vertices are not surely outside, and the first and the last of them
     local open, first, last = 0, 2^60, 0
-    for i = 1, n - 1, 2 do
-      local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
-      local det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+    if n > 16 then
+      for i = 1, n - 1, 2 do
+        local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+        local det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+        sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+        local unsure = isAbove(det + bound)
+        open, first, last = open + unsure, min(first, i + (1 - unsure) * 2^60),
+          max(last, i * unsure)
+      end
+    else
+      -- Up to 8 vertices written out, the last one repeated for fewer and counted once: a loop
+      -- of 6 to 8 steps here was copied unrolled by the side trace that reaches it from
+      -- reachPast, one copy per polygon size, whose exits for the other sizes failed to compile
+      -- ("NYI: register coalescing too complex", in 1 to 3 of 12 runs of the mixed pairs).
+      local i, l, r, det, bound, unsure
+      i = 1
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
       sure, maybe = max(sure, det - bound), max(maybe, det + bound)
-      local unsure = isAbove(det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure, min(first, i + (1 - unsure) * 2^60), max(last, i * unsure)
+      i = min(3, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 4), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(5, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 6), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(7, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 8), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(9, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 10), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(11, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 12), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(13, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 14), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = n - 1
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
       open, first, last = open + unsure, min(first, i + (1 - unsure) * 2^60), max(last, i * unsure)
     end
     if sure > 0 then return true end
@@ -1709,14 +1772,14 @@ end
 -- decides exactly.
 -- Two bodies. On LuaJIT, for `other` of at most 8 vertices, one loop over the edges projects
 -- all of other's vertices in one expression (the last one repeated for fewer, harmless to a
--- min), with no inner loop and no data-dependent exit but one: LuaJIT hoists the vertices'
--- loads out of the loop, the edges do not wait for each other (the least is kept by selection
--- with isAbove), and the first edge within tolSq or apart (a touching pair's) leaves the loop
--- and is decided after it; if it is reached past after all, reachPastFull decides from the
+-- min), with no inner loop and no data-dependent exit: LuaJIT hoists the vertices' loads out
+-- of the loop, the edges do not wait for each other (the least is kept by selection with
+-- isAbove), and the loop only notes the first edge within tolSq or apart (a touching pair's),
+-- which is decided after it; if it is reached past after all, reachPastFull decides from the
 -- start, as it does for larger polygons and where a selection would not keep -0.0 or NaN as
--- the comparisons do. Taking that edge inside the loop, the side traces of vertexInside ran on
--- into the loop before it was compiled and copied it, and the copy's exits failed to compile
--- ("NYI: register coalescing too complex", `bash bench/aborts.sh 6 polygonsCollideV`).
+-- the comparisons do. With an exit at that edge, side traces that reached the loop before it
+-- was compiled copied it, and the copy's exits failed to compile ("NYI: register coalescing
+-- too complex", 2,216 aborts in 1 of 12 runs of the touching pairs, `luajit -jv`).
 -- reachPastFull is one flat loop over every (edge, vertex) pair, whose edge's verdict is a side
 -- exit of its trace taken at every edge's last vertex (nested loops over a polygon's 6 to 8
 -- vertices failed to become traces of their own, "leaving loop in root trace", and their
@@ -1785,7 +1848,7 @@ if JIT then
       return least, overlap, edgeEnd
     end
     local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
-    local rareEnd, rareLeast, rareSquared   -- the first edge the loop cannot take as it is
+    local rareEnd = 2^60   -- the first edge the loop cannot take as it is, if any
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
       local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
@@ -1802,27 +1865,37 @@ if JIT then
                 nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
             min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
                 nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
-      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
-      if not (squaredDepth > tolSq and squaredDepth < huge and lo < 0) then
-        rareEnd, rareLeast, rareSquared = ib, lo, squaredDepth
-        break
-      end
+      -- (a repeated vertex gives no axis: n = 0, lo = 0, and the squared depth 0, not 0 / 0)
+      local squaredDepth = lo * (lo / max(nx * nx + ny * ny, 2^-1074))
+      -- taken as it is when surely reached past (lo < 0) by a finite depth beyond tolSq
+      rareEnd = min(rareEnd,
+        ib + 2^60 * isAbove(min(min(squaredDepth - tolSq, 2^1023 - squaredDepth), -lo)))
       local better = isAbove(leastSquared - squaredDepth)
       leastSquared = min(leastSquared, squaredDepth)
       leastOverlap = better * -lo + (1 - better) * leastOverlap
       leastEnd = better * ib + (1 - better) * leastEnd
       ia = ib
     end
-    if rareEnd then
-      -- apart, surely or decided exactly; else (reached past exactly, no axis, beyond the exact
-      -- range) reachPastFull decides from the start
-      if rareSquared > tolSq and rareSquared < huge and rareLeast > 0 then return false end
-      if rareSquared <= tolSq then
-        local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
-        if not vertexInside(ax, ay, edges[rareEnd], edges[rareEnd + 1], ax, ay, turn, other,
-                            no) then
-          return false
-        end
+    if rareEnd < 2^60 then
+      -- Apart, surely or decided exactly; else (reached past exactly, no axis, beyond the exact
+      -- range) reachPastFull decides from the start. (The loop's selections are not used then.)
+      ia = rareEnd == 1 and ne - 1 or rareEnd - 2
+      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+      local nx, ny = ((edges[rareEnd + 1] + 0.0) - ay) * turn, (ax - edges[rareEnd]) * turn
+      local lo = min(
+        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
+                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
+            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
+                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
+        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
+                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
+            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
+                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
+      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
+      if squaredDepth > tolSq and squaredDepth < huge and lo > 0 then return false end
+      if squaredDepth <= tolSq and not vertexInside(ax, ay, edges[rareEnd], edges[rareEnd + 1],
+                                                    ax, ay, turn, other, no) then
+        return false
       end
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
