@@ -71,8 +71,10 @@ local type, error, tostring, setmetatable = type, error, tostring, setmetatable
 -- across their loops, since a side trace leaving a loop must take them all over in registers,
 -- and avoid short inner loops: a loop of a few steps (a polygon's vertices) often fails to
 -- become a trace of its own, and other traces then copy it unrolled, with a side exit for every
--- other polygon size (so the SAT's loops run flat over (edge, vertex) pairs; `bash
--- bench/aborts.sh` counts what LuaJIT still aborts). The PUC bodies count instructions instead
+-- other polygon size (so the SAT's hot paths read up to 8 vertices in one expression, the last
+-- one repeated for fewer, and run flat over (edge, vertex) pairs beyond; a short loop has no
+-- data-dependent exit but its last; `bash bench/aborts.sh` counts what LuaJIT still aborts).
+-- The PUC bodies count instructions instead
 -- (`lua5.4 bench/instructions.lua`): the two-sided SAT walks both polygons' edges at once
 -- (rotating calipers), one projection an edge, where LuaJIT projects every pair.
 --
@@ -363,13 +365,15 @@ end
 -- 100 side traces per loop, after which whole calls ran in the interpreter (`luajit -jv
 -- bench/run.lua --only 'polygonsCollideV pMix'`). The PUC interpreters call min and max as
 -- functions, so there comparisons are faster, and the area's sign is decided in the same call:
--- turnAndBounds, below.
+-- turnAndBounds, below. LuaJIT's xSq and dSq up to 8 vertices bound the sums by the box, as
+-- turnAndBounds does, which changes only how often areaSignOf needs its exact path, never its sign.
 local shoelaceBounds
 if JIT then
-  -- The first vertex and the previous one are read from points in every step (LuaJIT hoists the
-  -- first and forwards the previous): only the seven sums cross from one step to the next, so a
-  -- side trace that leaves the loop midway inherits few values (see lineShortfall).
-  shoelaceBounds = function(points, n)
+  -- Beyond 8 vertices a loop. The first vertex and the previous one are read from points in
+  -- every step (LuaJIT hoists the first and forwards the previous): only the seven sums cross
+  -- from one step to the next, so a side trace that leaves the loop midway inherits few values
+  -- (see lineShortfall).
+  local shoelaceBoundsLoop = function(points, n)
     local sum, xSq, dSq = 0.0, 0.0, 0.0
     local xmin, xmax, ymin, ymax = points[1] + 0.0, points[1] + 0.0, points[2] + 0.0, points[2] + 0.0
     for i = 3, n - 1, 2 do
@@ -383,6 +387,39 @@ if JIT then
     end
     local d = (points[2] + 0.0) - points[n]
     return sum + (points[n - 1] - points[1]) * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
+  end
+  shoelaceBounds = function(points, n)
+    if n > 16 then
+      local sum, xSq, dSq, xmin, xmax, ymin, ymax = shoelaceBoundsLoop(points, n)
+      return sum, xSq, dSq, xmin, xmax, ymin, ymax
+    end
+    -- Up to 8 vertices no loop: a loop of 3 to 8 steps is a trace of its own whose entry and
+    -- exit cost more than its steps (a miss, decided by the boxes, took 0.27 to 0.32 of the
+    -- tutorial's time with the loop, 0.12 to 0.16 without: `luajit bench/isolated.lua
+    -- polygonsCollideV miss`). Vertices 2 to 8, the last one repeated for fewer (its edges add
+    -- 0 to the sum); the sum in pairs, as a tree, where the loop's is a chain.
+    local x1, y1 = points[1] + 0.0, points[2] + 0.0
+    local j = min(3, n - 1)
+    local x2, y2 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(5, n - 1)
+    local x3, y3 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(7, n - 1)
+    local x4, y4 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(9, n - 1)
+    local x5, y5 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(11, n - 1)
+    local x6, y6 = points[j] + 0.0, points[j + 1] + 0.0
+    j = min(13, n - 1)
+    local x7, y7 = points[j] + 0.0, points[j + 1] + 0.0
+    local x8, y8 = points[n - 1] + 0.0, points[n] + 0.0
+    local xmin, xmax = min(x1, x2, x3, x4, x5, x6, x7, x8), max(x1, x2, x3, x4, x5, x6, x7, x8)
+    local ymin, ymax = min(y1, y2, y3, y4, y5, y6, y7, y8), max(y1, y2, y3, y4, y5, y6, y7, y8)
+    x2, x3, x4, x5, x6, x7, x8 = x2 - x1, x3 - x1, x4 - x1, x5 - x1, x6 - x1, x7 - x1, x8 - x1
+    local sum = ((x2 * (y2 - y1) + (x2 + x3) * (y3 - y2)) + ((x3 + x4) * (y4 - y3)
+      + (x4 + x5) * (y5 - y4))) + (((x5 + x6) * (y6 - y5) + (x6 + x7) * (y7 - y6))
+      + ((x7 + x8) * (y8 - y7) + x8 * (y1 - y8)))
+    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
+    return sum, m * spanX * spanX + (sum - sum), m * spanY * spanY, xmin, xmax, ymin, ymax
   end
 end
 
@@ -1577,6 +1614,12 @@ local function projectionTolerance(spanX, spanY, nx, ny)
   return 16 * EPS * (spanX * abs(nx) + spanY * abs(ny))
 end
 
+-- 1 when d > 0, else 0, without a branch (for LuaJIT: d is a difference of doubles or inf, never
+-- NaN; a positive one is at least 2^-1074, which the two factors take above 1, and 0 stays 0).
+local function isAbove(d)
+  return min(1, max(0, d * 2^1000 * 2^1000))
+end
+
 -- The SAT engine's one exact fallback: whether a vertex of points lies strictly on the side
 -- `inside` (1 or -1, the sign of the cross product) of the line through c parallel to a -> b
 -- (a and b converted to doubles): whether e x (p - c) has that sign for some vertex p, with e
@@ -1587,28 +1630,103 @@ end
 -- nothing underflows.
 -- Two bodies giving the same answer. On LuaJIT a first pass keeps the largest det - bound and
 -- det + bound with max and abs, no branch (the branches' side exits, taken from traces that had
--- unrolled this loop, failed to compile: "NYI: register coalescing too complex"), and when it
--- cannot decide, a second pass with no early exit (an exit in it made LuaJIT abort the loop's
--- trace, "leaving loop in root trace") sends every vertex to crossExact, whose stage B decides
--- all but exactly collinear ones with inexact differences (through cross, the vertices near the
--- line took its filter's side exit, and those side traces failed to compile too). On PUC Lua one
--- pass returns at the first vertex surely inside, and calls crossExact only for the vertices
--- the filter cannot place (on a touching pair's shared edge the second pass took a third of
--- this): cross's own filter, on the same products turned by `inside`, could not place them
--- either, short of a det exactly at its bound, whose sign crossExact gives too.
+-- unrolled this loop, failed to compile: "NYI: register coalescing too complex"), and counts
+-- the vertices it cannot place, keeping the first and the last. When it cannot decide, those
+-- go to crossExact, whose stage B decides all but exactly collinear ones with inexact
+-- differences (through cross, the vertices near the line took its filter's side exit, and
+-- those side traces failed to compile too): at most two of them (a touching pair's shared
+-- edge, a vertex on the edge) by two calls, where a pass over every vertex took touching pairs
+-- 0.31 to 0.32 of the tutorial's time, not 0.26 to 0.27 (`luajit bench/isolated.lua
+-- polygonsCollideV touch`); more by a second pass with no early exit (an exit in it made
+-- LuaJIT abort the loop's trace, "leaving loop in root trace"). On PUC Lua one pass returns at
+-- the first vertex surely inside, and calls crossExact only for the vertices the filter cannot
+-- place (on a touching pair's shared edge the second pass took a third of this): cross's own
+-- filter, on the same products turned by `inside`, could not place them either, short of a det
+-- exactly at its bound, whose sign crossExact gives too.
 local vertexInside
 if JIT then
   vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
     cx, cy = cx + 0.0, cy + 0.0
     local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
     local sure, maybe = -huge, -huge
-    for i = 1, n - 1, 2 do
-      local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
-      local det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+    -- how many vertices are not surely outside, and the first and the last of them
+    local open, first, last = 0, 2^60, 0
+    if n > 16 then
+      for i = 1, n - 1, 2 do
+        local l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+        local det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+        sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+        local unsure = isAbove(det + bound)
+        open, first, last = open + unsure, min(first, i + (1 - unsure) * 2^60),
+          max(last, i * unsure)
+      end
+    else
+      -- Up to 8 vertices written out, the last one repeated for fewer and counted once: a loop
+      -- of 6 to 8 steps here was copied unrolled by the side trace that reaches it from
+      -- reachPast, one copy per polygon size, whose exits for the other sizes failed to compile
+      -- ("NYI: register coalescing too complex", in 1 to 3 of 12 runs of the mixed pairs).
+      local i, l, r, det, bound, unsure
+      i = 1
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
       sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure, min(first, i + (1 - unsure) * 2^60), max(last, i * unsure)
+      i = min(3, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 4), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(5, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 6), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(7, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 8), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(9, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 10), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(11, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 12), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = min(13, n - 1)
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure * isAbove(n - 14), min(first, i + (1 - unsure) * 2^60),
+        max(last, i * unsure)
+      i = n - 1
+      l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
+      det, bound = l - r, CROSS_BOUND * (abs(l) + abs(r))
+      sure, maybe = max(sure, det - bound), max(maybe, det + bound)
+      unsure = isAbove(det + bound)
+      open, first, last = open + unsure, min(first, i + (1 - unsure) * 2^60), max(last, i * unsure)
     end
     if sure > 0 then return true end
     if maybe <= 0 then return false end
+    if open <= 2 then   -- (as on a touching pair's shared edge, or a vertex on an edge)
+      return max(crossExact(ax, ay, bx, by, cx, cy, points[first] + 0.0, points[first + 1] + 0.0),
+        crossExact(ax, ay, bx, by, cx, cy, points[last] + 0.0, points[last + 1] + 0.0)) * inside > 0
+    end
     local found = 0.0
     for i = 1, n - 1, 2 do
       found = max(found, crossExact(ax, ay, bx, by, cx, cy, points[i] + 0.0, points[i + 1] + 0.0)
@@ -1673,13 +1791,23 @@ end
 -- has the sign of lo for sure, with room for the rounding of both squares, and one comparison
 -- with a number computed once per call replaces a tolerance per edge. Within it, vertexInside
 -- decides exactly.
--- Two bodies. On LuaJIT one flat loop runs over every (edge, vertex) pair, projecting with max
--- and min, and an edge's verdict is taken when its last vertex is projected: the nested loops
--- (a loop of 6 to 8 steps per edge) often failed to become traces of their own ("leaving loop in
--- root trace"), other traces then copied them unrolled, and side traces leaving those copies
--- could not be compiled ("NYI: register coalescing too complex"); a loop of some 50 steps
--- compiles, and the flat loop took 0.34 of the tutorial's time where the nested ones took 0.41
--- (`luajit bench/isolated.lua polygonsCollideV`). PUC Lua runs reachBoth instead, below.
+-- Two bodies. On LuaJIT, for `other` of at most 8 vertices, one loop over the edges projects
+-- all of other's vertices in one expression (the last one repeated for fewer, harmless to a
+-- min), with no inner loop and no data-dependent exit: LuaJIT hoists the vertices' loads out
+-- of the loop, the edges do not wait for each other (the least is kept by selection with
+-- isAbove), and the loop only notes the first edge within tolSq or apart (a touching pair's),
+-- which is decided after it; if it is reached past after all, reachPastFull decides from the
+-- start, as it does for larger polygons and where a selection would not keep -0.0 or NaN as
+-- the comparisons do. With an exit at that edge, side traces that reached the loop before it
+-- was compiled copied it, and the copy's exits failed to compile ("NYI: register coalescing
+-- too complex", 2,216 aborts in 1 of 12 runs of the touching pairs, `luajit -jv`).
+-- reachPastFull is one flat loop over every (edge, vertex) pair, whose edge's verdict is a side
+-- exit of its trace taken at every edge's last vertex (nested loops over a polygon's 6 to 8
+-- vertices failed to become traces of their own, "leaving loop in root trace", and their
+-- unrolled copies' side traces failed to compile). With the one loop over the edges
+-- polygonsCollideV took 0.24 to 0.27 of the tutorial's time where the flat loop took 0.28 to
+-- 0.33, and its overlapping pairs 0.27 to 0.29, not 0.36 to 0.42 (`luajit bench/isolated.lua
+-- polygonsCollideV` and `... polygonsCollideV overlap`). PUC Lua runs reachBoth instead, below.
 
 -- reachPast's and reachBoth's tolerance for polygons within a box of sides spanX and spanY:
 -- (16 eps)^2 (spanX^2 + spanY^2), or every axis decided exactly where that square would
@@ -1692,7 +1820,7 @@ end
 
 local reachPast, reachBoth
 if JIT then
-  reachPast = function(edges, ne, turn, other, no, _, tolSq)
+  local reachPastFull = function(edges, ne, turn, other, no, tolSq)
     local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
     local ia, ib = ne - 1, 1
     local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
@@ -1724,6 +1852,67 @@ if JIT then
         nx, ny = ((edges[jb + 1] + 0.0) - ay) * turn, (ax - edges[jb]) * turn
         lo, i = huge, 1
       end
+    end
+    return leastSquared, leastOverlap, leastEnd
+  end
+
+  reachPast = function(edges, ne, turn, other, no, tolSq)
+    if no > 16 then
+      local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
+      return least, overlap, edgeEnd
+    end
+    local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
+    local rareEnd = 2^60   -- the first edge the loop cannot take as it is, if any
+    local ia = ne - 1
+    for ib = 1, ne - 1, 2 do
+      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+      local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
+      -- other's vertices, the last one repeated for fewer than 8 (harmless to a min; the indices
+      -- are not locals, which a side trace leaving the loop would take over in registers), as a
+      -- tree of mins, not a chain: the edges' work overlaps more where each is shorter
+      local lo = min(
+        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
+                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
+            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
+                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
+        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
+                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
+            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
+                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
+      -- (a repeated vertex gives no axis: n = 0, lo = 0, and the squared depth 0, not 0 / 0)
+      local squaredDepth = lo * (lo / max(nx * nx + ny * ny, 2^-1074))
+      -- taken as it is when surely reached past (lo < 0) by a finite depth beyond tolSq
+      rareEnd = min(rareEnd,
+        ib + 2^60 * isAbove(min(min(squaredDepth - tolSq, 2^1023 - squaredDepth), -lo)))
+      local better = isAbove(leastSquared - squaredDepth)
+      leastSquared = min(leastSquared, squaredDepth)
+      leastOverlap = better * -lo + (1 - better) * leastOverlap
+      leastEnd = better * ib + (1 - better) * leastEnd
+      ia = ib
+    end
+    if rareEnd < 2^60 then
+      -- Apart, surely or decided exactly; else (reached past exactly, no axis, beyond the exact
+      -- range) reachPastFull decides from the start. (The loop's selections are not used then.)
+      ia = rareEnd == 1 and ne - 1 or rareEnd - 2
+      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+      local nx, ny = ((edges[rareEnd + 1] + 0.0) - ay) * turn, (ax - edges[rareEnd]) * turn
+      local lo = min(
+        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
+                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
+            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
+                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
+        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
+                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
+            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
+                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
+      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
+      if squaredDepth > tolSq and squaredDepth < huge and lo > 0 then return false end
+      if squaredDepth <= tolSq and not vertexInside(ax, ay, edges[rareEnd], edges[rareEnd + 1],
+                                                    ax, ay, turn, other, no) then
+        return false
+      end
+      local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
+      return least, overlap, edgeEnd
     end
     return leastSquared, leastOverlap, leastEnd
   end
@@ -1850,12 +2039,6 @@ else
     if leastKey < n1 then return least, leastOverlap, leastKey, 1 end
     return least, leastOverlap, leastKey - n1, 2
   end
-end
-
--- 1 when d > 0, else 0, without a branch (for LuaJIT: d is a difference of doubles or inf, never
--- NaN; a positive one is at least 2^-1074, which the two factors take above 1, and 0 stays 0).
-local function isAbove(d)
-  return min(1, max(0, d * 2^1000 * 2^1000))
 end
 
 -- For reachPastBothEnds: -lo and hi - own, where [lo, hi] is the range of the projections
@@ -2082,9 +2265,9 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     local tolSq = 2^-98 * (spanX * spanX + spanY * spanY)   -- squaredTolerance, inlined
     if tolSq < 2^-1000 then tolSq = huge end
     if JIT then
-      squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, turn2, tolSq)
+      squaredDepth, o, edgeEnd = reachPast(p1, n1, turn1, p2, n2, tolSq)
       if not squaredDepth then return false end
-      local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, turn1, tolSq)
+      local squaredDepth2, o2, edgeEnd2 = reachPast(p2, n2, turn2, p1, n1, tolSq)
       if not squaredDepth2 then return false end
       owner = 1
       if squaredDepth2 < squaredDepth then   -- keep the least penetration

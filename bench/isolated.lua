@@ -1,8 +1,10 @@
 -- bench/isolated.lua: one function timed alone against the baseline, in a small loop over the
 -- benchmark's own inputs, with nothing else in the process (no other workload's traces). Run
 -- from the repository root: `luajit bench/isolated.lua polygonsCollideV` (or
--- polygonCircleCollideV; any Lua). Prints ns per call of each side for 7 alternating rounds and
--- the median ratio. Compare with bench/run.lua's row to see what a crowded process costs.
+-- polygonCircleCollideV; any Lua; `luajit bench/isolated.lua polygonsCollideV touch` times one
+-- kind of the mixed pairs alone: overlap, touch or miss). Prints ns per call of each side for 7
+-- alternating rounds and the median ratio. Compare with bench/run.lua's row to see what a
+-- crowded process costs.
 -- On LuaJIT it also counts the traces compiled for polygon.lua's side (polygon.lua's side runs
 -- first, alone, until its traces settle) and the aborted ones by reason: a healthy function
 -- compiles a few dozen traces and aborts few, none with "NYI". Which traces form depends on the
@@ -15,6 +17,16 @@ local baseline = dofile("bench/baseline.lua")
 local fname = arg[1] or "polygonsCollideV"
 local args = fname == "polygonCircleCollideV" and W.circles(300, { 1, 2, 3, 4 })
   or W.pairs(300, { W.pairOverlap, W.pairTouch, W.pairMiss })
+-- an optional second argument times one kind of the pairs alone: overlap, touch or miss
+local kind = ({ overlap = 1, touch = 2, miss = 3 })[arg[2]]
+if arg[2] and (not kind or fname == "polygonCircleCollideV") then
+  error("kinds (overlap, touch, miss) are for the polygon pairs only", 0)
+end
+if kind then
+  local A, B = {}, {}
+  for i = kind, #args[1], 3 do A[#A + 1], B[#B + 1] = args[1][i], args[2][i] end
+  args = { A, B }
+end
 local A1, A2, A3, A4 = args[1], args[2], args[3], args[4]
 local n = #A1
 
@@ -57,4 +69,5 @@ for _ = 1, 7 do
   io.write(("%.0f/%.0f ns  "):format(lib, base))
 end
 table.sort(ratios)
-print(("\n%s: median ratio %.2f (polygon.lua / baseline)"):format(fname, ratios[4]))
+print(("\n%s%s: median ratio %.2f (polygon.lua / baseline)"):format(fname, arg[2] and " " .. arg[2] or "",
+  ratios[4]))
