@@ -1664,7 +1664,11 @@ if JIT then
       -- Up to 8 vertices written out, the last one repeated for fewer and counted once: a loop
       -- of 6 to 8 steps here was copied unrolled by the side trace that reaches it from
       -- reachPast, one copy per polygon size, whose exits for the other sizes failed to compile
-      -- ("NYI: register coalescing too complex", in 1 to 3 of 12 runs of the mixed pairs).
+      -- ("NYI: register coalescing too complex", in 1 to 3 of 12 runs of the mixed pairs). A
+      -- loop of a constant 8 steps, as faceAndFar's, has no such exits either, but took the
+      -- mixed pairs 0.30-0.38 of the tutorial's time where this takes 0.26-0.29 (`luajit
+      -- bench/isolated.lua polygonsCollideV`, four interleaved runs; touching pairs 0.35-0.36
+      -- against 0.31-0.34).
       local i, l, r, det, bound, unsure
       i = 1
       l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
