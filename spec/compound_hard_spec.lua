@@ -50,30 +50,36 @@ local function assertNone(wrong)
   end
 end
 
+-- check in both argument orders, counted into stats: the collisions, those whose excess is
+-- beyond the face margin, and the worst excess relative to the least push plus that margin
+local function checkBothOrders(s1, s2, wrong, stats)
+  for _, order in ipairs({ { s1, s2 }, { s2, s1 } }) do
+    local excess, slack, least = check(order[1], order[2], wrong)
+    if excess then
+      stats.collisions = stats.collisions + 1
+      if excess > slack then stats.beyondSlack = stats.beyondSlack + 1 end
+      stats.worst = math.max(stats.worst, excess / (least + slack))
+    end
+  end
+end
+
 describe("compound shapes against the union oracle", function()
   it("agrees on random clusters, terrains and crates, both argument orders, at every offset", function()
     local g = prng.new(2026)
     local wrong = newWrong()
-    local collisions, beyondSlack, worst = 0, 0, 0
+    local stats = { collisions = 0, beyondSlack = 0, worst = 0 }
     for trial = 1, 240 do
       local off = OFFSETS[trial % #OFFSETS + 1]
       local s1, s2 = scenes.pair(g, trial % 3 + 1)
       if trial % 2 == 0 then s1 = parts.reverse(s1) end
-      s1, s2 = parts.translate(s1, off, off), parts.translate(s2, off, off)
-      for _, order in ipairs({ { s1, s2 }, { s2, s1 } }) do
-        local excess, slack, least = check(order[1], order[2], wrong)
-        if excess then
-          collisions = collisions + 1
-          -- beyond the face margin only at crossings of lines meeting at an angle
-          if excess > slack then beyondSlack = beyondSlack + 1 end
-          worst = math.max(worst, excess / (least + slack))
-        end
-      end
+      checkBothOrders(parts.translate(s1, off, off), parts.translate(s2, off, off), wrong, stats)
     end
     assertNone(wrong)
-    assert.is_true(collisions > 150)
-    assert.is_true(beyondSlack <= collisions / 50, beyondSlack .. " of " .. collisions)
-    assert.is_true(worst < 1e-2, "worst relative excess " .. worst)
+    assert.is_true(stats.collisions > 150)
+    -- beyond the face margin only at crossings of lines meeting at an angle
+    assert.is_true(stats.beyondSlack <= stats.collisions / 50,
+      stats.beyondSlack .. " of " .. stats.collisions)
+    assert.is_true(stats.worst < 1e-2, "worst relative excess " .. stats.worst)
   end)
 
   it("agrees on lists of axis-parallel rectangles (tiles) against boxes and tiles, both orders", function()
@@ -96,25 +102,19 @@ describe("compound shapes against the union oracle", function()
       return list
     end
     local wrong = newWrong()
-    local collisions, beyondSlack, worst = 0, 0, 0
+    local stats = { collisions = 0, beyondSlack = 0, worst = 0 }
     for trial = 1, 120 do
       local off = OFFSETS[trial % #OFFSETS + 1]
       local s1 = tileList(g:int(1, 4), g:int(1, 3), g:pick({ 1, 2.5, 10 }), off, off)
       local s2 = tileList(g:int(1, 2), g:int(1, 2), g:pick({ 0.5, 3, 7 }),
         off + g:range(-2, 10), off + g:range(-2, 10))
-      for _, order in ipairs({ { s1, s2 }, { s2, s1 } }) do
-        local excess, slack, least = check(order[1], order[2], wrong)
-        if excess then
-          collisions = collisions + 1
-          if excess > slack then beyondSlack = beyondSlack + 1 end
-          worst = math.max(worst, excess / (least + slack))
-        end
-      end
+      checkBothOrders(s1, s2, wrong, stats)
     end
     assertNone(wrong)
-    assert.is_true(collisions > 60, collisions .. " collisions")
-    assert.is_true(beyondSlack <= collisions / 50, beyondSlack .. " of " .. collisions)
-    assert.is_true(worst < 1e-2, "worst relative excess " .. worst)
+    assert.is_true(stats.collisions > 60, stats.collisions .. " collisions")
+    assert.is_true(stats.beyondSlack <= stats.collisions / 50,
+      stats.beyondSlack .. " of " .. stats.collisions)
+    assert.is_true(stats.worst < 1e-2, "worst relative excess " .. stats.worst)
   end)
 
   it("finds the least translation exactly (within the margin) for crates on terrain", function()
