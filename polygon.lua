@@ -115,43 +115,19 @@ end
 local expansion, expLen = {}, 0
 
 -- Adds the double b to the expansion exactly (Shewchuk's Grow-Expansion, zeros eliminated).
--- On LuaJIT without a branch inside: each part is written at k + 1 and k counts it when it is
--- not 0 (min(1, |h| 2^2000) is 1 for every nonzero double, 0 for 0), so that a trace copying
--- this loop has no side exit for a zero part (such exits, at the last part's test, failed to
--- compile in some runs of the benchmark: "NYI: register coalescing too complex", 31 and 42 in
--- two batches of `bash bench/aborts.sh 16`, none in a third after this change).
-local expAdd
-if JIT then
-  expAdd = function(b)
-    if b == 0 then return end
-    local q, k = b, 0
-    for i = 1, expLen do
-      local e = expansion[i]
-      local s = q + e
-      local bv = s - q
-      local h = (q - (s - bv)) + (e - bv)
-      q = s
-      expansion[k + 1] = h   -- (k < i: the part read at i is not overwritten before it is read)
-      k = k + min(1, abs(h) * 2^1000 * 2^1000)
-    end
-    expansion[k + 1] = q
-    expLen = k + min(1, abs(q) * 2^1000 * 2^1000)
+local function expAdd(b)
+  if b == 0 then return end
+  local q, k = b, 0
+  for i = 1, expLen do
+    local e = expansion[i]
+    local s = q + e
+    local bv = s - q
+    local h = (q - (s - bv)) + (e - bv)
+    q = s
+    if h ~= 0 then k = k + 1; expansion[k] = h end
   end
-else
-  expAdd = function(b)
-    if b == 0 then return end
-    local q, k = b, 0
-    for i = 1, expLen do
-      local e = expansion[i]
-      local s = q + e
-      local bv = s - q
-      local h = (q - (s - bv)) + (e - bv)
-      q = s
-      if h ~= 0 then k = k + 1; expansion[k] = h end
-    end
-    if q ~= 0 then k = k + 1; expansion[k] = q end
-    expLen = k
-  end
+  if q ~= 0 then k = k + 1; expansion[k] = q end
+  expLen = k
 end
 
 -- Adds a * b to the expansion exactly.
