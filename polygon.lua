@@ -123,35 +123,26 @@ local expansion, expLen = {}, 0
 -- as on PUC Lua, and never reaches k: LuaJIT's min returns its second argument when either is
 -- NaN (on x64 in the interpreter and in traces; spec/non_finite_hard_spec.lua's wild
 -- coordinates make NaN parts, and with min(1, ...) k became NaN).
-local expAdd
-if JIT then
-  expAdd = function(b)
-    if b == 0 then return end
-    local q, k = b, 0
-    for i = 1, expLen do
-      local e = expansion[i]
-      local s = q + e
-      local bv = s - q
-      local h = (q - (s - bv)) + (e - bv)
-      q = s
+local function expAdd(b)
+  if b == 0 then return end
+  local q, k = b, 0
+  for i = 1, expLen do
+    local e = expansion[i]
+    local s = q + e
+    local bv = s - q
+    local h = (q - (s - bv)) + (e - bv)
+    q = s
+    if JIT then
       expansion[k + 1] = h   -- (k < i: the part read at i is not overwritten before it is read)
       k = k + min(abs(h) * 2^1000 * 2^1000, 1)
+    elseif h ~= 0 then
+      k = k + 1; expansion[k] = h
     end
+  end
+  if JIT then
     expansion[k + 1] = q
     expLen = k + min(abs(q) * 2^1000 * 2^1000, 1)
-  end
-else
-  expAdd = function(b)
-    if b == 0 then return end
-    local q, k = b, 0
-    for i = 1, expLen do
-      local e = expansion[i]
-      local s = q + e
-      local bv = s - q
-      local h = (q - (s - bv)) + (e - bv)
-      q = s
-      if h ~= 0 then k = k + 1; expansion[k] = h end
-    end
+  else
     if q ~= 0 then k = k + 1; expansion[k] = q end
     expLen = k
   end
