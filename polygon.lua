@@ -2321,16 +2321,46 @@ end
 -- push, where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that
 -- sign, which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside
 -- when it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better
--- of the two kept. The loop is branch-free and takes the line from pushLine in every step:
--- LuaJIT hoists those loads and products out of its compiled loop, and a side trace that leaves
--- the loop midway (a trace that ran on into it before it was compiled had unrolled it) inherits
--- only the push from its parent. With the line's eight numbers held across the loop such side
--- traces needed more registers than there are ("NYI: register coalescing too complex", retried
--- on every push, `luajit bench/isolated.lua polygonsCollideV`).
+-- of the two kept. Up to 8 vertices there is no loop: the vertices in one expression, as in
+-- reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop in
+-- root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
+-- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine
+-- in every step: LuaJIT hoists those loads and products out of its compiled loop, and a side
+-- trace that leaves the loop midway (a trace that ran on into it before it was compiled had
+-- unrolled it) inherits only the push from its parent. With the line's eight numbers held
+-- across the loop such side traces needed more registers than there are ("NYI: register
+-- coalescing too complex", retried on every push, `luajit bench/isolated.lua polygonsCollideV`).
 local lineShortfall
 if JIT then
+  -- one vertex's det + bound, from q and from qb, the better of the two
+  local reachOf = function(ex, ey, qx, qy, qbx, qby, px, py)
+    local l, r = ex * (py - qy), ey * (px - qx)
+    local lb, rb = ex * (py - qby), ey * (px - qbx)
+    return min(l - r + CROSS_BOUND * (abs(l) + abs(r)), lb - rb + CROSS_BOUND * (abs(lb) + abs(rb)))
+  end
   lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
     local dx, dy = ux * push + 0.0, uy * push + 0.0
+    if n <= 16 then
+      -- Up to 8 vertices no loop: the vertices in one expression, the last one repeated for
+      -- fewer (harmless to a max), taken in the loop's order
+      local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves,
+        dx, dy)
+      ex, ey = ex * inside, ey * inside
+      local worst = max(0.0, reachOf(ex, ey, qx, qy, qbx, qby, points[1] + vx, points[2] + vy))
+      local j = min(3, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(5, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(7, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(9, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(11, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(13, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      return max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[n - 1] + vx, points[n] + vy))
+    end
     local worst = 0.0
     for i = 1, n - 1, 2 do
       local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
