@@ -2339,16 +2339,46 @@ end
 -- push, where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that
 -- sign, which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside
 -- when it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better
--- of the two kept. The loop is branch-free and takes the line from pushLine in every step:
--- LuaJIT hoists those loads and products out of its compiled loop, and a side trace that leaves
--- the loop midway (a trace that ran on into it before it was compiled had unrolled it) inherits
--- only the push from its parent. With the line's eight numbers held across the loop such side
--- traces needed more registers than there are ("NYI: register coalescing too complex", retried
--- on every push, `luajit bench/isolated.lua polygonsCollideV`).
+-- of the two kept. Up to 8 vertices there is no loop: the vertices in one expression, as in
+-- reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop in
+-- root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
+-- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine
+-- in every step: LuaJIT hoists those loads and products out of its compiled loop, and a side
+-- trace that leaves the loop midway (a trace that ran on into it before it was compiled had
+-- unrolled it) inherits only the push from its parent. With the line's eight numbers held
+-- across the loop such side traces needed more registers than there are ("NYI: register
+-- coalescing too complex", retried on every push, `luajit bench/isolated.lua polygonsCollideV`).
 local lineShortfall
 if JIT then
+  -- one vertex's det + bound, from q and from qb, the better of the two
+  local reachOf = function(ex, ey, qx, qy, qbx, qby, px, py)
+    local l, r = ex * (py - qy), ey * (px - qx)
+    local lb, rb = ex * (py - qby), ey * (px - qbx)
+    return min(l - r + CROSS_BOUND * (abs(l) + abs(r)), lb - rb + CROSS_BOUND * (abs(lb) + abs(rb)))
+  end
   lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
     local dx, dy = ux * push + 0.0, uy * push + 0.0
+    if n <= 16 then
+      -- Up to 8 vertices no loop: the vertices in one expression, the last one repeated for
+      -- fewer (harmless to a max), taken in the loop's order
+      local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves,
+        dx, dy)
+      ex, ey = ex * inside, ey * inside
+      local worst = max(0.0, reachOf(ex, ey, qx, qy, qbx, qby, points[1] + vx, points[2] + vy))
+      local j = min(3, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(5, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(7, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(9, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(11, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      j = min(13, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      return max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[n - 1] + vx, points[n] + vy))
+    end
     local worst = 0.0
     for i = 1, n - 1, 2 do
       local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
@@ -2377,6 +2407,15 @@ local PUSH_ROUNDS = 64
 -- counts as apart). A vertex the filter cannot place lengthens the push by its shortfall plus
 -- the bound and the rounding allowance at it, and the check runs again. Deciding such vertices
 -- exactly instead would cost an expansion at nearly every push: its vertex ends on the line.
+-- So along a slanted axis (ux uy not 0) the first push is already lengthened by a margin of
+-- about what the check's rounding takes away, eps (|qx ux| + |qy uy| + |ex| + |ey|) (q the
+-- line's point, e its edge: the moved coordinates' rounding, the depth's and the filter's bound
+-- grow with them), and one check proves it for 282 of the benchmark's 300 overlapping pairs,
+-- where from the depth itself 201 needed a second (which costs a square root and a division
+-- too; 318 checks in all, not 501: `bench/workloads.lua`'s pairOverlap, a count hook). The
+-- largest excess in `spec/sat_push_spec.lua` went from 4.46 to 4.76 eps M (the contract: 8),
+-- as long as the second round's pushes it replaces. Along an axis the depth comes first, as
+-- before: a move along x or y is often exact there.
 -- Returns push length, dx, dy.
 -- Two bodies computing the same push. On PUC Lua the check (lineShortfall's, with pushLine's
 -- line) is written out in the loop over the rounds, and its filter is tried first without abs,
@@ -2394,7 +2433,14 @@ if JIT then
     -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
     -- allowance for it, none on the first check, then that, doubling every further round
     local allowance = 0.0
-    local push = depth   -- first as it is: an exact move along an axis keeps it exact
+    -- the first push: with the margin along a slanted axis (see above), without a branch
+    local push
+    do
+      local qx, qy = lines[base] + 0.0, lines[base + 1] + 0.0
+      local ex, ey = (lines[edgeEnd] + 0.0) - lines[ia], (lines[edgeEnd + 1] + 0.0) - lines[ia + 1]
+      push = depth + EPS * ((abs(qx * ux) + abs(qy * uy)) + (abs(ex) + abs(ey)))
+        * isAbove(abs(ux * uy))
+    end
     for _ = 1, PUSH_ROUNDS do
       local worst = lineShortfall(lines, ia, edgeEnd, base, second, lineMoves, ux, uy, push,
         inside, others, no)
@@ -2420,6 +2466,12 @@ else
     local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
     local allowance = 0.0   -- as on LuaJIT
     local push = depth
+    if ux * uy ~= 0 then   -- the margin along a slanted axis, as on LuaJIT (isAbove's test)
+      local qxu, qyu = (lines[base] + 0.0) * ux, (lines[base + 1] + 0.0) * uy
+      local ex, ey = (lines[edgeEnd] + 0.0) - lines[ia], (lines[edgeEnd + 1] + 0.0) - lines[ia + 1]
+      push = depth + EPS * (((qxu < 0 and -qxu or qxu) + (qyu < 0 and -qyu or qyu))
+        + ((ex < 0 and -ex or ex) + (ey < 0 and -ey or ey)))
+    end
     for _ = 1, PUSH_ROUNDS do
       -- the line and the move of points' vertices, as pushLine gives them, e turned by inside
       local dx, dy = ux * push + 0.0, uy * push + 0.0
