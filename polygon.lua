@@ -3027,68 +3027,101 @@ function penetration(points, n, sign, cx, cy, r, e, v)
 end
 end
 
--- The edge walk, in coordinates relative to the centre (c): the nearest vertex, its squared
--- distance, the largest squared distance to a vertex, and the edge (the index of its end)
--- whose line lies farthest behind the centre, with sign making distances positive outside.
+-- The edge walk, in coordinates relative to the centre (c): the sign of the polygon's area,
+-- 1.0 or -1.0, which makes distances positive outside (0 for a zero area, nil when the area is
+-- not finite), the nearest vertex, its squared distance, the largest squared distance to a
+-- vertex, and the edge (the index of its end) whose line lies farthest behind the centre.
 -- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
 -- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
--- As in projectRange, LuaJIT gets loops without data-dependent branches: each such branch
+-- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
 -- becomes a side trace, and the rest of the function is compiled again behind every one of
--- them (measured: about 10 times slower). Its first pass keeps only the extremes with min and
--- max; a second finds their indices, recomputing the same numbers bit for bit, again with min
--- alone: an index whose number matches the extreme keeps its value, any other is lifted past
--- n, so the least key is the first match. (A loop that stopped at the first match left its
--- trace early, which LuaJIT aborts and retries: "leaving loop in root trace".) The PUC
--- interpreters call min and max as functions, so for them one branchy pass is faster.
+-- them (measured: about 10 times slower). It is one pass, the sign included: the extremes by
+-- min and max, the index of each extreme's first match by a select without a branch (it moves
+-- to i by (i - index) times 1 when the new number beats the extreme, times 0 when not), and,
+-- since the sign is known only after the loop, the farthest edge for either sign; the sign
+-- comes from the same cross products (below), the exact kernel deciding where they cannot.
+-- (The walk was three passes: the shoelace sum for the sign, then the extremes, then a second
+-- pass finding their indices by recomputing the same numbers. One pass took the function from
+-- 0.34 to 0.28 of the tutorial's time, `luajit bench/isolated.lua polygonCircleCollideV`.)
+-- The PUC interpreters call min and max as functions, so for them a branchy pass is faster.
 local edgeWalk
+
+-- The sign of the polygon's area as 1.0 or -1.0, exact; 0 for a zero area, nil when the area
+-- is not finite (a non-finite coordinate, or an overflow).
+local function exactTurn(points, n)
+  local area, sumX2, sumD2 = shoelace(points, n)
+  if area - area ~= 0 then return nil end
+  local turn = areaSignOf(points, n, area, sumX2, sumD2)
+  if turn == 0 then return 0 end
+  return turn > 0 and 1.0 or -1.0
+end
+
 if JIT then
   -- min(x * LIFT * LIFT, 1) is 1 when x > 0 and 0 when x == 0, for x >= 0, without a branch:
   -- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
   -- function called per vertex it started traces of its own, which LuaJIT aborted.)
   local LIFT = 2^537
-  -- an edge's key, outside |outside| / |b - a|^2; a repeated vertex (|b - a|^2 == 0, so
-  -- outside == 0 too) gets -2^1000 instead, below every real edge's key in the range where
-  -- the walk's answer is used (farSq < 2^1000)
-  local function edgeKey(ax, ay, bx, by, sign)
-    local ex, ey = bx - ax, by - ay
-    local lengthSq = ex * ex + ey * ey
-    local outside = (ex * ay - ey * ax) * sign
-    return outside * (abs(outside) / max(lengthSq, 2^-1074))
-      - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
-  end
-  edgeWalk = function(points, n, cx, cy, sign)
-    local nearSq, farSq, bestKey = huge, 0.0, -huge
+  edgeWalk = function(points, n, cx, cy)
+    local nearSq, farSq, near = huge, 0.0, 1
+    -- the farthest edge's key and index for sign 1 (keyP, bestP) and for sign -1: an edge's
+    -- key is outside |outside| / |b - a|^2, outside = crossed * sign, less 2^1000 for a
+    -- repeated vertex (|b - a|^2 == 0): below every real edge's key in the range where the
+    -- walk's answer is used (farSq < 2^1000)
+    local keyP, keyN, bestP, bestN = -huge, -huge, 1, 1
+    local turnSum = 0.0
     local ax, ay = points[n - 1] - cx, points[n] - cy
     for i = 1, n - 1, 2 do
       local bx, by = points[i] - cx, points[i + 1] - cy
       local distSq = bx * bx + by * by
+      near = near + (i - near) * min(max(nearSq - distSq, 0) * LIFT * LIFT, 1)
       nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
-      bestKey = max(bestKey, edgeKey(ax, ay, bx, by, sign))
+      local ex, ey = bx - ax, by - ay
+      local lengthSq = ex * ex + ey * ey
+      local crossed = ex * ay - ey * ax
+      turnSum = turnSum + crossed
+      local key = crossed * (abs(crossed) / max(lengthSq, 2^-1074))
+      local lifted = (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
+      local keyAsP, keyAsN = key - lifted, -key - lifted
+      bestP = bestP + (i - bestP) * min(max(keyAsP - keyP, 0) * LIFT * LIFT, 1)
+      bestN = bestN + (i - bestN) * min(max(keyAsN - keyN, 0) * LIFT * LIFT, 1)
+      keyP, keyN = max(keyP, keyAsP), max(keyN, keyAsN)
       ax, ay = bx, by
     end
-    local lift = 2 * n   -- lifts a key past every index
-    local near, best = lift, lift
-    ax, ay = points[n - 1] - cx, points[n] - cy
-    for i = 1, n - 1, 2 do
-      local bx, by = points[i] - cx, points[i + 1] - cy
-      near = min(near, i + lift * min((bx * bx + by * by - nearSq) * LIFT * LIFT, 1))
-      best = min(best, i + lift * min((bestKey - edgeKey(ax, ay, bx, by, sign)) * LIFT * LIFT, 1))
-      ax, ay = bx, by
+    -- The sum of the cross products (b - a) x a = b x a is minus twice the area of the polygon
+    -- moved by -c and rounded, which is off from the exact area by 2 eps S at most, S the sum
+    -- of the squared distances; the cross products and their sum add (m + 5) eps S (m = n / 2;
+    -- a cross product's terms are at most (|a|^2 + |b|^2) / 2 in magnitude). S <= m farSq, and
+    -- the factor 4 and the 16 cover the second-order terms and this bound's own roundings;
+    -- 2^-900 is far above what underflow can take (a multiple of n 2^-1074).
+    local sign
+    local m = n * 0.5
+    if abs(turnSum) > max((m + 16) * 2^-51 * m * farSq, 2^-900) then
+      sign = -turnSum / abs(turnSum)
+    else
+      sign = exactTurn(points, n)
+      if sign == nil or sign == 0 then return sign end
     end
-    -- no match only after an overflow (NaN or infinite numbers): 0 sends the caller to its
-    -- scaled path (not (x <= n) is true for NaN too)
-    -- luacheck: push ignore 581
-    if not (near <= n) then near = 1 end
-    if not (best <= n) then best = 0 end
-    -- luacheck: pop
-    return near, nearSq, farSq, best
+    local pick = 0.5 + 0.5 * sign
+    local best = bestN + (bestP - bestN) * pick
+    -- an infinite key (an overflow) gives 0, which sends the caller to its scaled path
+    local bestKey = max(min(keyP, sign * huge), min(keyN, -sign * huge))
+    if bestKey - bestKey ~= 0 then best = 0 end
+    return sign, near, nearSq, farSq, best
   end
 else
   -- The PUC loop also stops at the first edge whose line the circle (radius r) is certainly
   -- beyond, returning best = -1: an edge's squared signed distance is off by less than
   -- 32 eps (r^2 + the squared distances of its ends), so a key past r^2 by that much means
   -- the circle is apart, as the full pass would decide too (LuaJIT's loop stays branch-free).
-  edgeWalk = function(points, n, cx, cy, sign, r)
+  edgeWalk = function(points, n, cx, cy, r)
+    local sign   -- exactTurn written out (a call costs PUC Lua more than these lines)
+    do
+      local area, sumX2, sumD2 = shoelace(points, n)
+      if area - area ~= 0 then return nil end
+      local turn = areaSignOf(points, n, area, sumX2, sumD2)
+      if turn == 0 then return 0 end
+      sign = turn > 0 and 1.0 or -1.0
+    end
     local nearSq, farSq, near = huge, 0.0, 1
     local bestKey, best = -huge, 0
     local ax, ay = points[n - 1] - cx, points[n] - cy
@@ -3107,13 +3140,13 @@ else
         if key > bestKey then
           bestKey, best = key, i
           if key - radiusSq > 32 * EPS * (radiusSq + prevSq + distSq) then
-            return near, nearSq, farSq, -1
+            return sign, near, nearSq, farSq, -1
           end
         end
       end
       ax, ay, prevSq = bx, by, distSq
     end
-    return near, nearSq, farSq, best
+    return sign, near, nearSq, farSq, best
   end
 end
 
@@ -3165,18 +3198,13 @@ end
 function circleCollision(points, n, cx, cy, r)
   -- (the do-blocks here keep the frame small: on Lua 5.4 a larger one can make the stack grow
   -- again, allocating, after every full collection)
-  local sign   -- 1 or -1: makes the signed distances positive outside
-  do
-    local area, sumX2, sumD2 = shoelace(points, n)
-    if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
-      local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
-      return overlap, px, py
-    end
-    local turn = areaSignOf(points, n, area, sumX2, sumD2)
-    if turn == 0 then return false end
-    sign = turn > 0 and 1.0 or -1.0
+  -- sign: 1 or -1, makes the signed distances positive outside
+  local sign, near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, r)
+  if sign == nil then   -- an infinite or NaN area: a non-finite coordinate or overflow
+    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+    return overlap, px, py
   end
-  local near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, sign, r)
+  if sign == 0 then return false end
   if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
   -- luacheck: ignore 581 (NaN too)
   if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
