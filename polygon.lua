@@ -3032,12 +3032,18 @@ end
 -- becomes a side trace, and the rest of the function is compiled again behind every one of
 -- them (measured: about 10 times slower). It is one pass, the sign included: the extremes by
 -- min and max, the index of each extreme's first match by a select without a branch (it moves
--- to i by (i - index) times 1 when the new number beats the extreme, times 0 when not), and,
--- since the sign is known only after the loop, the farthest edge for either sign; the sign
--- comes from the same cross products (below), the exact kernel deciding where they cannot.
+-- to i by (i - index) times 1 when the new number beats the extreme, times 0 when not). The
+-- farthest edge depends on the sign, known only after the loop: the loop takes the sign of the
+-- turn at vertex 1 as a guess (the area's sign for a convex polygon) and runs again with the
+-- sign when the guess was wrong. The sign comes from the same cross products (below), the
+-- exact kernel deciding where they cannot.
 -- (The walk was three passes: the shoelace sum for the sign, then the extremes, then a second
--- pass finding their indices by recomputing the same numbers. One pass took the function from
--- 0.34 to 0.28 of the tutorial's time, `luajit bench/isolated.lua polygonCircleCollideV`.)
+-- pass finding their indices by recomputing the same numbers: 2,867 machine instructions per
+-- call of the benchmark's circles, 1,994 now, with the other changes of this section's
+-- version; `valgrind --tool=cachegrind`.) Few values stay alive across the loop (those of
+-- both signs at once were four more: in the arena of examples/arena.lua the side traces of
+-- the loop's copies in other traces then failed to compile, "NYI: register coalescing too
+-- complex", up to 4,408 a run).
 -- The PUC interpreters call min and max as functions, so for them a branchy pass is faster.
 local edgeWalk
 
@@ -3056,13 +3062,14 @@ if JIT then
   -- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
   -- function called per vertex it started traces of its own, which LuaJIT aborted.)
   local LIFT = 2^537
-  edgeWalk = function(points, n, cx, cy)
+  -- One pass with the sign guessed (1.0 or -1.0): near, nearSq, farSq, and the farthest edge
+  -- as if the area's sign were `guess`, its key, and the sum of the cross products (below).
+  local function walkGuessed(points, n, cx, cy, guess)
     local nearSq, farSq, near = huge, 0.0, 1
-    -- the farthest edge's key and index for sign 1 (keyP, bestP) and for sign -1: an edge's
-    -- key is outside |outside| / |b - a|^2, outside = crossed * sign, less 2^1000 for a
-    -- repeated vertex (|b - a|^2 == 0): below every real edge's key in the range where the
-    -- walk's answer is used (farSq < 2^1000)
-    local keyP, keyN, bestP, bestN = -huge, -huge, 1, 1
+    -- the farthest edge's key and index: an edge's key is outside |outside| / |b - a|^2,
+    -- outside = crossed * sign, less 2^1000 for a repeated vertex (|b - a|^2 == 0): below
+    -- every real edge's key in the range where the walk's answer is used (farSq < 2^1000)
+    local bestKey, best = -huge, 1
     local turnSum = 0.0
     local ax, ay = points[n - 1] - cx, points[n] - cy
     for i = 1, n - 1, 2 do
@@ -3074,14 +3081,25 @@ if JIT then
       local lengthSq = ex * ex + ey * ey
       local crossed = ex * ay - ey * ax
       turnSum = turnSum + crossed
-      local key = crossed * (abs(crossed) / max(lengthSq, 2^-1074))
-      local lifted = (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
-      local keyAsP, keyAsN = key - lifted, -key - lifted
-      bestP = bestP + (i - bestP) * min(max(keyAsP - keyP, 0) * LIFT * LIFT, 1)
-      bestN = bestN + (i - bestN) * min(max(keyAsN - keyN, 0) * LIFT * LIFT, 1)
-      keyP, keyN = max(keyP, keyAsP), max(keyN, keyAsN)
+      local outside = crossed * guess
+      local key = outside * (abs(outside) / max(lengthSq, 2^-1074))
+        - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
+      best = best + (i - best) * min(max(key - bestKey, 0) * LIFT * LIFT, 1)
+      bestKey = max(bestKey, key)
       ax, ay = bx, by
     end
+    return near, nearSq, farSq, best, bestKey, turnSum
+  end
+  edgeWalk = function(points, n, cx, cy)
+    -- the guess: the sign of the turn at vertex 1, without a branch (1 when it is 0); it is
+    -- the area's for a convex polygon
+    local guess
+    do
+      local x0, y0, x1, y1 = points[n - 1], points[n], points[1], points[2]
+      local turn = (x1 - x0) * (points[4] - y1) - (y1 - y0) * (points[3] - x1)
+      guess = 1 - 2 * min(max(-turn * LIFT * LIFT, 0), 1)
+    end
+    local near, nearSq, farSq, best, bestKey, turnSum = walkGuessed(points, n, cx, cy, guess)
     -- The sum of the cross products (b - a) x a = b x a is minus twice the area of the polygon
     -- moved by -c and rounded, which is off from the exact area by 2 eps S at most, S the sum
     -- of the squared distances; the cross products and their sum add (m + 5) eps S (m = n / 2;
@@ -3096,10 +3114,10 @@ if JIT then
       sign = exactTurn(points, n)
       if sign == nil or sign == 0 then return sign end
     end
-    local pick = 0.5 + 0.5 * sign
-    local best = bestN + (bestP - bestN) * pick
+    if sign ~= guess then   -- a wrong guess (rare: a concave or degenerate turn at vertex 1)
+      near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, sign)
+    end
     -- an infinite key (an overflow) gives 0, which sends the caller to its scaled path
-    local bestKey = max(min(keyP, sign * huge), min(keyN, -sign * huge))
     if bestKey - bestKey ~= 0 then best = 0 end
     return sign, near, nearSq, farSq, best
   end
