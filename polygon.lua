@@ -3024,8 +3024,9 @@ end
 
 -- The edge walk, in coordinates relative to the centre (c): the sign of the polygon's area,
 -- 1.0 or -1.0, which makes distances positive outside (0 for a zero area, nil when the area is
--- not finite), the nearest vertex, its squared distance, the largest squared distance to a
--- vertex, and the edge (the index of its end) whose line lies farthest behind the centre.
+-- not finite, the other numbers then placeholders), the nearest vertex, its squared distance,
+-- the largest squared distance to a vertex, and the edge (the index of its end) whose line
+-- lies farthest behind the centre.
 -- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
 -- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
 -- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
@@ -3112,7 +3113,7 @@ if JIT then
       sign = -turnSum / abs(turnSum)
     else
       sign = exactTurn(points, n)
-      if sign == nil or sign == 0 then return sign end
+      if sign == nil or sign == 0 then return sign, 1, 0.0, 0.0, 0 end
     end
     if sign ~= guess then   -- a wrong guess (rare: a concave or degenerate turn at vertex 1)
       near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, sign)
@@ -3130,9 +3131,9 @@ else
     local sign   -- exactTurn written out (a call costs PUC Lua more than these lines)
     do
       local area, sumX2, sumD2 = shoelace(points, n)
-      if area - area ~= 0 then return nil end
+      if area - area ~= 0 then return nil, 1, 0.0, 0.0, 0 end
       local turn = areaSignOf(points, n, area, sumX2, sumD2)
-      if turn == 0 then return 0 end
+      if turn == 0 then return 0, 1, 0.0, 0.0, 0 end
       sign = turn > 0 and 1.0 or -1.0
     end
     local nearSq, farSq, near = huge, 0.0, 1
@@ -3213,12 +3214,12 @@ function circleCollision(points, n, cx, cy, r)
   -- again, allocating, after every full collection)
   -- sign: 1 or -1, makes the signed distances positive outside
   local sign, near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, r)
+  if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
   if sign == nil then   -- an infinite or NaN area: a non-finite coordinate or overflow
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
     return overlap, px, py
   end
   if sign == 0 then return false end
-  if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
   -- luacheck: ignore 581 (NaN too)
   if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
