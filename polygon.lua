@@ -2947,16 +2947,20 @@ end
 -- same push), and its length exceeds the depth by at most EPS (|mx ux| + |my uy| + 2 depth)
 -- and terms of order eps^2: with M the largest coordinate magnitude, the moved centre's
 -- included, |m| <= sqrt(2) M and depth <= |m| + |c| <= 2 sqrt(2) M, so at most 7.1 eps M.
--- The edge a -> b (q == 0), or the vertex b and its distinct neighbours a and q (indices).
 -- far: whether some magnitude passes 2^240, where the float certificate's squares (degree 4)
 -- overflow and only the exact one tells.
-function circlePush(points, sign, cx, cy, r, depth, lengthLow, ux, uy, a, b, q, far)
+function circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, e, v, far)
   -- EPS (|mx ux| + |my uy| + depth), m = c + depth u; the EPS^2 term keeps the extra positive
   -- (it grows below) when the rest is zero; 1 + 2^-20 covers the roundings of the bound itself
   local extra = (1 + 2^-20) * EPS
     * (abs((cx + ux * depth) * ux) + abs((cy + uy * depth) * uy) + depth)
     + EPS * EPS * (abs(cx) + abs(cy) + r)
   lengthLow = lengthLow + extra
+  -- the edge a -> b, or the vertex b and its neighbours a, q
+  local a, b, q = e == 1 and n - 1 or e - 2, e, 0
+  if e == 0 then
+    a, b, q = distinctNeighbour(points, n, v, -2), v, distinctNeighbour(points, n, v, 2)
+  end
   -- the first try outside the loop: LuaJIT cannot compile a loop entered from the caller's
   -- trace with this many live values ("register coalescing too complex"), and one try is usual
   local px, py, cleared = tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLow, far)
@@ -2976,17 +2980,17 @@ end
 
 -- The penetration of the circle (cx, cy, r) along the push out of the polygon: depth + depthLow,
 -- r less the distance from the centre to the polygon to order eps^2, the push's unit
--- direction (ux, uy), to rounding, and lengthLow (see below). From the vertex b (an index) when
--- the centre lies in its corner region (q ~= 0), else from the edge a -> b. The distance is
+-- direction (ux, uy), to rounding, and lengthLow (see below). From the vertex v (index) when
+-- the centre lies in its corner region, else from the edge ending at index e. The distance is
 -- computed again from the given coordinates, each square root and quotient refined by one
 -- Newton step on the exact residual.
 -- (Apart from circleCollision, so that its frame stays small: on Lua 5.4 a larger frame makes
 -- the stack grow again, allocating, after every full collection.)
-function penetration(points, sign, cx, cy, r, a, b, q)
+function penetration(points, n, sign, cx, cy, r, e, v)
   local ux, uy, distance, distanceLow
-  if q ~= 0 then
-    local wx, wxLow = twoDiff(cx, points[b] + 0.0)
-    local wy, wyLow = twoDiff(cy, points[b + 1] + 0.0)
+  if v > 0 then
+    local wx, wxLow = twoDiff(cx, points[v] + 0.0)
+    local wy, wyLow = twoDiff(cy, points[v + 1] + 0.0)
     local xx, xxLow = twoSquare(wx)
     local yy, yyLow = twoSquare(wy)
     local distSq, distSqLow = twoDiff(xx, -yy)
@@ -2998,8 +3002,9 @@ function penetration(points, sign, cx, cy, r, a, b, q)
   else
     -- the edge a -> b: its outward unit normal, and the centre's signed distance from its
     -- line, -((b - a) x (c - a)) / |b - a| turned outwards
+    local a = e == 1 and n - 1 or e - 2
     local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
-    local bx, by = points[b] + 0.0, points[b + 1] + 0.0
+    local bx, by = points[e] + 0.0, points[e + 1] + 0.0
     local crossed, crossedLow, lengthSq, lengthSqLow = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
     local length = sqrt(lengthSq)
     local sq, sqLow = twoSquare(length)
@@ -3023,10 +3028,10 @@ end
 end
 
 -- The edge walk, in coordinates relative to the centre (c): the sign of the polygon's area,
--- 1.0 or -1.0, which makes distances positive outside (0 for a zero area, nil when the area is
--- not finite, the other numbers then placeholders), the nearest vertex, its squared distance,
--- the largest squared distance to a vertex, and the edge (the index of its end) whose line
--- lies farthest behind the centre.
+-- 1.0 or -1.0, which makes distances positive outside, the nearest vertex, its squared
+-- distance, the largest squared distance to a vertex, and the edge (the index of its end)
+-- whose line lies farthest behind the centre; that index is -1 for a zero area and -2 when
+-- the area is not finite (the other numbers then placeholders).
 -- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
 -- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
 -- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
@@ -3113,7 +3118,8 @@ if JIT then
       sign = -turnSum / abs(turnSum)
     else
       sign = exactTurn(points, n)
-      if sign == nil or sign == 0 then return sign, 1, 0.0, 0.0, 0 end
+      if sign == nil then return 0.0, 1, 0.0, 0.0, -2 end
+      if sign == 0 then return 0.0, 1, 0.0, 0.0, -1 end
     end
     if sign ~= guess then   -- a wrong guess (rare: a concave or degenerate turn at vertex 1)
       near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, sign)
@@ -3131,9 +3137,9 @@ else
     local sign   -- exactTurn written out (a call costs PUC Lua more than these lines)
     do
       local area, sumX2, sumD2 = shoelace(points, n)
-      if area - area ~= 0 then return nil, 1, 0.0, 0.0, 0 end
+      if area - area ~= 0 then return 0.0, 1, 0.0, 0.0, -2 end
       local turn = areaSignOf(points, n, area, sumX2, sumD2)
-      if turn == 0 then return 0, 1, 0.0, 0.0, 0 end
+      if turn == 0 then return 0.0, 1, 0.0, 0.0, -1 end
       sign = turn > 0 and 1.0 or -1.0
     end
     local nearSq, farSq, near = huge, 0.0, 1
@@ -3214,19 +3220,18 @@ function circleCollision(points, n, cx, cy, r)
   -- again, allocating, after every full collection)
   -- sign: 1 or -1, makes the signed distances positive outside
   local sign, near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, r)
-  if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
-  if sign == nil then   -- an infinite or NaN area: a non-finite coordinate or overflow
-    local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
-    return overlap, px, py
+  if best < 0 then   -- certainly apart (PUC only), a zero area or a non-finite one (see edgeWalk)
+    if best == -2 then   -- an infinite or NaN area: a non-finite coordinate or overflow
+      local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
+      return overlap, px, py
+    end
+    return false
   end
-  if sign == 0 then return false end
   -- luacheck: ignore 581 (NaN too)
   if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
     return overlap, px, py
   end
-  -- the farthest edge a -> best (a without a branch: LuaJIT makes a side trace of each)
-  local a = (best - 3) % n + 1
   if JIT then
     -- Certainly apart, decided as the penetration below would: the nearest vertex and the line
     -- of the farthest edge both farther than r + 2 tol (tol as below), whichever feature the
@@ -3236,6 +3241,7 @@ function circleCollision(points, n, cx, cy, r)
     -- benchmark's circles miss; they skip the corner test and the penetration. (PUC Lua's walk
     -- ends early instead.)
     local reachSq = r * r + 128 * EPS * (r * r + farSq)
+    local a = (best - 3) % n + 1   -- the edge's start, without a branch
     local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
     local ex, ey = points[best] - ax, points[best + 1] - ay
     local left, right = ex * (cy - ay), ey * (cx - ax)
@@ -3250,18 +3256,17 @@ function circleCollision(points, n, cx, cy, r)
   -- The nearest-vertex axis: the centre is in the corner region of the nearest vertex v when
   -- it lies behind neither edge meeting there, (c - v).(p - v) <= 0 for both distinct
   -- neighbours p; then the distance to the polygon is |c - v|, and the push goes along c - v.
-  -- The feature: the edge a -> b (q == 0), or the vertex b between its neighbours a and q.
-  local b, q = best, 0
+  local edge, vertex = best, 0
   if nearSq > 0 then
     local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
     local p = distinctNeighbour(points, n, near, -2)
-    local s = distinctNeighbour(points, n, near, 2)
+    local q = distinctNeighbour(points, n, near, 2)
     if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
-        and vx * (vx - (points[s] - cx)) + vy * (vy - (points[s + 1] - cy)) <= 0 then
-      a, b, q = p, near, s
+        and vx * (vx - (points[q] - cx)) + vy * (vy - (points[q + 1] - cy)) <= 0 then
+      edge, vertex = 0, near
     end
   end
-  local depth, depthLow, ux, uy, lengthLow = penetration(points, sign, cx, cy, r, a, b, q)
+  local depth, depthLow, ux, uy, lengthLow = penetration(points, n, sign, cx, cy, r, edge, vertex)
   -- The exact filter: the float depth is off by far less than tol, a few eps times the farthest
   -- vertex's distance and the radius. Apart needs less room from an edge: a circle beyond an
   -- edge's line by more than r misses the convex polygon whichever feature is nearest, and
@@ -3270,11 +3275,11 @@ function circleCollision(points, n, cx, cy, r)
   local tol = 16 * EPS * (sqrt(farSq) + r)
   if depth <= tol then
     if depth < -tol then return false end
-    if q == 0 and depth + depthLow < -32 * EPS * EPS * (sqrt(farSq) + r) then return false end
+    if vertex == 0 and depth + depthLow < -32 * EPS * EPS * (sqrt(farSq) + r) then return false end
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
     if depth + depthLow < 0 then depth, depthLow, lengthLow = 0.0, 0.0, 0.0 end
   end
-  local px, py = circlePush(points, sign, cx, cy, r, depth, lengthLow, ux, uy, a, b, q,
+  local px, py = circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, edge, vertex,
     max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
   return depth + depthLow, px, py
 end
