@@ -3045,11 +3045,11 @@ end
 -- exact kernel deciding where they cannot.
 -- (The walk was three passes: the shoelace sum for the sign, then the extremes, then a second
 -- pass finding their indices by recomputing the same numbers: 2,867 machine instructions per
--- call of the benchmark's circles, 1,994 now, with the other changes of this section's
--- version; `valgrind --tool=cachegrind`.) Few values stay alive across the loop: with both
--- signs' farthest edges kept at once, four more, the side traces of the loop's copies in other
--- traces failed to compile in the arena of examples/arena.lua ("NYI: register coalescing too
--- complex", 95 to 6,060 a run in four runs; the three-pass walk 0 to 1,442 in eight).
+-- call of the benchmark's circles, about 2,040 now with the early exit below;
+-- `valgrind --tool=cachegrind`.) Few values stay alive across the loop and after it: with both
+-- signs' farthest edges kept at once, four more, side traces in the arena of
+-- examples/arena.lua failed to compile ("NYI: register coalescing too complex", 95 to 6,060 a
+-- run in four runs; the three-pass walk 0 to 1,442 in eleven, this one 86 to 614 in four).
 -- The PUC interpreters call min and max as functions, so for them a branchy pass is faster.
 local edgeWalk
 
