@@ -3049,7 +3049,7 @@ end
 -- `valgrind --tool=cachegrind`.) Few values stay alive across the loop and after it: with both
 -- signs' farthest edges kept at once, four more, side traces in the arena of
 -- examples/arena.lua failed to compile ("NYI: register coalescing too complex", 95 to 6,060 a
--- run in four runs; the three-pass walk 0 to 1,442 in eleven, this one 86 to 614 in four).
+-- run in four runs; the three-pass walk 0 to 1,442 in eleven, this one 67 to 898 in seven).
 -- The PUC interpreters call min and max as functions, so for them a branchy pass is faster.
 local edgeWalk
 
