@@ -3097,68 +3097,121 @@ function penetration(points, n, sign, cx, cy, r, e, v)
 end
 end
 
--- The edge walk, in coordinates relative to the centre (c): the nearest vertex, its squared
+-- The edge walk, in coordinates relative to the centre (c): the sign of the polygon's area,
+-- 1.0 or -1.0, which makes distances positive outside, the nearest vertex, its squared
 -- distance, the largest squared distance to a vertex, and the edge (the index of its end)
--- whose line lies farthest behind the centre, with sign making distances positive outside.
+-- whose line lies farthest behind the centre; that index is -1 for a zero area and -2 when
+-- the area is not finite (the other numbers then placeholders).
 -- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
 -- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
--- As in projectRange, LuaJIT gets loops without data-dependent branches: each such branch
+-- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
 -- becomes a side trace, and the rest of the function is compiled again behind every one of
--- them (measured: about 10 times slower). Its first pass keeps only the extremes with min and
--- max; a second finds their indices, recomputing the same numbers bit for bit, again with min
--- alone: an index whose number matches the extreme keeps its value, any other is lifted past
--- n, so the least key is the first match. (A loop that stopped at the first match left its
--- trace early, which LuaJIT aborts and retries: "leaving loop in root trace".) The PUC
--- interpreters call min and max as functions, so for them one branchy pass is faster.
+-- them (measured: about 10 times slower). It is one pass, the sign included: the extremes by
+-- min and max, the index of each extreme's first match by a select without a branch (it moves
+-- to i by (i - index) times 1 when the new number beats the extreme, times 0 when not). The
+-- farthest edge depends on the sign, known only after the loop: the loop takes the sign of the
+-- turn at vertex 1 as a guess (the area's sign for a convex polygon) and runs again with the
+-- sign when the guess was wrong. The sign comes from the same cross products (below), the
+-- exact kernel deciding where they cannot.
+-- (The walk was three passes: the shoelace sum for the sign, then the extremes, then a second
+-- pass finding their indices by recomputing the same numbers: 2,867 machine instructions per
+-- call of the benchmark's circles, about 2,040 now with the early exit below;
+-- `valgrind --tool=cachegrind`.) Few values stay alive across the loop and after it: with both
+-- signs' farthest edges kept at once, four more, side traces in the arena of
+-- examples/arena.lua failed to compile ("NYI: register coalescing too complex", 95 to 6,060 a
+-- run in four runs; the three-pass walk 0 to 1,442 in eleven, this one 67 to 898 in seven).
+-- The PUC interpreters call min and max as functions, so for them a branchy pass is faster.
 local edgeWalk
+
+-- The sign of the polygon's area as 1.0 or -1.0, exact; 0 for a zero area, nil when the area
+-- is not finite (a non-finite coordinate, or an overflow).
+local function exactTurn(points, n)
+  local area, sumX2, sumD2 = shoelace(points, n)
+  if area - area ~= 0 then return nil end
+  local turn = areaSignOf(points, n, area, sumX2, sumD2)
+  if turn == 0 then return 0 end
+  return turn > 0 and 1.0 or -1.0
+end
+
 if JIT then
   -- min(x * LIFT * LIFT, 1) is 1 when x > 0 and 0 when x == 0, for x >= 0, without a branch:
   -- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
   -- function called per vertex it started traces of its own, which LuaJIT aborted.)
   local LIFT = 2^537
-  -- an edge's key, outside |outside| / |b - a|^2; a repeated vertex (|b - a|^2 == 0, so
-  -- outside == 0 too) gets -2^1000 instead, below every real edge's key in the range where
-  -- the walk's answer is used (farSq < 2^1000)
-  local function edgeKey(ax, ay, bx, by, sign)
-    local ex, ey = bx - ax, by - ay
-    local lengthSq = ex * ex + ey * ey
-    local outside = (ex * ay - ey * ax) * sign
-    return outside * (abs(outside) / max(lengthSq, 2^-1074))
-      - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
-  end
-  edgeWalk = function(points, n, cx, cy, sign)
-    local nearSq, farSq, bestKey = huge, 0.0, -huge
+  -- One pass with the sign guessed (1.0 or -1.0): near, nearSq, farSq, and the farthest edge
+  -- as if the area's sign were `guess`, its key, and the sum of the cross products (below).
+  local function walkGuessed(points, n, cx, cy, guess)
+    local nearSq, farSq, near = huge, 0.0, 1
+    -- the farthest edge's key and index: an edge's key is outside |outside| / |b - a|^2,
+    -- outside = crossed * sign, less 2^1000 for a repeated vertex (|b - a|^2 == 0): below
+    -- every real edge's key in the range where the walk's answer is used (farSq < 2^1000)
+    local bestKey, best = -huge, 1
+    local turnSum = 0.0
     local ax, ay = points[n - 1] - cx, points[n] - cy
     for i = 1, n - 1, 2 do
       local bx, by = points[i] - cx, points[i + 1] - cy
       local distSq = bx * bx + by * by
+      near = near + (i - near) * min(max(nearSq - distSq, 0) * LIFT * LIFT, 1)
       nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
-      bestKey = max(bestKey, edgeKey(ax, ay, bx, by, sign))
+      local ex, ey = bx - ax, by - ay
+      local lengthSq = ex * ex + ey * ey
+      local crossed = ex * ay - ey * ax
+      turnSum = turnSum + crossed
+      local outside = crossed * guess
+      local key = outside * (abs(outside) / max(lengthSq, 2^-1074))
+        - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
+      best = best + (i - best) * min(max(key - bestKey, 0) * LIFT * LIFT, 1)
+      bestKey = max(bestKey, key)
       ax, ay = bx, by
     end
-    local lift = 2 * n   -- lifts a key past every index
-    local near, best = lift, lift
-    ax, ay = points[n - 1] - cx, points[n] - cy
-    for i = 1, n - 1, 2 do
-      local bx, by = points[i] - cx, points[i + 1] - cy
-      near = min(near, i + lift * min((bx * bx + by * by - nearSq) * LIFT * LIFT, 1))
-      best = min(best, i + lift * min((bestKey - edgeKey(ax, ay, bx, by, sign)) * LIFT * LIFT, 1))
-      ax, ay = bx, by
+    return near, nearSq, farSq, best, bestKey, turnSum
+  end
+  edgeWalk = function(points, n, cx, cy)
+    -- the guess: the sign of the turn at vertex 1, without a branch (1 when it is 0); it is
+    -- the area's for a convex polygon
+    local guess
+    do
+      local x0, y0, x1, y1 = points[n - 1], points[n], points[1], points[2]
+      local turn = (x1 - x0) * (points[4] - y1) - (y1 - y0) * (points[3] - x1)
+      guess = 1 - 2 * min(max(-turn * LIFT * LIFT, 0), 1)
     end
-    -- no match only after an overflow (NaN or infinite numbers): 0 sends the caller to its
-    -- scaled path (not (x <= n) is true for NaN too)
-    -- luacheck: push ignore 581
-    if not (near <= n) then near = 1 end
-    if not (best <= n) then best = 0 end
-    -- luacheck: pop
-    return near, nearSq, farSq, best
+    local near, nearSq, farSq, best, bestKey, turnSum = walkGuessed(points, n, cx, cy, guess)
+    -- The sum of the cross products (b - a) x a = b x a is minus twice the area of the polygon
+    -- moved by -c and rounded, which is off from the exact area by 2 eps S at most, S the sum
+    -- of the squared distances; the cross products and their sum add (m + 5) eps S (m = n / 2;
+    -- a cross product's terms are at most (|a|^2 + |b|^2) / 2 in magnitude). S <= m farSq, and
+    -- the factor 4 and the 16 cover the second-order terms and this bound's own roundings;
+    -- 2^-900 is far above what underflow can take (a multiple of n 2^-1074).
+    local sign
+    local m = n * 0.5
+    if abs(turnSum) > max((m + 16) * 2^-51 * m * farSq, 2^-900) then
+      sign = -turnSum / abs(turnSum)
+    else
+      sign = exactTurn(points, n)
+      if sign == nil then return 0.0, 1, 0.0, 0.0, -2 end
+      if sign == 0 then return 0.0, 1, 0.0, 0.0, -1 end
+    end
+    if sign ~= guess then   -- a wrong guess (rare: a concave or degenerate turn at vertex 1)
+      near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, sign)
+    end
+    -- an infinite key (an overflow) gives 0, which sends the caller to its scaled path
+    if bestKey - bestKey ~= 0 then best = 0 end
+    return sign, near, nearSq, farSq, best
   end
 else
   -- The PUC loop also stops at the first edge whose line the circle (radius r) is certainly
   -- beyond, returning best = -1: an edge's squared signed distance is off by less than
   -- 32 eps (r^2 + the squared distances of its ends), so a key past r^2 by that much means
   -- the circle is apart, as the full pass would decide too (LuaJIT's loop stays branch-free).
-  edgeWalk = function(points, n, cx, cy, sign, r)
+  edgeWalk = function(points, n, cx, cy, r)
+    local sign   -- exactTurn written out (a call costs PUC Lua more than these lines)
+    do
+      local area, sumX2, sumD2 = shoelace(points, n)
+      if area - area ~= 0 then return 0.0, 1, 0.0, 0.0, -2 end
+      local turn = areaSignOf(points, n, area, sumX2, sumD2)
+      if turn == 0 then return 0.0, 1, 0.0, 0.0, -1 end
+      sign = turn > 0 and 1.0 or -1.0
+    end
     local nearSq, farSq, near = huge, 0.0, 1
     local bestKey, best = -huge, 0
     local ax, ay = points[n - 1] - cx, points[n] - cy
@@ -3177,13 +3230,13 @@ else
         if key > bestKey then
           bestKey, best = key, i
           if key - radiusSq > 32 * EPS * (radiusSq + prevSq + distSq) then
-            return near, nearSq, farSq, -1
+            return sign, near, nearSq, farSq, -1
           end
         end
       end
       ax, ay, prevSq = bx, by, distSq
     end
-    return near, nearSq, farSq, best
+    return sign, near, nearSq, farSq, best
   end
 end
 
@@ -3235,23 +3288,40 @@ end
 function circleCollision(points, n, cx, cy, r)
   -- (the do-blocks here keep the frame small: on Lua 5.4 a larger one can make the stack grow
   -- again, allocating, after every full collection)
-  local sign   -- 1 or -1: makes the signed distances positive outside
-  do
-    local area, sumX2, sumD2 = shoelace(points, n)
-    if area - area ~= 0 then   -- an infinite or NaN area: a non-finite coordinate or overflow
+  -- sign: 1 or -1, makes the signed distances positive outside
+  local sign, near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, r)
+  if best < 0 then   -- certainly apart (PUC only), a zero area or a non-finite one (see edgeWalk)
+    if best == -2 then   -- an infinite or NaN area: a non-finite coordinate or overflow
       local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
       return overlap, px, py
     end
-    local turn = areaSignOf(points, n, area, sumX2, sumD2)
-    if turn == 0 then return false end
-    sign = turn > 0 and 1.0 or -1.0
+    return false
   end
-  local near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, sign, r)
-  if best < 0 then return false end   -- certainly apart (PUC only, see edgeWalk)
   -- luacheck: ignore 581 (NaN too)
   if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
     return overlap, px, py
+  end
+  if JIT then
+    -- Certainly apart, decided as the penetration below would: the nearest vertex and the line
+    -- of the farthest edge both farther than r + 2 tol (tol as below), whichever feature the
+    -- corner test picks. (r + 2 tol)^2 < r^2 + 128 eps (r^2 + farSq) =: reach^2, as tol <=
+    -- 16 eps (sqrt(farSq) + r) and 2 r sqrt(farSq) <= r^2 + farSq; the line by lineWithin's
+    -- filter, its margins and nearSq's taken by one min (one branch). A quarter of the
+    -- benchmark's circles miss; they skip the corner test and the penetration. (PUC Lua's walk
+    -- ends early instead.)
+    local reachSq = r * r + 128 * EPS * (r * r + farSq)
+    local a = (best - 3) % n + 1   -- the edge's start, without a branch
+    local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
+    local ex, ey = points[best] - ax, points[best + 1] - ay
+    local left, right = ex * (cy - ay), ey * (cx - ax)
+    local crossed, t = left - right, abs(left) + abs(right)
+    local lineReachSq = reachSq * (ex * ex + ey * ey)
+    local bound = 16 * EPS * (lineReachSq + t * t)
+    if min(-crossed * sign, (crossed * crossed - lineReachSq) - bound, nearSq - reachSq,
+        bound - FILTER_LO, FILTER_HI - bound) > 0 then
+      return false
+    end
   end
   -- The nearest-vertex axis: the centre is in the corner region of the nearest vertex v when
   -- it lies behind neither edge meeting there, (c - v).(p - v) <= 0 for both distinct

@@ -124,6 +124,31 @@ describe("polygonCircleCollideV hard cases", function()
     end)
   end)
 
+  -- The square 0..10 written so that the turn at vertex 1 is zero: vertex 1 repeated, or on the
+  -- middle of an edge, in both windings (each list keeps that vertex first). Its winding then
+  -- cannot be read from that turn.
+  describe("when the turn at vertex 1 is zero", function()
+    local starts = {
+      { 0, 0, 0, 0, 10, 0, 10, 10, 0, 10 }, { 0, 0, 0, 0, 0, 10, 10, 10, 10, 0 },   -- (0,0) twice
+      { 5, 0, 10, 0, 10, 10, 0, 10, 0, 0 }, { 5, 0, 0, 0, 0, 10, 10, 10, 10, 0 },   -- (5,0) on y = 0
+    }
+    for k, p in ipairs(starts) do
+      it("decides and pushes as for the plain square (list " .. k .. ")", function()
+        -- inside: the nearest line x = 10 is 4 away from (6,5), so the depth is 1 + 4 = 5
+        assert.near(5, check(p, 6, 5, 1), 1e-12)
+        -- the centre 0.5 below the edge y = 0: depth 1 - 0.5 = 0.5
+        assert.near(0.5, check(p, 5, -0.5, 1), 1e-12)
+        -- tangent to y = 0 (distance exactly 1): apart; one ulp more radius reaches in
+        assert.are.equal(false, check(p, 5, -1, 1))
+        assert.is_truthy(check(p, 5, -1, up(1)))
+        -- near the corner (0,0): (-0.6)^2 + (-0.8)^2 is 1 to rounding, the oracle decides
+        check(p, -0.6, -0.8, 1)
+        -- 2 beyond x = 10 with radius 1: apart
+        assert.are.equal(false, check(p, 12, 5, 1))
+      end)
+    end
+  end)
+
   describe("when an input is not finite", function()
     it("names the function and the argument", function()
       local inf, nan = math.huge, 0 / 0
