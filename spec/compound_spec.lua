@@ -232,6 +232,27 @@ describe("compound shapes", function()
       assert.is_false(parts.collide(list, parts.translate({ crate }, dx, dy)))
     end)
 
+    it("follows a vertex inserted or removed with the coordinates on the part's box kept", function()
+      -- The triangle (0,0) (10,0) (0,10): x + y < 10 inside. Its box's xmin, ymin, xmax, ymax
+      -- are first met at indices 1, 2, 3 and 6; a vertex (10,10) inserted after (10,0) keeps
+      -- those four coordinates (0, 0, 10 and now 10,10's y = 10) and makes the square 0..10.
+      local list = { { 0, 0, 10, 0, 0, 10 } }
+      local crate = parts.box(8, 6, 1.5, 1)   -- 8 + 6 = 14 > 10: clear of the triangle
+      for _ = 1, 2 do
+        assert.is_false(collide(list, crate))
+        assert.is_false(collideV(list, crate))
+        table.insert(list[1], 5, 10)
+        table.insert(list[1], 6, 10)
+        -- in the square: right by 10 - 8 = 2, down by 10 - 6 = 4, up by 7, left by 9.5
+        assert.is_true(collide(list, crate))
+        assertPush(list, crate, 2, 0)
+        assertPush(crate, list, -2, 0)
+        table.remove(list[1], 5)
+        table.remove(list[1], 5)   -- the triangle again, a length 8 -> 6 with the same four
+      end
+      assert.is_false(collideV(crate, list))
+    end)
+
     it("sees the interior coordinates of a part moved by a tie (extremes kept)", function()
       -- x = 2 and 3 have even last bits, 2 + 2^-51 an odd one: adding half their ulp (2^-52)
       -- leaves 2 and 3 (ties round to even) and moves 2 + 2^-51 to 2 + 2^-50. The box is unchanged
