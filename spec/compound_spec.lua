@@ -232,6 +232,40 @@ describe("compound shapes", function()
       assert.is_false(parts.collide(list, parts.translate({ crate }, dx, dy)))
     end)
 
+    it("follows a vertex inserted or removed with the coordinates on the part's box kept", function()
+      -- The triangle (0,0) (10,0) (0,10): x + y < 10 inside. Its box's xmin, ymin, xmax, ymax
+      -- are first met at indices 1, 2, 3 and 6; a vertex (10,10) inserted after (10,0) keeps
+      -- those four coordinates (0, 0, 10 and now 10,10's y = 10) and makes the square 0..10.
+      local list = { { 0, 0, 10, 0, 0, 10 } }
+      local crate = parts.box(8, 6, 1.5, 1)   -- 8 + 6 = 14 > 10: clear of the triangle
+      for _ = 1, 2 do
+        assert.is_false(collide(list, crate))
+        assert.is_false(collideV(list, crate))
+        table.insert(list[1], 5, 10)
+        table.insert(list[1], 6, 10)
+        -- in the square: right by 10 - 8 = 2, down by 10 - 6 = 4, up by 7, left by 9.5
+        assert.is_true(collide(list, crate))
+        assertPush(list, crate, 2, 0)
+        assertPush(crate, list, -2, 0)
+        table.remove(list[1], 5)
+        table.remove(list[1], 5)   -- the triangle again, a length 8 -> 6 with the same four
+      end
+      assert.is_false(collideV(crate, list))
+      -- A square whose fifth vertex (-4, 5) is appended: its corners and box unchanged, the
+      -- crate x -3..-1, y 4..6 then inside it (at y = 4 and 6 the slanted edges are at x = -3.2).
+      list = { parts.box(0, 0, 10, 10) }
+      crate = parts.box(-3, 4, 2, 2)
+      for _ = 1, 2 do
+        assert.is_false(collideV(list, crate))
+        list[1][9], list[1][10] = -4, 5
+        assert.is_true(collide(list, crate))
+        local overlap, dx, dy = collideV(list, crate)
+        assert.is_number(overlap)
+        assert.is_false(parts.collide(list, parts.translate({ crate }, dx, dy)))
+        list[1][10], list[1][9] = nil, nil
+      end
+    end)
+
     it("sees the interior coordinates of a part moved by a tie (extremes kept)", function()
       -- x = 2 and 3 have even last bits, 2 + 2^-51 an odd one: adding half their ulp (2^-52)
       -- leaves 2 and 3 (ties round to even) and moves 2 + 2^-51 to 2 + 2^-50. The box is unchanged
@@ -253,14 +287,16 @@ describe("compound shapes", function()
       local list = { parts.box(0, 0, 10, 10), parts.box(100, 0, 10, 10) }
       local crate = parts.box(5, 5, 8, 8)
       assert.is_number(collideV(list, crate))
-      list[2][3] = 0 / 0   -- far from the crate, but on the part's box (its xmax)
+      -- far from the crate, but watched: a rectangle's first and third vertices (opposite
+      -- corners) hold the four coordinates on its box; the third one's x is its xmax
+      list[2][5] = 0 / 0
       for _ = 1, 2 do
         assert.has_error(function() collideV(list, crate) end,
           "polygonsCollideV: points1 holds a non-finite coordinate")
       end
-      list[2][3] = 110
+      list[2][5] = 110
       assert.is_number(collideV(list, crate))
-      list[1][5] = math.huge   -- near the crate, off the watched coordinates of the box
+      list[1][3] = math.huge   -- near the crate, off the watched coordinates of the box
       assert.has_error(function() collideV(list, crate) end,
         "polygonsCollideV: points1 holds a non-finite coordinate")
       assert.has_error(function() collide(list, crate) end,
@@ -287,8 +323,9 @@ describe("compound shapes", function()
         list[k][i] = 0 / 0
         return list
       end
-      -- part 1 (near the crate) off its box's watched coordinates, part 2 (far) on its xmax
-      for _, where in ipairs({ { 1, 5 }, { 2, 3 } }) do
+      -- part 1 (near the crate) off its box's watched coordinates (its second vertex), part 2
+      -- (far) on its xmax (its third vertex: see above)
+      for _, where in ipairs({ { 1, 3 }, { 2, 5 } }) do
         local k, i = where[1], where[2]
         assert.is_true(callsite.raisesAtCaller(collideV, { spoilt(k, i), crate }))
         assert.is_true(callsite.raisesAtCaller(collideV, { crate, spoilt(k, i) }))
