@@ -1686,7 +1686,9 @@ if JIT then
       -- loop of a constant 8 steps, as faceAndFar's, has no such exits either, but took the
       -- mixed pairs 0.30-0.38 of the tutorial's time where this takes 0.26-0.29 (`luajit
       -- bench/isolated.lua polygonsCollideV`, four interleaved runs; touching pairs 0.35-0.36
-      -- against 0.31-0.34).
+      -- against 0.31-0.34). Each vertex through a small step function returning the five
+      -- numbers was as fast, but brought NYI aborts back (9 in 3 of 16 runs of `bash
+      -- bench/aborts.sh 16 polygonsCollide`, against none in 32).
       local i, l, r, det, bound, unsure
       i = 1
       l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
