@@ -2878,6 +2878,12 @@ end
 
 local penetration, circlePush
 do   -- the push's helpers are local to this block
+-- The push's direction, left here by penetration for circlePush: its unit vector (ux, uy), to
+-- rounding, and |(ux, uy)|^2 - 1, to order eps^2. Not returned: on LuaJIT every number held in
+-- a local of circleCollision at its branches would go to their side traces (see there), and
+-- only the push needs these.
+local pushUx, pushUy, pushNormError = 0.0, 0.0, 0.0
+
 -- a * a as hi + lo exactly: twoProduct with one split instead of two (the push squares often)
 local function twoSquare(a)
   local x = a * a
@@ -3009,29 +3015,33 @@ local function tryPush(points, a, b, q, sign, cx, cy, r, ux, uy, depth, lengthLo
 end
 
 -- The push out of the polygon along (ux, uy), a unit vector to rounding, depth + lengthLow (to
--- order eps^2) the length that moves the centre by the penetration (see penetration): the
--- first length tried that the certificate accepts. That length is lengthened by what rounding
--- can take from the push (EPS = 2^-53 bounds the relative error of one rounding): cx + px
--- rounds by at most EPS |cx + px|, which moves the centre along the push by at most
--- EPS (|mx ux| + |my uy|), m the moved centre; px and py, each rounded once (tryPush), by at
--- most EPS depth along it. The certificates need room of order eps^2 only, so that first push
--- clears unless a second edge is within rounding of touching (then the exact tests accept the
--- same push), and its length exceeds the depth by at most EPS (|mx ux| + |my uy| + 2 depth)
--- and terms of order eps^2: with M the largest coordinate magnitude, the moved centre's
--- included, |m| <= sqrt(2) M and depth <= |m| + |c| <= 2 sqrt(2) M, so at most 7.1 eps M.
--- far: whether some magnitude passes 2^240, where the float certificate's squares (degree 4)
--- overflow and only the exact one tells.
-function circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, e, v, far)
+-- order eps^2) the length that moves the centre by the penetration depth + depthLow (the
+-- direction and the penetration from penetration, lengthLow correcting for |(ux, uy)| - 1,
+-- depthLow for a depth set to 0): the first length tried that the certificate accepts. That
+-- length is lengthened by what rounding can take from the push (EPS = 2^-53 bounds the
+-- relative error of one rounding): cx + px rounds by at most EPS |cx + px|, which moves the
+-- centre along the push by at most EPS (|mx ux| + |my uy|), m the moved centre; px and py,
+-- each rounded once (tryPush), by at most EPS depth along it. The certificates need room of
+-- order eps^2 only, so that first push clears unless a second edge is within rounding of
+-- touching (then the exact tests accept the same push), and its length exceeds the depth by
+-- at most EPS (|mx ux| + |my uy| + 2 depth) and terms of order eps^2: with M the largest
+-- coordinate magnitude, the moved centre's included, |m| <= sqrt(2) M and
+-- depth <= |m| + |c| <= 2 sqrt(2) M, so at most 7.1 eps M.
+-- feature: the edge or vertex, as in penetration. far: whether some magnitude passes 2^240,
+-- where the float certificate's squares (degree 4) overflow and only the exact one tells.
+function circlePush(points, n, sign, cx, cy, r, depth, depthLow, feature, far)
+  local ux, uy = pushUx, pushUy
   -- EPS (|mx ux| + |my uy| + depth), m = c + depth u; the EPS^2 term keeps the extra positive
   -- (it grows below) when the rest is zero; 1 + 2^-20 covers the roundings of the bound itself
   local extra = (1 + 2^-20) * EPS
     * (abs((cx + ux * depth) * ux) + abs((cy + uy * depth) * uy) + depth)
     + EPS * EPS * (abs(cx) + abs(cy) + r)
-  lengthLow = lengthLow + extra
-  -- the edge a -> b, or the vertex b and its neighbours a, q
-  local a, b, q = e == 1 and n - 1 or e - 2, e, 0
-  if e == 0 then
-    a, b, q = distinctNeighbour(points, n, v, -2), v, distinctNeighbour(points, n, v, 2)
+  local lengthLow = (depthLow - depth * pushNormError * 0.5) + extra
+  -- the edge a -> b (feature > 0), or the vertex b = -feature and its neighbours a, q
+  local a, b, q = feature == 1 and n - 1 or feature - 2, feature, 0
+  if feature < 0 then
+    b = -feature
+    a, q = distinctNeighbour(points, n, b, -2), distinctNeighbour(points, n, b, 2)
   end
   -- the first try outside the loop: LuaJIT cannot compile a loop entered from the caller's
   -- trace with this many live values ("register coalescing too complex"), and one try is usual
@@ -3051,16 +3061,17 @@ function circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, e, v, 
 end
 
 -- The penetration of the circle (cx, cy, r) along the push out of the polygon: depth + depthLow,
--- r less the distance from the centre to the polygon to order eps^2, the push's unit
--- direction (ux, uy), to rounding, and lengthLow (see below). From the vertex v (index) when
--- the centre lies in its corner region, else from the edge ending at index e. The distance is
--- computed again from the given coordinates, each square root and quotient refined by one
--- Newton step on the exact residual.
+-- r less the distance from the centre to the polygon to order eps^2; the push's direction is
+-- left in pushUx, pushUy and pushNormError. From the vertex -feature (index) when feature < 0
+-- (the centre lies in its corner region), else from the edge ending at index feature. The
+-- distance is computed again from the given coordinates, each square root and quotient refined
+-- by one Newton step on the exact residual.
 -- (Apart from circleCollision, so that its frame stays small: on Lua 5.4 a larger frame makes
 -- the stack grow again, allocating, after every full collection.)
-function penetration(points, n, sign, cx, cy, r, e, v)
+function penetration(points, n, sign, cx, cy, r, feature)
   local ux, uy, distance, distanceLow
-  if v > 0 then
+  if feature < 0 then
+    local v = -feature
     local wx, wxLow = twoDiff(cx, points[v] + 0.0)
     local wy, wyLow = twoDiff(cy, points[v + 1] + 0.0)
     local xx, xxLow = twoSquare(wx)
@@ -3074,9 +3085,9 @@ function penetration(points, n, sign, cx, cy, r, e, v)
   else
     -- the edge a -> b: its outward unit normal, and the centre's signed distance from its
     -- line, -((b - a) x (c - a)) / |b - a| turned outwards
-    local a = e == 1 and n - 1 or e - 2
+    local a = feature == 1 and n - 1 or feature - 2
     local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
-    local bx, by = points[e] + 0.0, points[e + 1] + 0.0
+    local bx, by = points[feature] + 0.0, points[feature + 1] + 0.0
     local crossed, crossedLow, lengthSq, lengthSqLow = crossAndLengthAccurate(ax, ay, bx, by, cx, cy)
     local length = sqrt(lengthSq)
     local sq, sqLow = twoSquare(length)
@@ -3087,15 +3098,14 @@ function penetration(points, n, sign, cx, cy, r, e, v)
     distanceLow = ((outside - product) - productLow + outsideLow - distance * lengthLow) / length
     ux, uy = (by - ay) * sign / length, (ax - bx) * sign / length
   end
-  local depth, depthLow = twoDiff(r, distance)
-  depthLow = depthLow - distanceLow
-  -- the push's length, depth + lengthLow, corrects for |(ux, uy)| - 1, which is known to order
-  -- eps^2 (the squares' high parts sum to within an ulp of 1, so less 1 is exact: Sterbenz)
+  -- |(ux, uy)|^2 - 1, to order eps^2 (the squares' high parts sum to within an ulp of 1, so
+  -- less 1 is exact: Sterbenz)
   local xx, xxLow = twoSquare(ux)
   local yy, yyLow = twoSquare(uy)
   local normSq, normSqLow = twoDiff(xx, -yy)
-  local normError = (normSq - 1) + (normSqLow + (xxLow + yyLow))
-  return depth, depthLow, ux, uy, depthLow - depth * normError * 0.5
+  pushUx, pushUy, pushNormError = ux, uy, (normSq - 1) + (normSqLow + (xxLow + yyLow))
+  local depth, depthLow = twoDiff(r, distance)
+  return depth, depthLow - distanceLow
 end
 end
 
@@ -3290,17 +3300,19 @@ end
 function circleCollision(points, n, cx, cy, r)
   -- (the do-blocks here keep the frame small: on Lua 5.4 a larger one can make the stack grow
   -- again, allocating, after every full collection)
-  -- sign: 1 or -1, makes the signed distances positive outside
-  local sign, near, nearSq, farSq, best = edgeWalk(points, n, cx, cy, r)
-  if best < 0 then   -- certainly apart (PUC only), a zero area or a non-finite one (see edgeWalk)
-    if best == -2 then   -- an infinite or NaN area: a non-finite coordinate or overflow
+  -- sign: 1 or -1, makes the signed distances positive outside. feature: the edge whose line
+  -- lies farthest behind the centre (the index of its end), below minus the nearest vertex's
+  -- index when the centre lies in that vertex's corner region
+  local sign, near, nearSq, farSq, feature = edgeWalk(points, n, cx, cy, r)
+  if feature < 0 then   -- certainly apart (PUC only), a zero area or a non-finite one (see edgeWalk)
+    if feature == -2 then   -- an infinite or NaN area: a non-finite coordinate or overflow
       local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
       return overlap, px, py
     end
     return false
   end
   -- luacheck: ignore 581 (NaN too)
-  if not (farSq < 2^1000) or farSq + r * r < 2^-800 or best == 0 then
+  if not (farSq < 2^1000) or farSq + r * r < 2^-800 or feature == 0 then
     local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
     return overlap, px, py
   end
@@ -3313,9 +3325,9 @@ function circleCollision(points, n, cx, cy, r)
     -- benchmark's circles miss; they skip the corner test and the penetration. (PUC Lua's walk
     -- ends early instead.)
     local reachSq = r * r + 128 * EPS * (r * r + farSq)
-    local a = (best - 3) % n + 1   -- the edge's start, without a branch
+    local a = (feature - 3) % n + 1   -- the edge's start, without a branch
     local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
-    local ex, ey = points[best] - ax, points[best + 1] - ay
+    local ex, ey = points[feature] - ax, points[feature + 1] - ay
     local left, right = ex * (cy - ay), ey * (cx - ax)
     local crossed, t = left - right, abs(left) + abs(right)
     local lineReachSq = reachSq * (ex * ex + ey * ey)
@@ -3328,17 +3340,24 @@ function circleCollision(points, n, cx, cy, r)
   -- The nearest-vertex axis: the centre is in the corner region of the nearest vertex v when
   -- it lies behind neither edge meeting there, (c - v).(p - v) <= 0 for both distinct
   -- neighbours p; then the distance to the polygon is |c - v|, and the push goes along c - v.
-  local edge, vertex = best, 0
   if nearSq > 0 then
     local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
     local p = distinctNeighbour(points, n, near, -2)
     local q = distinctNeighbour(points, n, near, 2)
     if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
         and vx * (vx - (points[q] - cx)) + vy * (vy - (points[q + 1] - cy)) <= 0 then
-      edge, vertex = 0, near
+      feature = -near
     end
   end
-  local depth, depthLow, ux, uy, lengthLow = penetration(points, n, sign, cx, cy, r, edge, vertex)
+  -- On LuaJIT a branch below that goes both ways (as the first two do in a game: circles in
+  -- contact, and circles a push has just left touching) becomes a side trace, which takes over
+  -- in registers every number held in a local still in scope there, the callers' included:
+  -- with more than the registers it fails to compile ("NYI: register coalescing too complex").
+  -- So near and nearSq are dropped here, and the push's direction is not held in locals (see
+  -- penetration). (In the arena of examples/arena.lua, 300 frames: from 0 to 878 such aborts
+  -- a run, 195 on average over eight runs, to MEASURED.)
+  near, nearSq = nil, nil   -- luacheck: ignore 311 (dropped, see above)
+  local depth, depthLow = penetration(points, n, sign, cx, cy, r, feature)
   -- The exact filter: the float depth is off by far less than tol, a few eps times the farthest
   -- vertex's distance and the radius. Apart needs less room from an edge: a circle beyond an
   -- edge's line by more than r misses the convex polygon whichever feature is nearest, and
@@ -3347,11 +3366,11 @@ function circleCollision(points, n, cx, cy, r)
   local tol = 16 * EPS * (sqrt(farSq) + r)
   if depth <= tol then
     if depth < -tol then return false end
-    if vertex == 0 and depth + depthLow < -32 * EPS * EPS * (sqrt(farSq) + r) then return false end
+    if feature > 0 and depth + depthLow < -32 * EPS * EPS * (sqrt(farSq) + r) then return false end
     if not discMeetsExact(points, n, sign, cx, cy, r) then return false end
-    if depth + depthLow < 0 then depth, depthLow, lengthLow = 0.0, 0.0, 0.0 end
+    if depth + depthLow < 0 then depth, depthLow = 0.0, 0.0 end
   end
-  local px, py = circlePush(points, n, sign, cx, cy, r, depth, lengthLow, ux, uy, edge, vertex,
+  local px, py = circlePush(points, n, sign, cx, cy, r, depth, depthLow, feature,
     max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
   return depth + depthLow, px, py
 end
@@ -3377,7 +3396,12 @@ function polygon.polygonCircleCollideV(points, cx, cy, radius)
   checkFiniteNumber(cy, fname, "cy")
   checkRadius(radius, fname, "radius")
   if n < 6 or radius == 0 then return false end
-  local overlap, dx, dy = circleCollision(points, n, cx + 0.0, cy + 0.0, radius + 0.0)
+  -- converted in place: on LuaJIT the numbers of this frame and of circleCollision's are then
+  -- the same (see circleCollision: fewer for a side trace to take over)
+  cx = cx + 0.0
+  cy = cy + 0.0
+  radius = radius + 0.0
+  local overlap, dx, dy = circleCollision(points, n, cx, cy, radius)
   if overlap == nil then error(fname .. ": points holds a non-finite coordinate", 2) end
   if not overlap then return false end
   return overlap, dx, dy
