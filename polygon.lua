@@ -3027,8 +3027,9 @@ end
 -- at most EPS (|mx ux| + |my uy| + 2 depth) and terms of order eps^2: with M the largest
 -- coordinate magnitude, the moved centre's included, |m| <= sqrt(2) M and
 -- depth <= |m| + |c| <= 2 sqrt(2) M, so at most 7.1 eps M.
--- feature: the edge or vertex, as in penetration. far: whether some magnitude passes 2^240,
--- where the float certificate's squares (degree 4) overflow and only the exact one tells.
+-- feature: the edge or vertex, as in penetration. far: whether the magnitudes reach about
+-- 2^240, where the float certificate's squares (degree 4) overflow and only the exact one
+-- tells; it only spares a try (the next try takes the same push to the exact tests).
 function circlePush(points, n, sign, cx, cy, r, depth, depthLow, feature, far)
   local ux, uy = pushUx, pushUy
   -- EPS (|mx ux| + |my uy| + depth), m = c + depth u; the EPS^2 term keeps the extra positive
@@ -3371,7 +3372,7 @@ function circleCollision(points, n, cx, cy, r)
     if depth + depthLow < 0 then depth, depthLow = 0.0, 0.0 end
   end
   local px, py = circlePush(points, n, sign, cx, cy, r, depth, depthLow, feature,
-    max(abs(cx), abs(cy), r) > 2^240 or farSq > 2^480)
+    cx * cx + cy * cy + r * r + farSq > 2^480)
   return depth + depthLow, px, py
 end
 
