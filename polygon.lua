@@ -3356,7 +3356,7 @@ function circleCollision(points, n, cx, cy, r)
   -- with more than the registers it fails to compile ("NYI: register coalescing too complex").
   -- So near and nearSq are dropped here, and the push's direction is not held in locals (see
   -- penetration). Measured in the arena of examples/arena.lua (300 frames, `luajit -jv`): such
-  -- aborts in this section went from 0 to 887 a run (1,412 in eight runs) to 1 in sixteen,
+  -- aborts in this section went from 2,260 in sixteen runs (0 to 887 a run) to 1 in twenty-four,
   -- not counting traces through the compound code, whose frames hold most of the numbers there.
   near, nearSq = nil, nil   -- luacheck: ignore 311 (dropped, see above)
   local depth, depthLow = penetration(points, n, sign, cx, cy, r, feature)
