@@ -4695,19 +4695,28 @@ local function rectKind(points, n, xmin, ymin, xmax, ymax)
 end
 
 -- The sides of a rectangle of kind rect (rectKind; xmin, ymin its box's), numbered left 1, top
--- 2, right 3, bottom 4 (outward normals (-1, 0), (0, -1), (1, 0), (0, 1)), into sides: at odd
--- index i the side of the edge into vertex index i, at i + 1 the opposite side. Its edges
--- alternate between vertical and horizontal sides (a vertical one first for rect 1), the first
--- vertical one at v1's x, the first horizontal one at v1's y, then their opposites.
-local function rectSides(sides, points, rect, xmin, ymin)
-  local vertical, horizontal = 1, 2
-  if points[1] + 0.0 ~= xmin then vertical = 3 end
-  if points[2] + 0.0 ~= ymin then horizontal = 4 end
+-- 2, right 3, bottom 4 (outward normals (-1, 0), (0, -1), (1, 0), (0, 1)): at odd index i the
+-- side of the edge into vertex index i, at i + 1 the opposite side. Its edges alternate between
+-- vertical and horizontal sides (a vertical one first for rect 1), the first vertical one at
+-- v1's x, the first horizontal one at v1's y, then their opposites. Eight orders in all, made
+-- once here and shared (read only): RECT_SIDES[4 (rect - 1) + 2 (v1 on the right) + (v1 at
+-- the bottom) + 1]. A view's sides[k] is one of them (a flat rectangle's is picked per call, by
+-- PUC Lua's flatBox without a call).
+local RECT_SIDES = {}
+for pattern = 1, 8 do
+  local rect, right, bottom = pattern <= 4 and 1 or 2, (pattern - 1) % 4 >= 2, (pattern - 1) % 2 == 1
+  local vertical, horizontal = right and 3 or 1, bottom and 4 or 2
   local first, second = horizontal, vertical
   if rect == 1 then first, second = vertical, horizontal end
   local third, fourth = (first + 1) % 4 + 1, (second + 1) % 4 + 1
-  sides[1], sides[2], sides[3], sides[4] = first, third, second, fourth
-  sides[5], sides[6], sides[7], sides[8] = third, first, fourth, second
+  RECT_SIDES[pattern] = { first, third, second, fourth, third, first, fourth, second }
+end
+
+local function rectSides(points, rect, xmin, ymin)
+  local pattern = 4 * (rect - 1) + 1
+  if points[1] + 0.0 ~= xmin then pattern = pattern + 2 end
+  if points[2] + 0.0 ~= ymin then pattern = pattern + 1 end
+  return RECT_SIDES[pattern]
 end
 
 -- The box of part k (n coordinates) of a list into view.boxes and its record; false when a
@@ -4733,7 +4742,7 @@ local function partBox(view, k, part, n)
   view.rects[k] = rect
   record[11] = rect
   if rect ~= 0 then
-    rectSides(view.sides[k], part, rect, xmin, ymin)
+    view.sides[k] = rectSides(part, rect, xmin, ymin)
     -- A rectangle's first and third vertices are opposite corners: their coordinates are the
     -- four on its box, the ones watched (at constant indices on LuaJIT: see partsOverlapping)
     local x1, y1 = part[1] + 0.0, part[2] + 0.0
@@ -4741,6 +4750,10 @@ local function partBox(view, k, part, n)
     record[5], record[6], record[7], record[8] = ixmin, iymin, 6 - ixmin, 8 - iymin
     record[12], record[13], record[14], record[15] = x1, y1, part[5] + 0.0, part[6] + 0.0
   end
+  -- PUC Lua's scan: 0 for a rectangle whose first vertex is its (xmin, ymin), and so its third
+  -- its (xmax, ymax) (a box as games write it), compared with the box's values it loads anyway
+  -- (see partsOverlapping); else the length
+  record[16] = rect ~= 0 and ixmin == 1 and iymin == 2 and 0 or n
   return finite == 0
 end
 
@@ -4841,8 +4854,7 @@ local function prepareParts(fname, argname, parts)
     local flags = {}
     for i = 1, n - 1, 2 do flags[i] = 0 end
     info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
-    info.sides[k] = {}
-    info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n, 0, 0, 0, 0, 0 }, 0
+    info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n, 0, 0, 0, 0, 0, n }, 0
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
     end
@@ -4935,6 +4947,16 @@ end
 local function checkCopy(view, k, part, level)
   view.checked[k] = callStamp
   local copy, n = view.copies[k], view.lengths[k]
+  if view.rects[k] ~= 0 then
+    -- An axis-parallel rectangle: its first and third vertices are the coordinates watched on
+    -- its box (partBox), which every call compares before it reads a part (partsOverlapping,
+    -- listView): equal to their copies. The other two vertices are compared here.
+    if part[3] == copy[3] and part[4] == copy[4] and part[7] == copy[7] and part[8] == copy[8] then
+      return
+    end
+    refreshPart(view, k, part, n, level + 1)
+    return
+  end
   if n == 8 then   -- a quadrilateral (a tile, a box) unrolled: constant indices, no loop steps
     if part[1] == copy[1] and part[2] == copy[2] and part[3] == copy[3] and part[4] == copy[4]
         and part[5] == copy[5] and part[6] == copy[6] and part[7] == copy[7] and part[8] == copy[8] then
@@ -5029,7 +5051,7 @@ if JIT then
     local rect = finite == 0 and rectKind(shape, n, xmin, ymin, xmax, ymax) or 0
     view.rects[1] = rect
     if rect ~= 0 then
-      rectSides(view.sides[1], shape, rect, xmin, ymin)
+      view.sides[1] = rectSides(shape, rect, xmin, ymin)
       local x1, y1 = shape[1] + 0.0, shape[2] + 0.0
       if rect == 1 then
         view.turns[1] = (shape[3] + 0.0 > x1) == (shape[6] + 0.0 > y1) and 1.0 or -1.0
@@ -5081,24 +5103,10 @@ else
         end
         if rect ~= 0 then
           view.turns[1] = turn
-          local vertical, horizontal = 1, 2   -- as rectSides
-          if x1 ~= xmin then vertical = 3 end
-          if y1 ~= ymin then horizontal = 4 end
-          local sides = view.sides[1]
-          local first, second = horizontal, vertical
-          if rect == 1 then
-            first = vertical
-            second = horizontal
-          end
-          local third, fourth = (first + 1) % 4 + 1, (second + 1) % 4 + 1
-          sides[1] = first
-          sides[2] = third
-          sides[3] = second
-          sides[4] = fourth
-          sides[5] = third
-          sides[6] = first
-          sides[7] = fourth
-          sides[8] = second
+          local pattern = 4 * rect - 3   -- as rectSides
+          if x1 ~= xmin then pattern = pattern + 2 end
+          if y1 ~= ymin then pattern = pattern + 1 end
+          view.sides[1] = RECT_SIDES[pattern]
         end
       end
     else
@@ -5878,9 +5886,16 @@ else
     for k = 1, info.count do
       local part, record = shape[k], records[k]
       local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      local n = record[10]
-      if part ~= record[9] or #part ~= n then return nil end
-      if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+      local n = record[16]   -- 0 for a rectangle from its (xmin, ymin), else the length
+      if part ~= record[9] then return nil end
+      if n == 0 then
+        -- its watched coordinates at constant indices, against the box's values loaded: two VM
+        -- instructions each, where the indices kept take three (14 a part for the checks here,
+        -- 18 below; the 20 parts of bench/compound.lua's floor are such rectangles)
+        if #part ~= 8 or part[1] ~= xmin or part[2] ~= ymin or part[5] ~= xmax or part[6] ~= ymax then
+          return nil
+        end
+      elseif #part ~= n or n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
           or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
         return nil
       end
