@@ -4947,7 +4947,7 @@ end
 local function checkCopy(view, k, part, level)
   view.checked[k] = callStamp
   local copy, n = view.copies[k], view.lengths[k]
-  if view.rects[k] ~= 0 then
+  if view.rects[k] ~= 0 then   -- (addPair has this inline)
     -- An axis-parallel rectangle: its first and third vertices are the coordinates watched on
     -- its box (partBox), which every call compares before it reads a part (partsOverlapping,
     -- listView): equal to their copies. The other two vertices are compared here.
@@ -5064,52 +5064,79 @@ if JIT then
 else
   flatBox = function(view, _, shape, n)
     local finite, rect = 0.0, 0
-    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    local xmin, ymin, xmax, ymax
     if n == 8 then
       -- A quadrilateral (a crate, a tile) unrolled: the loop's numbers (the least of equals is
       -- the first, as there), and whether it is an axis-parallel rectangle, what rectKind and
-      -- rectSides give, from the same locals (135 VM instructions where the loop and the two
-      -- calls took 204 on the crate of bench/compound.lua). Its area sign from comparisons:
-      -- twice its area is 2 (x2 - x1) (y3 - y1) for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2
-      -- (flatView then computes no area sign).
+      -- rectSides give, from the same locals. An axis-parallel rectangle first: its x are v1's
+      -- and the opposite corner's (each equal to one of them, NaN never is), its y too, so two
+      -- comparisons give its box, and it is finite when its box is; the other shapes (and a
+      -- rectangle of no width or height, or with an infinite side) by eight coordinates' sums
+      -- and twelve comparisons (76 VM instructions for the crate of bench/compound.lua where
+      -- those took 109). Its area sign from comparisons: twice its area is 2 (x2 - x1) (y3 - y1)
+      -- for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2, each factor's sign flipped when the
+      -- opposite corner lies left of or above v1 (flatView then computes no area sign).
       local x1, y1, x2, y2 = shape[1] + 0.0, shape[2] + 0.0, shape[3] + 0.0, shape[4] + 0.0
       local x3, y3, x4, y4 = shape[5] + 0.0, shape[6] + 0.0, shape[7] + 0.0, shape[8] + 0.0
-      -- 0 unless a coordinate is inf or NaN (x - x is NaN then)
-      finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3) + (x4 - x4) + (y4 - y4)
-      xmin = x1
-      xmax = x1
-      if x2 < xmin then xmin = x2 end
-      if x2 > xmax then xmax = x2 end
-      if x3 < xmin then xmin = x3 end
-      if x3 > xmax then xmax = x3 end
-      if x4 < xmin then xmin = x4 end
-      if x4 > xmax then xmax = x4 end
-      ymin = y1
-      ymax = y1
-      if y2 < ymin then ymin = y2 end
-      if y2 > ymax then ymax = y2 end
-      if y3 < ymin then ymin = y3 end
-      if y3 > ymax then ymax = y3 end
-      if y4 < ymin then ymin = y4 end
-      if y4 > ymax then ymax = y4 end
-      if finite == 0 and xmin < xmax and ymin < ymax then
-        local turn
-        if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then
-          rect = 1
-          turn = (x2 > x1) == (y3 > y1) and 1.0 or -1.0
-        elseif y4 == y1 and x1 == x2 and y2 == y3 and x3 == x4 then
-          rect = 2
-          turn = (x3 > x1) == (y2 > y1) and -1.0 or 1.0
+      if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then
+        rect = 1
+      elseif y4 == y1 and x1 == x2 and y2 == y3 and x3 == x4 then
+        rect = 2
+      end
+      if rect ~= 0 then
+        local xa, ya, turn = x2, y3, 1.0   -- the corner opposite v1
+        if rect == 2 then
+          xa = x3
+          ya = y2
+          turn = -1.0
         end
-        if rect ~= 0 then
+        local pattern = 4 * rect - 3   -- as rectSides
+        xmin = x1
+        xmax = xa
+        if xa < x1 then
+          xmin = xa
+          xmax = x1
+          pattern = pattern + 2
+          turn = -turn
+        end
+        ymin = y1
+        ymax = ya
+        if ya < y1 then
+          ymin = ya
+          ymax = y1
+          pattern = pattern + 1
+          turn = -turn
+        end
+        local big = huge
+        if xmin < xmax and ymin < ymax and -big < xmin and xmax < big and -big < ymin and ymax < big then
           view.turns[1] = turn
-          local pattern = 4 * rect - 3   -- as rectSides
-          if x1 ~= xmin then pattern = pattern + 2 end
-          if y1 ~= ymin then pattern = pattern + 1 end
           view.sides[1] = RECT_SIDES[pattern]
+        else
+          rect = 0
         end
       end
+      if rect == 0 then
+        -- 0 unless a coordinate is inf or NaN (x - x is NaN then)
+        finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3) + (x4 - x4) + (y4 - y4)
+        xmin = x1
+        xmax = x1
+        if x2 < xmin then xmin = x2 end
+        if x2 > xmax then xmax = x2 end
+        if x3 < xmin then xmin = x3 end
+        if x3 > xmax then xmax = x3 end
+        if x4 < xmin then xmin = x4 end
+        if x4 > xmax then xmax = x4 end
+        ymin = y1
+        ymax = y1
+        if y2 < ymin then ymin = y2 end
+        if y2 > ymax then ymax = y2 end
+        if y3 < ymin then ymin = y3 end
+        if y3 > ymax then ymax = y3 end
+        if y4 < ymin then ymin = y4 end
+        if y4 > ymax then ymax = y4 end
+      end
     else
+      xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
       for i = 1, n - 1, 2 do
         local x, y = shape[i] + 0.0, shape[i + 1] + 0.0
         finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
@@ -5121,8 +5148,11 @@ else
       if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
     end
     view.rects[1] = rect
-    local boxes = view.boxes
-    boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+    local boxes = view.boxes   -- one assignment per statement: see partNormals
+    boxes[1] = xmin
+    boxes[2] = ymin
+    boxes[3] = xmax
+    boxes[4] = ymax
     local magnitude = 0.0
     if xmin <= xmax then   -- as shapeBox: max(0, -xmin, xmax, -ymin, ymax), the first of equals
       if -xmin > magnitude then magnitude = -xmin end
@@ -5132,7 +5162,11 @@ else
     else
       xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
     end
-    view.magnitude, view.left, view.top, view.right, view.bottom = magnitude, xmin, ymin, xmax, ymax
+    view.magnitude = magnitude
+    view.left = xmin
+    view.top = ymin
+    view.right = xmax
+    view.bottom = ymax
     return finite == 0
   end
 end
@@ -5223,6 +5257,9 @@ local faceLift = 0.0   -- lift (see nearestFree) of the call under way, for face
 -- coordinate is below 2^501, or scaled below 2^165).
 local FAR = 2^1000
 local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
+-- PUC Lua's rectPairFaces keeps its internal faces' nearest reach apart, by line direction:
+-- seamX for the vertical lines (normal (+-1, 0)), seamY for the horizontal ones (see nearestFree)
+local seamX, seamY = FAR, FAR
 local feetKept = 0   -- LuaJIT: the faces 1 .. feetKept are in the five above (see keepFeet)
 
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
@@ -5524,7 +5561,7 @@ else
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
     local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
     local lift, foot, footReach = faceLift, nearestFoot, nearestReach
-    local foot2, foot2Reach = secondFoot, secondReach
+    local foot2, foot2Reach, nearX, nearY = secondFoot, secondReach, seamX, seamY
     -- p1's sides' faceC, -lo of the axis-parallel edges in pairFaces (fl(b - a) = -fl(a - b))
     local cLeft = boxes2[b - 1] - boxes1[a - 3]
     local cTop = boxes2[b] - boxes1[a - 2]
@@ -5551,13 +5588,18 @@ else
       local d = lift + c
       if d < 0 then d = -d end   -- a comparison, not abs's call
       top = top + 1
-      fx[top] = sideX[line]
+      local ux = sideX[line]
+      fx[top] = ux
       fy[top] = sideY[line]
       fc[top] = c
       seam[top] = flag
       reach[top] = d
       if flag ~= 0 then
-        if d < seamReach then seamReach = d end
+        if ux ~= 0 then
+          if d < nearX then nearX = d end
+        elseif d < nearY then
+          nearY = d
+        end
       elseif d < footReach then
         foot2 = foot
         foot2Reach = footReach
@@ -5575,13 +5617,18 @@ else
         local d = lift + c
         if d < 0 then d = -d end
         top = top + 1
-        fx[top] = sideX[line]
+        local ux = sideX[line]
+        fx[top] = ux
         fy[top] = sideY[line]
         fc[top] = c
         seam[top] = flag
         reach[top] = d
         if flag ~= 0 then
-          if d < seamReach then seamReach = d end
+          if ux ~= 0 then
+            if d < nearX then nearX = d end
+          elseif d < nearY then
+            nearY = d
+          end
         elseif d < footReach then
           foot2 = foot
           foot2Reach = footReach
@@ -5594,6 +5641,7 @@ else
       end
     end
     nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+    seamX, seamY = nearX, nearY
     if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
     return top, 0
   end
@@ -5662,8 +5710,14 @@ local function nearestFree(np, margin)
     end
   elseif seamReach >= best then
     -- Every outer edge's line passes at least as far as the nearest foot (found 1) or the
-    -- second (found 2: all but the nearest): at most one line nearer than the best, no crossing.
-    return best, bestX, bestY
+    -- second (found 2: all but the nearest): at most one outer line nearer than the best, the
+    -- nearest foot's. No crossing when the lines nearer than the best are all parallel to an
+    -- axis, the same one: a crate on a floor at a seam, whose neighbours' vertical internal
+    -- faces pass nearer than the top (their det is exactly 0: no crossing either way).
+    if seamY >= best and (seamX >= best or found == 1 or fy[nearestFoot] == 0)
+        or seamX >= best and (found == 1 or fx[nearestFoot] == 0) then
+      return best, bestX, bestY
+    end
   end
   -- Crossings of two lines, each nearer than the best so far (a crossing is no nearer than
   -- either line): only the lines nearer than the best now can take part, usually a few of them.
@@ -5769,15 +5823,37 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   -- A flat rectangle needs no normals unscaled (flatBox gave its sign): rectPairFaces and PUC
   -- Lua's pairFaces read none; LuaJIT's addFaces reads them against a part not a rectangle, so
   -- there they wait for such a pair.
-  if view1.copies then
-    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 5) end
+  -- A rectangle part's comparison with its copy is checkCopy's, inline (the call's
+  -- instructions were a quarter of it on PUC Lua).
+  local copies = view1.copies
+  if copies then
+    local checked = view1.checked
+    if checked[i] ~= callStamp then
+      local copy = copies[i]
+      if view1.rects[i] ~= 0 and p1[3] == copy[3] and p1[4] == copy[4] and p1[7] == copy[7]
+          and p1[8] == copy[8] then
+        checked[i] = callStamp
+      else
+        checkCopy(view1, i, p1, 5)
+      end
+    end
   elseif view1.pending then
     local needed = k ~= 1 or view1.rects[1] == 0 or JIT and view2.rects[j] == 0
     if needed then partNormals(view1, 1, p1, #p1) end
     view1.pending = JIT and not needed
   end
-  if view2.copies then
-    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 5) end
+  copies = view2.copies
+  if copies then
+    local checked = view2.checked
+    if checked[j] ~= callStamp then
+      local copy = copies[j]
+      if view2.rects[j] ~= 0 and p2[3] == copy[3] and p2[4] == copy[4] and p2[7] == copy[7]
+          and p2[8] == copy[8] then
+        checked[j] = callStamp
+      else
+        checkCopy(view2, j, p2, 5)
+      end
+    end
   elseif view2.pending then
     local needed = k ~= 1 or view2.rects[1] == 0 or JIT and view1.rects[i] == 0
     if needed then partNormals(view2, 1, p2, #p2) end
@@ -6039,7 +6115,7 @@ function collideParts(fname, shape1, shape2, wantPush)
   faceLift = 1.25 * margin   -- as nearestFree's lift
   faceMargin = margin
   nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
-  feetKept = 0
+  seamX, seamY, feetKept = FAR, FAR, 0
   if found then
     for f = 1, found do
       local part = overlapping[f]
