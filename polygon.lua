@@ -5117,7 +5117,8 @@ else
       end
       if rect == 0 then
         -- 0 unless a coordinate is inf or NaN (x - x is NaN then)
-        finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3) + (x4 - x4) + (y4 - y4)
+        finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3)
+          + (x4 - x4) + (y4 - y4)
         xmin = x1
         xmax = x1
         if x2 < xmin then xmin = x2 end
