@@ -5073,9 +5073,10 @@ else
       -- comparisons give its box, and it is finite when its box is; the other shapes (and a
       -- rectangle of no width or height, or with an infinite side) by eight coordinates' sums
       -- and twelve comparisons (flatBox took 81 VM instructions for the crate of
-      -- bench/compound.lua, 118 with those first). Its area sign from comparisons: twice its area is 2 (x2 - x1) (y3 - y1)
-      -- for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2, each factor's sign flipped when the
-      -- opposite corner lies left of or above v1 (flatView then computes no area sign).
+      -- bench/compound.lua, 118 with those first). Its area sign from comparisons: twice its
+      -- area is 2 (x2 - x1) (y3 - y1) for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2, each
+      -- factor's sign flipped when the opposite corner lies left of or above v1 (flatView then
+      -- computes no area sign).
       local x1, y1, x2, y2 = shape[1] + 0.0, shape[2] + 0.0, shape[3] + 0.0, shape[4] + 0.0
       local x3, y3, x4, y4 = shape[5] + 0.0, shape[6] + 0.0, shape[7] + 0.0, shape[8] + 0.0
       if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then
