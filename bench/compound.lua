@@ -5,8 +5,14 @@
 --   lua5.4 bench/compound.lua only pushFloor 3000
 --                                              one timing row alone (its key, calls), for an
 --                                              instruction count that load cannot disturb:
---                                              valgrind --tool=callgrind at 1000 and 3000 calls,
---                                              the difference over 2000 is the cost per call
+--                                              valgrind --tool=callgrind at 10000 and 30000
+--                                              calls, the difference over 20000 is the cost per
+--                                              call (LuaJIT: its trace penalties are random,
+--                                              seeded by getrandom, so the traces and the count
+--                                              differ from run to run; compare medians over
+--                                              several runs, or fix the seed)
+--                                              (row scanFloor: the list's checks and box tests
+--                                              alone, the crate far above the floor)
 --   lua5.4 bench/compound.lua count pushFloor 300
 --                                              one timing row's VM instructions per call, by
 --                                              function (a debug.sethook count hook)
