@@ -4721,19 +4721,28 @@ local function rectKind(points, n, xmin, ymin, xmax, ymax)
 end
 
 -- The sides of a rectangle of kind rect (rectKind; xmin, ymin its box's), numbered left 1, top
--- 2, right 3, bottom 4 (outward normals (-1, 0), (0, -1), (1, 0), (0, 1)), into sides: at odd
--- index i the side of the edge into vertex index i, at i + 1 the opposite side. Its edges
--- alternate between vertical and horizontal sides (a vertical one first for rect 1), the first
--- vertical one at v1's x, the first horizontal one at v1's y, then their opposites.
-local function rectSides(sides, points, rect, xmin, ymin)
-  local vertical, horizontal = 1, 2
-  if points[1] + 0.0 ~= xmin then vertical = 3 end
-  if points[2] + 0.0 ~= ymin then horizontal = 4 end
+-- 2, right 3, bottom 4 (outward normals (-1, 0), (0, -1), (1, 0), (0, 1)): at odd index i the
+-- side of the edge into vertex index i, at i + 1 the opposite side. Its edges alternate between
+-- vertical and horizontal sides (a vertical one first for rect 1), the first vertical one at
+-- v1's x, the first horizontal one at v1's y, then their opposites. Eight orders in all, made
+-- once here and shared (read only): RECT_SIDES[4 (rect - 1) + 2 (v1 on the right) + (v1 at
+-- the bottom) + 1]. A view's sides[k] is one of them (a flat rectangle's is picked per call, by
+-- PUC Lua's flatBox without a call).
+local RECT_SIDES = {}
+for pattern = 1, 8 do
+  local rect, right, bottom = pattern <= 4 and 1 or 2, (pattern - 1) % 4 >= 2, (pattern - 1) % 2 == 1
+  local vertical, horizontal = right and 3 or 1, bottom and 4 or 2
   local first, second = horizontal, vertical
   if rect == 1 then first, second = vertical, horizontal end
   local third, fourth = (first + 1) % 4 + 1, (second + 1) % 4 + 1
-  sides[1], sides[2], sides[3], sides[4] = first, third, second, fourth
-  sides[5], sides[6], sides[7], sides[8] = third, first, fourth, second
+  RECT_SIDES[pattern] = { first, third, second, fourth, third, first, fourth, second }
+end
+
+local function rectSides(points, rect, xmin, ymin)
+  local pattern = 4 * (rect - 1) + 1
+  if points[1] + 0.0 ~= xmin then pattern = pattern + 2 end
+  if points[2] + 0.0 ~= ymin then pattern = pattern + 1 end
+  return RECT_SIDES[pattern]
 end
 
 -- The box of part k (n coordinates) of a list into view.boxes and its record; false when a
@@ -4759,7 +4768,7 @@ local function partBox(view, k, part, n)
   view.rects[k] = rect
   record[11] = rect
   if rect ~= 0 then
-    rectSides(view.sides[k], part, rect, xmin, ymin)
+    view.sides[k] = rectSides(part, rect, xmin, ymin)
     -- A rectangle's first and third vertices are opposite corners: their coordinates are the
     -- four on its box, the ones watched (at constant indices on LuaJIT: see partsOverlapping)
     local x1, y1 = part[1] + 0.0, part[2] + 0.0
@@ -4767,6 +4776,10 @@ local function partBox(view, k, part, n)
     record[5], record[6], record[7], record[8] = ixmin, iymin, 6 - ixmin, 8 - iymin
     record[12], record[13], record[14], record[15] = x1, y1, part[5] + 0.0, part[6] + 0.0
   end
+  -- PUC Lua's scan: 0 for a rectangle whose first vertex is its (xmin, ymin), and so its third
+  -- its (xmax, ymax) (a box as games write it), compared with the box's values it loads anyway
+  -- (see partsOverlapping); else the length
+  record[16] = rect ~= 0 and ixmin == 1 and iymin == 2 and 0 or n
   return finite == 0
 end
 
@@ -4867,8 +4880,7 @@ local function prepareParts(fname, argname, parts)
     local flags = {}
     for i = 1, n - 1, 2 do flags[i] = 0 end
     info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
-    info.sides[k] = {}
-    info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n, 0, 0, 0, 0, 0 }, 0
+    info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n, 0, 0, 0, 0, 0, n }, 0
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
     end
@@ -4961,6 +4973,16 @@ end
 local function checkCopy(view, k, part, level)
   view.checked[k] = callStamp
   local copy, n = view.copies[k], view.lengths[k]
+  if view.rects[k] ~= 0 then   -- (addPair has this inline)
+    -- An axis-parallel rectangle: its first and third vertices are the coordinates watched on
+    -- its box (partBox), which every call compares before it reads a part (partsOverlapping,
+    -- listView): equal to their copies. The other two vertices are compared here.
+    if part[3] == copy[3] and part[4] == copy[4] and part[7] == copy[7] and part[8] == copy[8] then
+      return
+    end
+    refreshPart(view, k, part, n, level + 1)
+    return
+  end
   if n == 8 then   -- a quadrilateral (a tile, a box) unrolled: constant indices, no loop steps
     if part[1] == copy[1] and part[2] == copy[2] and part[3] == copy[3] and part[4] == copy[4]
         and part[5] == copy[5] and part[6] == copy[6] and part[7] == copy[7] and part[8] == copy[8] then
@@ -5055,7 +5077,7 @@ if JIT then
     local rect = finite == 0 and rectKind(shape, n, xmin, ymin, xmax, ymax) or 0
     view.rects[1] = rect
     if rect ~= 0 then
-      rectSides(view.sides[1], shape, rect, xmin, ymin)
+      view.sides[1] = rectSides(shape, rect, xmin, ymin)
       local x1, y1 = shape[1] + 0.0, shape[2] + 0.0
       if rect == 1 then
         view.turns[1] = (shape[3] + 0.0 > x1) == (shape[6] + 0.0 > y1) and 1.0 or -1.0
@@ -5068,66 +5090,81 @@ if JIT then
 else
   flatBox = function(view, _, shape, n)
     local finite, rect = 0.0, 0
-    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    local xmin, ymin, xmax, ymax
     if n == 8 then
       -- A quadrilateral (a crate, a tile) unrolled: the loop's numbers (the least of equals is
       -- the first, as there), and whether it is an axis-parallel rectangle, what rectKind and
-      -- rectSides give, from the same locals (135 VM instructions where the loop and the two
-      -- calls took 204 on the crate of bench/compound.lua). Its area sign from comparisons:
-      -- twice its area is 2 (x2 - x1) (y3 - y1) for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2
-      -- (flatView then computes no area sign).
+      -- rectSides give, from the same locals. An axis-parallel rectangle first: its x are v1's
+      -- and the opposite corner's (each equal to one of them, NaN never is), its y too, so two
+      -- comparisons give its box, and it is finite when its box is; the other shapes (and a
+      -- rectangle of no width or height, or with an infinite side) by eight coordinates' sums
+      -- and twelve comparisons (flatBox took 81 VM instructions for the crate of
+      -- bench/compound.lua, 118 with those first). Its area sign from comparisons: twice its
+      -- area is 2 (x2 - x1) (y3 - y1) for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2, each
+      -- factor's sign flipped when the opposite corner lies left of or above v1 (flatView then
+      -- computes no area sign).
       local x1, y1, x2, y2 = shape[1] + 0.0, shape[2] + 0.0, shape[3] + 0.0, shape[4] + 0.0
       local x3, y3, x4, y4 = shape[5] + 0.0, shape[6] + 0.0, shape[7] + 0.0, shape[8] + 0.0
-      -- 0 unless a coordinate is inf or NaN (x - x is NaN then)
-      finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3) + (x4 - x4) + (y4 - y4)
-      xmin = x1
-      xmax = x1
-      if x2 < xmin then xmin = x2 end
-      if x2 > xmax then xmax = x2 end
-      if x3 < xmin then xmin = x3 end
-      if x3 > xmax then xmax = x3 end
-      if x4 < xmin then xmin = x4 end
-      if x4 > xmax then xmax = x4 end
-      ymin = y1
-      ymax = y1
-      if y2 < ymin then ymin = y2 end
-      if y2 > ymax then ymax = y2 end
-      if y3 < ymin then ymin = y3 end
-      if y3 > ymax then ymax = y3 end
-      if y4 < ymin then ymin = y4 end
-      if y4 > ymax then ymax = y4 end
-      if finite == 0 and xmin < xmax and ymin < ymax then
-        local turn
-        if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then
-          rect = 1
-          turn = (x2 > x1) == (y3 > y1) and 1.0 or -1.0
-        elseif y4 == y1 and x1 == x2 and y2 == y3 and x3 == x4 then
-          rect = 2
-          turn = (x3 > x1) == (y2 > y1) and -1.0 or 1.0
+      if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then
+        rect = 1
+      elseif y4 == y1 and x1 == x2 and y2 == y3 and x3 == x4 then
+        rect = 2
+      end
+      if rect ~= 0 then
+        local xa, ya, turn = x2, y3, 1.0   -- the corner opposite v1
+        if rect == 2 then
+          xa = x3
+          ya = y2
+          turn = -1.0
         end
-        if rect ~= 0 then
+        local pattern = 4 * rect - 3   -- as rectSides
+        xmin = x1
+        xmax = xa
+        if xa < x1 then
+          xmin = xa
+          xmax = x1
+          pattern = pattern + 2
+          turn = -turn
+        end
+        ymin = y1
+        ymax = ya
+        if ya < y1 then
+          ymin = ya
+          ymax = y1
+          pattern = pattern + 1
+          turn = -turn
+        end
+        local big = huge
+        if xmin < xmax and ymin < ymax and -big < xmin and xmax < big and -big < ymin and ymax < big then
           view.turns[1] = turn
-          local vertical, horizontal = 1, 2   -- as rectSides
-          if x1 ~= xmin then vertical = 3 end
-          if y1 ~= ymin then horizontal = 4 end
-          local sides = view.sides[1]
-          local first, second = horizontal, vertical
-          if rect == 1 then
-            first = vertical
-            second = horizontal
-          end
-          local third, fourth = (first + 1) % 4 + 1, (second + 1) % 4 + 1
-          sides[1] = first
-          sides[2] = third
-          sides[3] = second
-          sides[4] = fourth
-          sides[5] = third
-          sides[6] = first
-          sides[7] = fourth
-          sides[8] = second
+          view.sides[1] = RECT_SIDES[pattern]
+        else
+          rect = 0
         end
       end
+      if rect == 0 then
+        -- 0 unless a coordinate is inf or NaN (x - x is NaN then)
+        finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3)
+          + (x4 - x4) + (y4 - y4)
+        xmin = x1
+        xmax = x1
+        if x2 < xmin then xmin = x2 end
+        if x2 > xmax then xmax = x2 end
+        if x3 < xmin then xmin = x3 end
+        if x3 > xmax then xmax = x3 end
+        if x4 < xmin then xmin = x4 end
+        if x4 > xmax then xmax = x4 end
+        ymin = y1
+        ymax = y1
+        if y2 < ymin then ymin = y2 end
+        if y2 > ymax then ymax = y2 end
+        if y3 < ymin then ymin = y3 end
+        if y3 > ymax then ymax = y3 end
+        if y4 < ymin then ymin = y4 end
+        if y4 > ymax then ymax = y4 end
+      end
     else
+      xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
       for i = 1, n - 1, 2 do
         local x, y = shape[i] + 0.0, shape[i + 1] + 0.0
         finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
@@ -5139,8 +5176,11 @@ else
       if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
     end
     view.rects[1] = rect
-    local boxes = view.boxes
-    boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+    local boxes = view.boxes   -- one assignment per statement: see partNormals
+    boxes[1] = xmin
+    boxes[2] = ymin
+    boxes[3] = xmax
+    boxes[4] = ymax
     local magnitude = 0.0
     if xmin <= xmax then   -- as shapeBox: max(0, -xmin, xmax, -ymin, ymax), the first of equals
       if -xmin > magnitude then magnitude = -xmin end
@@ -5150,7 +5190,11 @@ else
     else
       xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
     end
-    view.magnitude, view.left, view.top, view.right, view.bottom = magnitude, xmin, ymin, xmax, ymax
+    view.magnitude = magnitude
+    view.left = xmin
+    view.top = ymin
+    view.right = xmax
+    view.bottom = ymax
     return finite == 0
   end
 end
@@ -5241,6 +5285,9 @@ local faceLift = 0.0   -- lift (see nearestFree) of the call under way, for face
 -- coordinate is below 2^501, or scaled below 2^165).
 local FAR = 2^1000
 local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
+-- PUC Lua's rectPairFaces keeps its internal faces' nearest reach apart, by line direction:
+-- seamX for the vertical lines (normal (+-1, 0)), seamY for the horizontal ones (see nearestFree)
+local seamX, seamY = FAR, FAR
 local feetKept = 0   -- LuaJIT: the faces 1 .. feetKept are in the five above (see keepFeet)
 
 -- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
@@ -5507,8 +5554,12 @@ local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
 local sideConstant, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
 local rectPairFaces
 if JIT then
-  -- LuaJIT's: all eight faces, without a branch (p2's equal ones change nothing, see above),
-  -- the nearest feet kept later by keepFeet, as for addFaces' faces; without a loop (a loop of
+  -- LuaJIT's: PUC Lua's faces, without a branch: each of p2's sides is written after p1's
+  -- and kept (top moves on) when its flag differs from that of p1's side on its line, by the
+  -- difference's abs, 1 or 0 (all eight kept, the feet sought over them all: 6,614 against
+  -- 6,489 machine instructions a push of bench/compound.lua's crate by callgrind, medians
+  -- over five seeds of LuaJIT's random trace penalties); the
+  -- nearest feet kept later by keepFeet, as for addFaces' faces; without a loop (a loop of
   -- four steps was a trace of its own, entered and left twice a pair).
   local function putSide(line, flag, top)
     local c = sideConstant[line]
@@ -5518,22 +5569,34 @@ if JIT then
   rectPairFaces = function(view1, i, view2, j, top, p)
     local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
     local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
-    local sideC = sideConstant
+    local sideC, flags = sideConstant, sideFlag
     local cLeft, cTop = boxes2[b - 1] - boxes1[a - 3], boxes2[b] - boxes1[a - 2]
     local cRight, cBottom = boxes1[a - 1] - boxes2[b - 3], boxes1[a] - boxes2[b - 2]
     sideC[1], sideC[2], sideC[3], sideC[4] = cLeft, cTop, cRight, cBottom
     local margin = faceMargin   -- pushFree's constants, as PUC Lua's below
     pairBox[p], boxLeft[p], boxUp[p], boxRight[p], boxDown[p] = 1, cLeft + margin, cTop + margin,
       cRight + margin, cBottom + margin
-    putSide(sides1[1], internal1[1], top + 1)
-    putSide(sides1[3], internal1[3], top + 2)
-    putSide(sides1[5], internal1[5], top + 3)
-    putSide(sides1[7], internal1[7], top + 4)
-    putSide(sides2[2], internal2[1], top + 5)
-    putSide(sides2[4], internal2[3], top + 6)
-    putSide(sides2[6], internal2[5], top + 7)
-    putSide(sides2[8], internal2[7], top + 8)
-    return top + 8, isAbove(min(cLeft, cTop, cRight, cBottom))
+    local line1, line2, line3, line4 = sides1[1], sides1[3], sides1[5], sides1[7]
+    local flag1, flag2, flag3, flag4 = internal1[1], internal1[3], internal1[5], internal1[7]
+    flags[line1], flags[line2], flags[line3], flags[line4] = flag1, flag2, flag3, flag4
+    putSide(line1, flag1, top + 1)
+    putSide(line2, flag2, top + 2)
+    putSide(line3, flag3, top + 3)
+    putSide(line4, flag4, top + 4)
+    top = top + 4
+    local line, flag = sides2[2], internal2[1]
+    putSide(line, flag, top + 1)
+    top = top + abs(flag - flags[line])
+    line, flag = sides2[4], internal2[3]
+    putSide(line, flag, top + 1)
+    top = top + abs(flag - flags[line])
+    line, flag = sides2[6], internal2[5]
+    putSide(line, flag, top + 1)
+    top = top + abs(flag - flags[line])
+    line, flag = sides2[8], internal2[7]
+    putSide(line, flag, top + 1)
+    top = top + abs(flag - flags[line])
+    return top, isAbove(min(cLeft, cTop, cRight, cBottom))
   end
 else
   rectPairFaces = function(view1, i, view2, j, top, p)
@@ -5542,7 +5605,7 @@ else
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
     local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
     local lift, foot, footReach = faceLift, nearestFoot, nearestReach
-    local foot2, foot2Reach = secondFoot, secondReach
+    local foot2, foot2Reach, nearX, nearY = secondFoot, secondReach, seamX, seamY
     -- p1's sides' faceC, -lo of the axis-parallel edges in pairFaces (fl(b - a) = -fl(a - b))
     local cLeft = boxes2[b - 1] - boxes1[a - 3]
     local cTop = boxes2[b] - boxes1[a - 2]
@@ -5569,13 +5632,18 @@ else
       local d = lift + c
       if d < 0 then d = -d end   -- a comparison, not abs's call
       top = top + 1
-      fx[top] = sideX[line]
+      local ux = sideX[line]
+      fx[top] = ux
       fy[top] = sideY[line]
       fc[top] = c
       seam[top] = flag
       reach[top] = d
       if flag ~= 0 then
-        if d < seamReach then seamReach = d end
+        if ux ~= 0 then
+          if d < nearX then nearX = d end
+        elseif d < nearY then
+          nearY = d
+        end
       elseif d < footReach then
         foot2 = foot
         foot2Reach = footReach
@@ -5593,13 +5661,18 @@ else
         local d = lift + c
         if d < 0 then d = -d end
         top = top + 1
-        fx[top] = sideX[line]
+        local ux = sideX[line]
+        fx[top] = ux
         fy[top] = sideY[line]
         fc[top] = c
         seam[top] = flag
         reach[top] = d
         if flag ~= 0 then
-          if d < seamReach then seamReach = d end
+          if ux ~= 0 then
+            if d < nearX then nearX = d end
+          elseif d < nearY then
+            nearY = d
+          end
         elseif d < footReach then
           foot2 = foot
           foot2Reach = footReach
@@ -5612,6 +5685,7 @@ else
       end
     end
     nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+    seamX, seamY = nearX, nearY
     if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
     return top, 0
   end
@@ -5680,8 +5754,14 @@ local function nearestFree(np, margin)
     end
   elseif seamReach >= best then
     -- Every outer edge's line passes at least as far as the nearest foot (found 1) or the
-    -- second (found 2: all but the nearest): at most one line nearer than the best, no crossing.
-    return best, bestX, bestY
+    -- second (found 2: all but the nearest): at most one outer line nearer than the best, the
+    -- nearest foot's. No crossing when the lines nearer than the best are all parallel to an
+    -- axis, the same one: a crate on a floor at a seam, whose neighbours' vertical internal
+    -- faces pass nearer than the top (their det is exactly 0: no crossing either way).
+    if seamY >= best and (seamX >= best or found == 1 or fy[nearestFoot] == 0)
+        or seamX >= best and (found == 1 or fx[nearestFoot] == 0) then
+      return best, bestX, bestY
+    end
   end
   -- Crossings of two lines, each nearer than the best so far (a crossing is no nearer than
   -- either line): only the lines nearer than the best now can take part, usually a few of them.
@@ -5787,15 +5867,37 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   -- A flat rectangle needs no normals unscaled (flatBox gave its sign): rectPairFaces and PUC
   -- Lua's pairFaces read none; LuaJIT's addFaces reads them against a part not a rectangle, so
   -- there they wait for such a pair.
-  if view1.copies then
-    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 5) end
+  -- A rectangle part's comparison with its copy is checkCopy's, inline (20 VM instructions
+  -- fewer a push of bench/compound.lua's crate, 1.8 parts, on PUC Lua).
+  local copies = view1.copies
+  if copies then
+    local checked = view1.checked
+    if checked[i] ~= callStamp then
+      local copy = copies[i]
+      if view1.rects[i] ~= 0 and p1[3] == copy[3] and p1[4] == copy[4] and p1[7] == copy[7]
+          and p1[8] == copy[8] then
+        checked[i] = callStamp
+      else
+        checkCopy(view1, i, p1, 5)
+      end
+    end
   elseif view1.pending then
     local needed = k ~= 1 or view1.rects[1] == 0 or JIT and view2.rects[j] == 0
     if needed then partNormals(view1, 1, p1, #p1) end
     view1.pending = JIT and not needed
   end
-  if view2.copies then
-    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 5) end
+  copies = view2.copies
+  if copies then
+    local checked = view2.checked
+    if checked[j] ~= callStamp then
+      local copy = copies[j]
+      if view2.rects[j] ~= 0 and p2[3] == copy[3] and p2[4] == copy[4] and p2[7] == copy[7]
+          and p2[8] == copy[8] then
+        checked[j] = callStamp
+      else
+        checkCopy(view2, j, p2, 5)
+      end
+    end
   elseif view2.pending then
     local needed = k ~= 1 or view2.rects[1] == 0 or JIT and view1.rects[i] == 0
     if needed then partNormals(view2, 1, p2, #p2) end
@@ -5855,9 +5957,16 @@ if JIT then
     for k = 1, info.count do
       local part, record = shape[k], records[k]
       local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      local n = record[10]
       if part ~= record[9] then return nil end
-      if record[11] ~= 0 then
+      if record[16] == 0 then
+        -- a rectangle from its (xmin, ymin): as below, against the box's values loaded (the
+        -- scan of bench/compound.lua's floor: 2,815 machine instructions a call by callgrind,
+        -- where record[12] .. [15] took 2,978)
+        if part[1] ~= xmin or part[2] ~= ymin or part[5] ~= xmax or part[6] ~= ymax
+            or part[9] ~= nil or part[8] == nil then
+          return nil
+        end
+      elseif record[11] ~= 0 then
         -- an axis-parallel rectangle (rectKind): the coordinates of its first and third
         -- vertices, the four watched (see partBox), read at constant indices, not through the
         -- indices kept (a conversion and a bounds check each: the scan of the 20 parts of
@@ -5866,16 +5975,19 @@ if JIT then
             or part[6] ~= record[15] or part[9] ~= nil or part[8] == nil then
           return nil
         end
-      elseif n >= 6 then
-        -- the length as a border, part[n] set and part[n + 1] not, the same for an array
-        -- without holes: #part is a call on LuaJIT, across which every live number goes to
-        -- memory (the scan of 20 parts of bench/compound.lua took 13 % longer with it)
-        if part[n + 1] ~= nil or part[n] == nil or part[record[5]] ~= xmin
-            or part[record[6]] ~= ymin or part[record[7]] ~= xmax or part[record[8]] ~= ymax then
+      else
+        local n = record[10]
+        if n >= 6 then
+          -- the length as a border, part[n] set and part[n + 1] not, the same for an array
+          -- without holes: #part is a call on LuaJIT, across which every live number goes to
+          -- memory (the scan of 20 parts of bench/compound.lua took 13 % longer with it)
+          if part[n + 1] ~= nil or part[n] == nil or part[record[5]] ~= xmin
+              or part[record[6]] ~= ymin or part[record[7]] ~= xmax or part[record[8]] ~= ymax then
+            return nil
+          end
+        elseif #part ~= n then
           return nil
         end
-      elseif #part ~= n then
-        return nil
       end
       -- the largest gap between the boxes (< 0 when they overlap: a - b < 0 exactly when a < b,
       -- no NaN), by max: one branch for most parts (PUC Lua's tests: four, each a side exit)
@@ -5904,9 +6016,16 @@ else
     for k = 1, info.count do
       local part, record = shape[k], records[k]
       local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      local n = record[10]
-      if part ~= record[9] or #part ~= n then return nil end
-      if n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+      local n = record[16]   -- 0 for a rectangle from its (xmin, ymin), else the length
+      if part ~= record[9] then return nil end
+      if n == 0 then
+        -- its watched coordinates at constant indices, against the box's values loaded: two VM
+        -- instructions each, where the indices kept take three (14 a part for the checks here,
+        -- 18 below; the 20 parts of bench/compound.lua's floor are such rectangles)
+        if #part ~= 8 or part[1] ~= xmin or part[2] ~= ymin or part[5] ~= xmax or part[6] ~= ymax then
+          return nil
+        end
+      elseif #part ~= n or n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
           or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
         return nil
       end
@@ -6050,7 +6169,7 @@ function collideParts(fname, shape1, shape2, wantPush)
   faceLift = 1.25 * margin   -- as nearestFree's lift
   faceMargin = margin
   nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
-  feetKept = 0
+  seamX, seamY, feetKept = FAR, FAR, 0
   if found then
     for f = 1, found do
       local part = overlapping[f]

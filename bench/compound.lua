@@ -5,8 +5,14 @@
 --   lua5.4 bench/compound.lua only pushFloor 3000
 --                                              one timing row alone (its key, calls), for an
 --                                              instruction count that load cannot disturb:
---                                              valgrind --tool=callgrind at 1000 and 3000 calls,
---                                              the difference over 2000 is the cost per call
+--                                              valgrind --tool=callgrind at 10000 and 30000
+--                                              calls, the difference over 20000 is the cost per
+--                                              call (LuaJIT: its trace penalties are random,
+--                                              seeded by getrandom, so the traces and the count
+--                                              differ from run to run; compare medians over
+--                                              several runs, or fix the seed)
+--                                              (row scanFloor: the list's checks and box tests
+--                                              alone, the crate far above the floor)
 --   lua5.4 bench/compound.lua count pushFloor 300
 --                                              one timing row's VM instructions per call, by
 --                                              function (a debug.sethook count hook)
@@ -30,6 +36,8 @@ local function timingRows()
   local floor = parts.floor(20, 10, 100, 0)
   local crates = {}
   for k = 0, 99 do crates[#crates + 1] = parts.box(k * 1.91, 95, 8, 8) end
+  local above = {}   -- the crate far above the floor: the list's checks and box tests alone
+  for k = 0, 99 do above[#above + 1] = parts.box(k * 1.91, 50, 8, 8) end
   local corner = { parts.box(0, 0, 10, 100), parts.box(10, 90, 100, 10) }
   local cornerCrates = {}
   for k = 0, 99 do cornerCrates[#cornerCrates + 1] = parts.box(5 + k * 0.03, 85, 8, 8) end
@@ -95,6 +103,9 @@ local function timingRows()
         if x0 < cx1 and cx0 < x1 and y0 < cy1 and cy0 < y1 then sum = sum + (V(p, c) or 0) end
       end
       return sum
+    end },
+    { "scanFloor", "compound V: crate far above the floor (no pair)", function(i)
+      return (V(floor, above[i % 100 + 1])) and 1 or 0
     end },
     { "booleanFloor", "compound boolean: crate vs 20-part floor", function(i)
       return B(floor, crates[i % 100 + 1]) and 1 or 0

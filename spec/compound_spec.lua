@@ -213,6 +213,52 @@ describe("compound shapes", function()
       assertPush(list, crate, 2, 0)
     end)
 
+    it("sees a rectangle's second or fourth vertex moved inside its box", function()
+      -- A rectangle's first and third vertices hold the four coordinates on its box: the other
+      -- two can move with the box unchanged. The square 0..10 with its second vertex (10, 0)
+      -- moved to (5, 0): the edge (5, 0) -> (10, 10) is the line x = 5 + y / 2, at x = 5.75 for
+      -- y = 1.5, left of the crate x 8..9.5, y 0.5..1.5, which was inside the square (out
+      -- through the top by 1.5: 1.5 < 2 right, 9.5 down or left).
+      local list = { parts.box(0, 0, 10, 10), parts.box(30, 0, 10, 10) }
+      local crate = parts.box(8, 0.5, 1.5, 1)
+      for _ = 1, 2 do
+        assertPush(list, crate, 0, -1.5)
+        list[1][3] = 5
+        assert.is_false(parts.collide(list, { crate }))
+        assert.is_false(collide(list, crate))
+        assert.is_false(collideV(list, crate))
+        assert.is_false(collideV(crate, list))
+        list[1][3] = 10
+      end
+      -- Its fourth vertex (0, 10) moved to (0, 5): the edge (10, 10) -> (0, 5) is the line
+      -- y = 5 + x / 2, at y = 5.75 for x = 1.5, above the crate x 0.5..1.5, y 8..9.5, which was
+      -- inside the square (out through the left by 1.5: 1.5 < 2 down, 9.5 up or right).
+      crate = parts.box(0.5, 8, 1, 1.5)
+      for _ = 1, 2 do
+        assertPush(list, crate, -1.5, 0)
+        list[1][8] = 5
+        assert.is_false(parts.collide(list, { crate }))
+        assert.is_false(collide(list, crate))
+        assert.is_false(collideV(list, crate))
+        list[1][8] = 10
+      end
+    end)
+
+    it("follows a rectangle written from another corner, moved by hand", function()
+      -- {10,10, 0,10, 0,0, 10,0}: its first vertex is its (xmax, ymax). Moved right by 32, its x
+      -- 32..42 reach 42 - 40 = 2 into the crate x 40..48: out to the right by 2 (to the left by
+      -- 48 - 32 = 16; the crate's y 2..8 against 0..10: down by 10 - 2 = 8, up by 8 - 0 = 8).
+      local list = { { 10, 10, 0, 10, 0, 0, 10, 0 }, parts.box(100, 0, 10, 10) }
+      local crate = parts.box(40, 2, 8, 6)
+      assert.is_false(collideV(list, crate))
+      for i = 1, 7, 2 do list[1][i] = list[1][i] + 32 end
+      assert.is_true(collide(list, crate))
+      assertPush(list, crate, 2, 0)
+      for i = 1, 7, 2 do list[1][i] = list[1][i] - 32 end
+      assert.is_false(collide(list, crate))
+      assert.is_false(collideV(list, crate))
+    end)
+
     it("follows a part whose table is replaced or whose vertex count changes", function()
       local list = { parts.box(0, 0, 10, 10) }
       local crate = parts.box(40, 2, 8, 6)
