@@ -1885,8 +1885,8 @@ if JIT then
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
     end
-    local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
-    local rareEnd = 2^60   -- the first edge the loop cannot take as it is, if any
+    -- the least key and its overlap and edge end; the largest key (see below)
+    local leastKey, leastOverlap, leastEnd, largestKey = huge, 0.0, 1, -huge
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
       local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
@@ -1903,42 +1903,39 @@ if JIT then
                 nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
             min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
                 nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
-      -- (a repeated vertex gives no axis: n = 0, lo = 0, and the squared depth 0, not 0 / 0)
-      local squaredDepth = lo * (lo / max(nx * nx + ny * ny, 2^-1074))
-      -- taken as it is when surely reached past (lo < 0) by a finite depth beyond tolSq
-      rareEnd = min(rareEnd,
-        ib + 2^60 * isAbove(min(min(squaredDepth - tolSq, 2^1023 - squaredDepth), -lo)))
-      local better = isAbove(leastSquared - squaredDepth)
-      leastSquared = min(leastSquared, squaredDepth)
-      leastOverlap = better * -lo + (1 - better) * leastOverlap
+      -- The edge's key: its squared depth, negated when it is apart (lo > 0). An edge is taken
+      -- as it is when surely reached past (lo < 0) by a finite depth beyond tolSq: when its key
+      -- is above tolSq and below 2^1023; so the least key is at most tolSq exactly when some
+      -- edge is not (apart, within tolSq, no axis), and then it is such an edge. (A repeated
+      -- vertex gives no axis: n = 0, lo = 0, and the key 0, not 0 / 0.)
+      local overlap = -lo
+      local key = overlap * (abs(overlap) / max(nx * nx + ny * ny, 2^-1074))
+      local better = isAbove(leastKey - key)
+      leastKey, largestKey = min(leastKey, key), max(largestKey, key)
+      leastOverlap = better * overlap + (1 - better) * leastOverlap
       leastEnd = better * ib + (1 - better) * leastEnd
       ia = ib
     end
-    if rareEnd < 2^60 then
-      -- Apart, surely or decided exactly; else (reached past exactly, no axis, beyond the exact
-      -- range) reachPastFull decides from the start. (The loop's selections are not used then.)
-      ia = rareEnd == 1 and ne - 1 or rareEnd - 2
-      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
-      local nx, ny = ((edges[rareEnd + 1] + 0.0) - ay) * turn, (ax - edges[rareEnd]) * turn
-      local lo = min(
-        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
-                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
-            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
-                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
-        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
-                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
-            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
-                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
-      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
-      if squaredDepth > tolSq and squaredDepth < huge and lo > 0 then return false end
-      if squaredDepth <= tolSq and not vertexInside(ax, ay, edges[rareEnd], edges[rareEnd + 1],
+    if not (leastKey > tolSq and largestKey < 2^1023) then
+      -- The edge of the least key: apart, surely or decided exactly; else (reached past exactly,
+      -- no axis, keys beyond 2^1023 or -2^1023 only beyond the exact range, where no edge is
+      -- chosen) reachPastFull decides from the start. (The loop's selections are not used then.)
+      if leastKey > -2^1023 and largestKey < 2^1023 then
+        ia = leastEnd == 1 and ne - 1 or leastEnd - 2
+        local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+        local nx, ny = ((edges[leastEnd + 1] + 0.0) - ay) * turn, (ax - edges[leastEnd]) * turn
+        if nx * nx + ny * ny > 0 then   -- (then the key is the squared depth, signed, unclamped)
+          if leastKey < -tolSq then return false end   -- surely apart
+          if leastKey <= tolSq and not vertexInside(ax, ay, edges[leastEnd], edges[leastEnd + 1],
                                                     ax, ay, turn, other, no) then
-        return false
+            return false
+          end
+        end
       end
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
     end
-    return leastSquared, leastOverlap, leastEnd
+    return leastKey, leastOverlap, leastEnd
   end
 else
   -- PUC Lua: the least over both polygons' edges at once (reachPast's results and the polygon
