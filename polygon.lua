@@ -1887,22 +1887,31 @@ if JIT then
     end
     -- the least key and its overlap and edge end; the largest key (see below)
     local leastKey, leastOverlap, leastEnd, largestKey = huge, 0.0, 1, -huge
+    -- other's vertices, the last one repeated for fewer than 8 (harmless to a min)
+    local x1, y1 = other[1], other[2]
+    local j = min(3, no - 1)
+    local x2, y2 = other[j], other[j + 1]
+    j = min(5, no - 1)
+    local x3, y3 = other[j], other[j + 1]
+    j = min(7, no - 1)
+    local x4, y4 = other[j], other[j + 1]
+    j = min(9, no - 1)
+    local x5, y5 = other[j], other[j + 1]
+    j = min(11, no - 1)
+    local x6, y6 = other[j], other[j + 1]
+    j = min(13, no - 1)
+    local x7, y7 = other[j], other[j + 1]
+    local x8, y8 = other[no - 1], other[no]
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
       local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
       local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
-      -- other's vertices, the last one repeated for fewer than 8 (harmless to a min; the indices
-      -- are not locals, which a side trace leaving the loop would take over in registers), as a
-      -- tree of mins, not a chain: the edges' work overlaps more where each is shorter
+      -- as a tree of mins, not a chain: the edges' work overlaps more where each is shorter
       local lo = min(
-        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
-                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
-            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
-                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
-        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
-                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
-            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
-                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
+        min(min(nx * (x1 - ax) + ny * (y1 - ay), nx * (x2 - ax) + ny * (y2 - ay)),
+            min(nx * (x3 - ax) + ny * (y3 - ay), nx * (x4 - ax) + ny * (y4 - ay))),
+        min(min(nx * (x5 - ax) + ny * (y5 - ay), nx * (x6 - ax) + ny * (y6 - ay)),
+            min(nx * (x7 - ax) + ny * (y7 - ay), nx * (x8 - ax) + ny * (y8 - ay))))
       -- The edge's key: its squared depth, negated when it is apart (lo > 0). An edge is taken
       -- as it is when surely reached past (lo < 0) by a finite depth beyond tolSq: when its key
       -- is above tolSq and below 2^1023; so the least key is at most tolSq exactly when some
