@@ -2250,22 +2250,16 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
     -- luacheck: ignore 581 (NaN must count as non-finite)
     if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
-    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
-    -- The boxes' gap, then their spans before its exit, so that only four numbers (the turns and
-    -- the spans) stay alive across it: the side trace that takes over at that exit (the pairs
-    -- that miss, or those that do not, whichever the trace was not recorded on) inherits every
-    -- value alive there, and with the eight box sides and the second polygon's sums alive too it
-    -- failed to compile in some runs ("NYI: register coalescing too complex", 7 and 8 in 2 and 1
-    -- of 16 runs of `bash bench/aborts.sh 16`).
-    local gap = min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1)
-    spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
-    if both and gap <= 0 then
+    if both and min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1) <= 0 then
       return false   -- (the one-sided test may still see overlap)
     end
-    if turn1 == 0 or turn2 == 0 then return false end
+    if turn1 == 0 then return false end
+    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
+    if turn2 == 0 then return false end
     -- (a sure sign is finite: areaSignOf sends an infinite sum to the exact path; so t / |t|
     -- is 1 or -1 exactly)
     turn1, turn2 = turn1 / abs(turn1), turn2 / abs(turn2)
+    spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
   else
     -- PUC Lua: both in one call per polygon, comparisons instead of min and max (calls here)
     local sign1, xmin1, xmax1, ymin1, ymax1 = turnAndBounds(p1, n1)
