@@ -1931,7 +1931,7 @@ if JIT then
     -- (the vertices' locals dead from here: kept alive, the side traces leaving the loop took them
     -- over and failed to compile, "NYI: register coalescing too complex", 382 and 669 aborts a
     -- run when the traces were first recorded on missing pairs)
-    x1, y1, x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil
+    x1, y1, x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil   -- luacheck: ignore 311 532
     if not (leastKey > tolSq and largestKey < 2^1023) then
       -- The edge of the least key: apart, surely or decided exactly; else (reached past exactly,
       -- no axis, keys beyond 2^1023 or -2^1023 only beyond the exact range, where no edge is
