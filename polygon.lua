@@ -1913,8 +1913,10 @@ if JIT then
     local x8, y8 = other[no - 1], other[no]
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
-      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
-      local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
+      -- (no + 0.0 here: LuaJIT has no integers, and a -0.0 changes only the sign of a zero
+      -- projection, which no key or decision below tells from +0.0; three additions an edge)
+      local ax, ay = edges[ia], edges[ia + 1]
+      local nx, ny = (edges[ib + 1] - ay) * turn, (ax - edges[ib]) * turn   -- outward
       -- as a tree of mins, not a chain: the edges' work overlaps more where each is shorter
       local lo = min(
         min(min(nx * (x1 - ax) + ny * (y1 - ay), nx * (x2 - ax) + ny * (y2 - ay)),
