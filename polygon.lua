@@ -1944,7 +1944,7 @@ if JIT then
     if not (leastKey > tolSq and largestKey < 2^1023) then
       -- The edge of the least key: apart, surely or decided exactly; else (reached past exactly,
       -- no axis, keys beyond 2^1023 or -2^1023 only beyond the exact range, where no edge is
-      -- chosen) reachPastFull decides from the start. (The loop's selections are not used then.)
+      -- chosen) reachPastFull decides from the start. (The loop's overlap is not used then.)
       if leastKey > -2^1023 and largestKey < 2^1023 then
         ia = leastEnd == 1 and ne - 1 or leastEnd - 2
         local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
