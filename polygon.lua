@@ -1819,12 +1819,18 @@ end
 -- all of other's vertices in one expression (the last one repeated for fewer, harmless to a
 -- min), with no inner loop and no data-dependent exit: LuaJIT hoists the vertices' loads out
 -- of the loop, the edges do not wait for each other (the least is kept by selection with
--- isAbove), and the loop only notes the first edge within tolSq or apart (a touching pair's),
--- which is decided after it; if it is reached past after all, reachPastFull decides from the
--- start, as it does for larger polygons and where a selection would not keep -0.0 or NaN as
--- the comparisons do. With an exit at that edge, side traces that reached the loop before it
--- was compiled copied it, and the copy's exits failed to compile ("NYI: register coalescing
--- too complex", 2,216 aborts in 1 of 12 runs of the touching pairs, `luajit -jv`).
+-- isAbove). Each edge's key is its squared depth, negated when the edge is apart, so that the
+-- least key also names an edge within tolSq or apart (a touching pair's), if there is one,
+-- which is decided after the loop from the loop's own numbers; if it is reached past after
+-- all, reachPastFull decides from the start, as it does for larger polygons and where a
+-- selection would not keep -0.0 or NaN as the comparisons do. (Before, a second selection per
+-- edge noted the first such edge and the projections were taken again for it: 4,040 -> 3,840
+-- machine instructions per overlapping call, 2,891 -> 2,844 per touching one, cachegrind.)
+-- Any such edge will do: an edge decided apart makes the answer false whichever is examined,
+-- and otherwise reachPastFull decides. With an exit from the loop at such an edge, side traces
+-- that reached the loop before it was compiled copied it, and the copy's exits failed to
+-- compile ("NYI: register coalescing too complex", 2,216 aborts in 1 of 12 runs of the
+-- touching pairs).
 -- reachPastFull is one flat loop over every (edge, vertex) pair, whose edge's verdict is a side
 -- exit of its trace taken at every edge's last vertex (nested loops over a polygon's 6 to 8
 -- vertices failed to become traces of their own, "leaving loop in root trace", and their
@@ -1885,60 +1891,76 @@ if JIT then
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
     end
-    local leastSquared, leastOverlap, leastEnd = huge, 0.0, 1
-    local rareEnd = 2^60   -- the first edge the loop cannot take as it is, if any
+    -- the least key and its overlap and edge end; the largest key (see below)
+    local leastKey, leastOverlap, leastEnd, largestKey = huge, 0.0, 1, -huge
+    -- other's vertices, the last one repeated for fewer than 8 (harmless to a min), read before
+    -- the loop: its trace then takes them from the stack, where reading them in the loop made it
+    -- convert and check every index on each entry (its first pass took 387 machine instructions
+    -- on the overlapping pairs so, 228 now, callgrind; the reads, in the calling trace, share
+    -- shoelaceBounds' there for the first call)
+    local x1, y1 = other[1], other[2]
+    local j = min(3, no - 1)
+    local x2, y2 = other[j], other[j + 1]
+    j = min(5, no - 1)
+    local x3, y3 = other[j], other[j + 1]
+    j = min(7, no - 1)
+    local x4, y4 = other[j], other[j + 1]
+    j = min(9, no - 1)
+    local x5, y5 = other[j], other[j + 1]
+    j = min(11, no - 1)
+    local x6, y6 = other[j], other[j + 1]
+    j = min(13, no - 1)
+    local x7, y7 = other[j], other[j + 1]
+    local x8, y8 = other[no - 1], other[no]
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
-      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
-      local nx, ny = ((edges[ib + 1] + 0.0) - ay) * turn, (ax - edges[ib]) * turn   -- outward
-      -- other's vertices, the last one repeated for fewer than 8 (harmless to a min; the indices
-      -- are not locals, which a side trace leaving the loop would take over in registers), as a
-      -- tree of mins, not a chain: the edges' work overlaps more where each is shorter
+      -- (no + 0.0 here: LuaJIT has no integers, and a -0.0 changes only the sign of a zero
+      -- projection, which no key or decision below tells from +0.0; three additions an edge)
+      local ax, ay = edges[ia], edges[ia + 1]
+      local nx, ny = (edges[ib + 1] - ay) * turn, (ax - edges[ib]) * turn   -- outward
+      -- as a tree of mins, not a chain: the edges' work overlaps more where each is shorter
       local lo = min(
-        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
-                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
-            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
-                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
-        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
-                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
-            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
-                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
-      -- (a repeated vertex gives no axis: n = 0, lo = 0, and the squared depth 0, not 0 / 0)
-      local squaredDepth = lo * (lo / max(nx * nx + ny * ny, 2^-1074))
-      -- taken as it is when surely reached past (lo < 0) by a finite depth beyond tolSq
-      rareEnd = min(rareEnd,
-        ib + 2^60 * isAbove(min(min(squaredDepth - tolSq, 2^1023 - squaredDepth), -lo)))
-      local better = isAbove(leastSquared - squaredDepth)
-      leastSquared = min(leastSquared, squaredDepth)
-      leastOverlap = better * -lo + (1 - better) * leastOverlap
+        min(min(nx * (x1 - ax) + ny * (y1 - ay), nx * (x2 - ax) + ny * (y2 - ay)),
+            min(nx * (x3 - ax) + ny * (y3 - ay), nx * (x4 - ax) + ny * (y4 - ay))),
+        min(min(nx * (x5 - ax) + ny * (y5 - ay), nx * (x6 - ax) + ny * (y6 - ay)),
+            min(nx * (x7 - ax) + ny * (y7 - ay), nx * (x8 - ax) + ny * (y8 - ay))))
+      -- The edge's key: its squared depth, negated when it is apart (lo > 0). An edge is taken
+      -- as it is when surely reached past (lo < 0) by a finite depth beyond tolSq: when its key
+      -- is above tolSq and below 2^1023; so the least key is at most tolSq exactly when some
+      -- edge is not (apart, within tolSq, no axis), and then it is such an edge. (A repeated
+      -- vertex gives no axis: n = 0, lo = 0, and the key 0, not 0 / 0.)
+      local overlap = -lo
+      local key = overlap * (abs(overlap) / max(nx * nx + ny * ny, 2^-1074))
+      local better = isAbove(leastKey - key)
+      leastKey, largestKey = min(leastKey, key), max(largestKey, key)
+      leastOverlap = better * overlap + (1 - better) * leastOverlap
       leastEnd = better * ib + (1 - better) * leastEnd
       ia = ib
     end
-    if rareEnd < 2^60 then
-      -- Apart, surely or decided exactly; else (reached past exactly, no axis, beyond the exact
-      -- range) reachPastFull decides from the start. (The loop's selections are not used then.)
-      ia = rareEnd == 1 and ne - 1 or rareEnd - 2
-      local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
-      local nx, ny = ((edges[rareEnd + 1] + 0.0) - ay) * turn, (ax - edges[rareEnd]) * turn
-      local lo = min(
-        min(min(nx * (other[1] - ax) + ny * (other[2] - ay),
-                nx * (other[min(3, no - 1)] - ax) + ny * (other[min(4, no)] - ay)),
-            min(nx * (other[min(5, no - 1)] - ax) + ny * (other[min(6, no)] - ay),
-                nx * (other[min(7, no - 1)] - ax) + ny * (other[min(8, no)] - ay))),
-        min(min(nx * (other[min(9, no - 1)] - ax) + ny * (other[min(10, no)] - ay),
-                nx * (other[min(11, no - 1)] - ax) + ny * (other[min(12, no)] - ay)),
-            min(nx * (other[min(13, no - 1)] - ax) + ny * (other[min(14, no)] - ay),
-                nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
-      local squaredDepth = lo * (lo / (nx * nx + ny * ny))
-      if squaredDepth > tolSq and squaredDepth < huge and lo > 0 then return false end
-      if squaredDepth <= tolSq and not vertexInside(ax, ay, edges[rareEnd], edges[rareEnd + 1],
+    -- (the vertices' locals dead from here: kept alive, the side traces leaving the loop took them
+    -- over and failed to compile, "NYI: register coalescing too complex", 382 and 669 aborts a
+    -- run when the traces were first recorded on missing pairs)
+    x1, y1, x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil   -- luacheck: ignore 311 532
+    if not (leastKey > tolSq and largestKey < 2^1023) then
+      -- The edge of the least key: apart, surely or decided exactly; else (reached past exactly,
+      -- no axis, keys beyond 2^1023 or -2^1023 only beyond the exact range, where no edge is
+      -- chosen) reachPastFull decides from the start. (The loop's overlap is not used then.)
+      if leastKey > -2^1023 and largestKey < 2^1023 then
+        ia = leastEnd == 1 and ne - 1 or leastEnd - 2
+        local ax, ay = edges[ia] + 0.0, edges[ia + 1] + 0.0
+        local nx, ny = ((edges[leastEnd + 1] + 0.0) - ay) * turn, (ax - edges[leastEnd]) * turn
+        if nx * nx + ny * ny > 0 then   -- (then the key is the squared depth, signed, unclamped)
+          if leastKey < -tolSq then return false end   -- surely apart
+          if leastKey <= tolSq and not vertexInside(ax, ay, edges[leastEnd], edges[leastEnd + 1],
                                                     ax, ay, turn, other, no) then
-        return false
+            return false
+          end
+        end
       end
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
     end
-    return leastSquared, leastOverlap, leastEnd
+    return leastKey, leastOverlap, leastEnd
   end
 else
   -- PUC Lua: the least over both polygons' edges at once (reachPast's results and the polygon
