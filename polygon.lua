@@ -4995,7 +4995,7 @@ end
 local function checkCopy(view, k, part, level)
   view.checked[k] = callStamp
   local copy, n = view.copies[k], view.lengths[k]
-  if view.rects[k] ~= 0 then   -- (addPair has this inline)
+  if view.rects[k] ~= 0 then
     -- An axis-parallel rectangle: its first and third vertices are the coordinates watched on
     -- its box (partBox), which every call compares before it reads a part (partsOverlapping,
     -- listView): equal to their copies. The other two vertices are compared here.
@@ -5889,37 +5889,15 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   -- A flat rectangle needs no normals unscaled (flatBox gave its sign): rectPairFaces and PUC
   -- Lua's pairFaces read none; LuaJIT's addFaces reads them against a part not a rectangle, so
   -- there they wait for such a pair.
-  -- A rectangle part's comparison with its copy is checkCopy's, inline (20 VM instructions
-  -- fewer a push of bench/compound.lua's crate, 1.8 parts, on PUC Lua).
-  local copies = view1.copies
-  if copies then
-    local checked = view1.checked
-    if checked[i] ~= callStamp then
-      local copy = copies[i]
-      if view1.rects[i] ~= 0 and p1[3] == copy[3] and p1[4] == copy[4] and p1[7] == copy[7]
-          and p1[8] == copy[8] then
-        checked[i] = callStamp
-      else
-        checkCopy(view1, i, p1, 5)
-      end
-    end
+  if view1.copies then
+    if view1.checked[i] ~= callStamp then checkCopy(view1, i, p1, 5) end
   elseif view1.pending then
     local needed = k ~= 1 or view1.rects[1] == 0 or JIT and view2.rects[j] == 0
     if needed then partNormals(view1, 1, p1, #p1) end
     view1.pending = JIT and not needed
   end
-  copies = view2.copies
-  if copies then
-    local checked = view2.checked
-    if checked[j] ~= callStamp then
-      local copy = copies[j]
-      if view2.rects[j] ~= 0 and p2[3] == copy[3] and p2[4] == copy[4] and p2[7] == copy[7]
-          and p2[8] == copy[8] then
-        checked[j] = callStamp
-      else
-        checkCopy(view2, j, p2, 5)
-      end
-    end
+  if view2.copies then
+    if view2.checked[j] ~= callStamp then checkCopy(view2, j, p2, 5) end
   elseif view2.pending then
     local needed = k ~= 1 or view2.rects[1] == 0 or JIT and view1.rects[i] == 0
     if needed then partNormals(view2, 1, p2, #p2) end
