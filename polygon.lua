@@ -743,18 +743,18 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- From 65 to 4,096 vertices first a split in two passes (below); up to 64 vertices a split in
--- one pass, over the vertices on LuaJIT, over the edges on PUC Lua (below that); where their
--- tests after the loop fail: a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum
--- over vertices of x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly
--- (TwoSum) and every x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
--- of |products| (bounded through their squares, which need no branch or abs). When that second
--- part could reach a quarter ulp of the result the area is summed exactly as an expansion
--- instead (several times slower). The x are not taken relative to vertex 1 (as shoelace does):
--- far from the origin that makes T larger, but the test below still passes while T / |2A| is
--- below about 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the
--- x differences' TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4
--- (interleaved rounds on bench/workloads.lua's ordinary polygons).
+-- From 65 to 4,096 vertices first a split in two passes (below); up to 64 vertices a split in one
+-- pass, over the vertices on LuaJIT, over the edges on PUC Lua (below that); where their tests
+-- after the loop fail: a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices
+-- of x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
+-- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum of
+-- |products| (bounded through their squares, which need no branch or abs). When that second part
+-- could reach a quarter ulp of the result the area is summed exactly as an expansion instead
+-- (several times slower). The x are not taken relative to vertex 1 (as shoelace does): far from
+-- the origin that makes T larger, but the test below still passes while T / |2A| is below about
+-- 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the x differences'
+-- TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4 (interleaved rounds on
+-- bench/workloads.lua's ordinary polygons).
 -- @return area; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function polygon.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
