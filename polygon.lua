@@ -852,8 +852,7 @@ function polygon.polygonAreaAccurate(points)
       and 2^10 * (m + 4) * (m + 4) * m * qSq * (sqSum + m * qSq) <= twice * twice then
       return abs(twice) * 0.5
     end
-  end
-  if m <= 4096 and (m > 64 or not JIT) then
+  elseif m <= 4096 then
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
     local g = points[k] - x1
