@@ -783,11 +783,13 @@ function polygon.polygonAreaAccurate(points)
     -- and D_k = dh + dlExact (dh = yh_{k-1} - yh_{k+1}, dlExact = yl_{k-1} - yl_{k+1}): the
     -- term is X dh, summed exactly in hi, plus X dlExact + xl (dh + dlExact), small, summed in
     -- floating point in lo (dl, dlExact rounded). 20 floating-point operations a vertex against
-    -- Dot2's 33 (2.4 against 3.6 ns a vertex at 32 to 64 vertices). The y parts carry from
-    -- step to step: y_m's and y_1's first; vertex m's term, with y_1's again, after the loop.
-    -- The middle vertex comes from integer operations: m - m % 2 + 1 (a floating-point floor
-    -- on LuaJIT, on the path to every split) took 73 ns a call against 65 on
-    -- bench/workloads.lua's ordinary polygons (luajit bench/area_small.lua, both in one run).
+    -- Dot2's 33: 40 machine instructions a step of the compiled loop against 71 (luajit -jdump
+    -- on bench/workloads.lua's ordinary polygons), 753 a call in all against 937 (cachegrind).
+    -- The y parts carry from step to step: y_m's and y_1's first; vertex m's term, with y_1's
+    -- again, after the loop (carrying x too, to take it in the loop, spilled registers). The
+    -- middle vertex comes from integer operations: m - m % 2 + 1 is a floating-point floor on
+    -- LuaJIT, on the path to every split; the same instructions, but it cost 3 to 8 ns a call
+    -- (luajit bench/area_small.lua --alone, alternating runs).
     local x1, y1 = points[1], points[2]
     local k = (n - n % 4) / 2 + 1
     local g = abs(points[k] - x1) + abs(points[k + 1] - y1)
