@@ -784,7 +784,8 @@ function polygon.polygonAreaAccurate(points)
     -- term is X dh, summed exactly in hi, plus X dlExact + xl (dh + dlExact), small, summed in
     -- floating point in lo (dl, dlExact rounded). 20 floating-point operations a vertex against
     -- Dot2's 33: 40 machine instructions a step of the compiled loop against 71 (luajit -jdump
-    -- on bench/workloads.lua's ordinary polygons), 753 a call in all against 937 (cachegrind).
+    -- on bench/workloads.lua's ordinary polygons), 756 a call in all against 944 (cachegrind on
+    -- luajit bench/area_small.lua --alone; polygonArea 391).
     -- The y parts carry from step to step: y_m's and y_1's first; vertex m's term, with y_1's
     -- again, after the loop (carrying x too, to take it in the loop, spilled registers). The
     -- middle vertex comes from integer operations: m - m % 2 + 1 is a floating-point floor on

@@ -8,9 +8,11 @@
 -- function once per workload, in an order that turns round every round; the table shows the
 -- median over the rounds (and the least and greatest). Every result is folded into a checksum
 -- (printed), and each version's sum of areas must equal the other's.
--- luajit bench/area_small.lua --alone FILE [FUNCTION [WORKLOAD]] times one function alone in its
--- process (default polygonAreaAccurate on `ord`; `far9` too): 10,000 passes over the 200
--- polygons, no other function's traces beside it. Run it for two files in turn, several times.
+-- luajit bench/area_small.lua --alone FILE [FUNCTION [WORKLOAD [PASSES]]] times one function
+-- alone in its process (default polygonAreaAccurate on `ord`; `far9` too): PASSES (10,000)
+-- passes over the 200 polygons, no other function's traces beside it. Run it for two files in
+-- turn, several times; under cachegrind, the difference of two PASSES counts gives the machine
+-- instructions a call without the setup.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 
 local W = require "bench.workloads"
@@ -27,12 +29,13 @@ if arg and arg[1] == "--alone" then
   local f = loadModule(arg[2])[arg[3] or "polygonAreaAccurate"]
   local list = W.ordinary(200)
   if arg[4] == "far9" then list = shapes.translateEach(list, 1e9, -0.6e9) end
+  local passes = tonumber(arg[5]) or 10000
   local sum, t0 = 0, clock()
-  for _ = 1, 10000 do
+  for _ = 1, passes do
     for i = 1, #list do sum = sum + f(list[i]) end
   end
   print(("%s %s: %.1f ns a call, checksum %.17g"):format(arg[2], arg[3] or "polygonAreaAccurate",
-    (clock() - t0) / (10000 * #list) * 1e9, sum))
+    (clock() - t0) / (passes * #list) * 1e9, sum))
   return
 end
 
