@@ -131,8 +131,8 @@ describe("polygonAreaAccurate from 3 to 64 vertices", function()
         local p, q = {}, {}
         for i = 1, 2 * m do
           p[i] = shapes.integer(r:int(-1000, 1000))
-          -- up to 2^53 - 1 (exact doubles, products beyond 2^53)
-          q[i] = shapes.integer(r:int(-2 ^ 30, 2 ^ 30) * 2 ^ 22 + r:int(0, 2 ^ 22 - 1))
+          -- up to about 2^52 (exact doubles; their products reach 2^105)
+          q[i] = shapes.integer(r:int(-2 ^ 29, 2 ^ 29) * 2 ^ 23 + r:int(0, 2 ^ 23 - 1))
         end
         list[#list + 1] = p
         list[#list + 1] = q
