@@ -846,7 +846,7 @@ function polygon.polygonAreaAccurate(points)
     --     sqSum's rounding). That is at most 2^-56 |twice| (an eighth of an ulp, so twice, hi +
     --     lo rounded once, is within 0.75 ulp of twice the area) when
     --     1.03 (m + 4)^2 2 (5.06 m q^2 sqSum + 4 m^2 q^4) <= 2^-6 twice^2, which
-    --     667 (m + 4)^2 m q^2 (sqSum + m q^2) <= twice^2 implies: tested with 2^10 for 667, room
+    --     668 (m + 4)^2 m q^2 (sqSum + m q^2) <= twice^2 implies: tested with 2^10 for 668, room
     --     for the test's own rounding. It passes only for |twice| >= 2^-280, so products that
     --     underflow (an absolute error of 2^-1075 each) stay far inside that room. NaN fails
     --     every test. (LuaJIT has no integers: no + 0.0 here.)
