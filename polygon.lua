@@ -743,18 +743,18 @@ function polygon.polygonArea(points)
 end
 
 --- The exact area of the given doubles, rounded to within one ulp.
--- From 65 to 4,096 vertices first a split in two passes (below); on PUC Lua up to 64 vertices
--- a split in one pass (below that); where their tests after the loop fail, and on LuaJIT up to
--- 64 vertices: a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices of
--- x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
--- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum
--- of |products| (bounded through their squares, which need no branch or abs). When that second
--- part could reach a quarter ulp of the result the area is summed exactly as an expansion
--- instead (several times slower). The x are not taken relative to vertex 1 (as shoelace does):
--- far from the origin that makes T larger, but the test below still passes while T / |2A| is
--- below about 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the
--- x differences' TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4
--- (interleaved rounds on bench/workloads.lua's ordinary polygons).
+-- From 65 to 4,096 vertices first a split in two passes (below); up to 64 vertices a split in one
+-- pass, over the vertices on LuaJIT, over the edges on PUC Lua (below that); where their tests
+-- after the loop fail: a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices
+-- of x_i (y_{i+1} - y_{i-1}), with every difference split into hi + lo exactly (TwoSum) and every
+-- x * hi product too (TwoProduct): its error is below eps |2A| plus 16 eps^2 m^2 T, T the sum of
+-- |products| (bounded through their squares, which need no branch or abs). When that second part
+-- could reach a quarter ulp of the result the area is summed exactly as an expansion instead
+-- (several times slower). The x are not taken relative to vertex 1 (as shoelace does): far from
+-- the origin that makes T larger, but the test below still passes while T / |2A| is below about
+-- 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the x differences'
+-- TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4 (interleaved rounds on
+-- bench/workloads.lua's ordinary polygons).
 -- @return area; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function polygon.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
@@ -775,7 +775,87 @@ function polygon.polygonAreaAccurate(points)
   -- spiky polygons: on bench/workloads.lua's large star it is 0.09, 0.17, 1.1 and 31 times what
   -- the test allows at 2,048, 4,096, 16,384 and 100,000 vertices, on its convex polygon 0.04,
   -- 0.09, 0.5 and 2.7.)
-  if m <= 4096 and (m > 64 or not JIT) then
+  if JIT and m <= 64 then
+    -- LuaJIT up to 64 vertices: a split of the same kind (see above) in one pass, one vertex a
+    -- step and no branch. Up to sign, twice the area is the sum over vertices of X_k D_k with
+    -- X_k = x_k - x0h (x0h: x_1's rounded part; the D_k sum to 0, so the shift changes
+    -- nothing) and D_k = y_{k-1} - y_{k+1}. In the split's parts X_k = X + xl (X = xh - x0h)
+    -- and D_k = dh + dlExact (dh = yh_{k-1} - yh_{k+1}, dlExact = yl_{k-1} - yl_{k+1}): the
+    -- term is X dh, summed exactly in hi, plus X dlExact + xl (dh + dlExact), small, summed in
+    -- floating point in lo (dl, dlExact rounded). 20 floating-point operations a vertex against
+    -- Dot2's 33: 40 machine instructions a step of the compiled loop against 71 (luajit -jdump
+    -- on bench/workloads.lua's ordinary polygons), 756 a call in all against 944 (cachegrind on
+    -- luajit bench/area_small.lua --alone; polygonArea 391).
+    -- The y parts carry from step to step: y_m's and y_1's first; vertex m's term, with y_1's
+    -- again, after the loop (carrying x too, to take it in the loop, spilled registers). The
+    -- middle vertex comes from integer operations: m - m % 2 + 1 is a floating-point floor on
+    -- LuaJIT, on the path to every split; the same instructions, but it cost 3 to 8 ns a call
+    -- (luajit bench/area_small.lua --alone, alternating runs).
+    local x1, y1 = points[1], points[2]
+    local k = (n - n % 4) / 2 + 1
+    local g = abs(points[k] - x1) + abs(points[k + 1] - y1)
+    -- sigma = 2^53 q, the power of two at or above 2^33 g: (t + u) - t rounds to it, or to 0
+    -- when u is one (a tie, rounded to even t), which max turns into u
+    local t, u = g * 2^86, g * 2^33
+    local sigma = max((t + u) - t, u)
+    local x0h = (x1 + sigma) - sigma
+    local y = points[n]
+    local yhPrev = (y + sigma) - sigma    -- the parts of y_{k-1}, then of y_k
+    local ylPrev = y - yhPrev
+    local yhCur = (y1 + sigma) - sigma
+    local ylCur = y1 - yhCur
+    local hi, lo, sqSum = 0.0, 0.0, 0.0   -- sqSum: the sum of X^2 + dh^2
+    for i = 1, n - 3, 2 do
+      local x = points[i]
+      y = points[i + 3]
+      local xh = (x + sigma) - sigma
+      local xl = x - xh
+      local X = xh - x0h
+      local yh = (y + sigma) - sigma
+      local yl = y - yh
+      local dh = yhPrev - yh
+      local dl = ylPrev - yl
+      hi = hi + X * dh
+      lo = lo + (X * dl + xl * (dh + dl))
+      sqSum = sqSum + (X * X + dh * dh)
+      yhPrev, ylPrev, yhCur, ylCur = yhCur, ylCur, yh, yl
+    end
+    local x = points[n - 1]               -- vertex m: y_{m-1} before it, y_1 after it
+    local xh = (x + sigma) - sigma
+    local xl = x - xh
+    local X = xh - x0h
+    local yh = (y1 + sigma) - sigma
+    local dh = yhPrev - yh
+    local dl = ylPrev - (y1 - yh)
+    local twice = (hi + X * dh) + (lo + (X * dl + xl * (dh + dl)))
+    sqSum = sqSum + (X * X + dh * dh)
+    local q = sigma * 2^-53
+    local qSq = q * q
+    -- The tests (with g in [2^-120, 2^120], 2^33 g and 2^86 g are exact, q >= 2^-140):
+    -- (1) sqSum <= 2^53 q^2, rounded by less than 1% (m <= 64): every |X| and |dh| is below
+    --     2^26.6 q. (2) |x_1|, |y_1|, |y_2| <= 2^49 q: x0h and y_1's, y_2's parts are exact.
+    --     Then every |xh| < 2^52 q (else |X| > 2^51 q), so every x split is exact and X too;
+    --     each y_j is joined to y_1 or y_2 by a chain of dh (y_{k-1} to y_{k+1}), and the first
+    --     |yh| >= 2^52 q along one would follow one below 2^49.1 q (the sum of |dh| is below
+    --     sqrt(m sqSum) < 2^30 q) with a |dh| > 2^51 q: so every y split and dh is exact.
+    --     Every |X dh| and partial sum of hi is below sqSum / 2 < 2^53 q^2: hi is exact.
+    -- (3) lo's error: each term's rounding (dl, dh + dl, two products, one sum) errs by at
+    --     most 4.01 eps U_k, U_k = 2 q |X| + q (|dh| + 2 q) (|dlExact| <= 2 q, |xl| <= q), and
+    --     the m - 1 additions to lo by (m - 1) eps sum U_k at most: 1.01 (m + 4) eps sum U_k
+    --     in all, where sum U_k <= q sqrt(5.06 m sqSum) + 2 m q^2 (Cauchy-Schwarz, and 1% for
+    --     sqSum's rounding). That is at most 2^-56 |twice| (an eighth of an ulp, so twice, hi +
+    --     lo rounded once, is within 0.75 ulp of twice the area) when
+    --     1.03 (m + 4)^2 2 (5.06 m q^2 sqSum + 4 m^2 q^4) <= 2^-6 twice^2, which
+    --     668 (m + 4)^2 m q^2 (sqSum + m q^2) <= twice^2 implies: tested with 2^10 for 668, room
+    --     for the test's own rounding. It passes only for |twice| >= 2^-280, so products that
+    --     underflow (an absolute error of 2^-1075 each) stay far inside that room. NaN fails
+    --     every test. (LuaJIT has no integers: no + 0.0 here.)
+    if g >= 2^-120 and g <= 2^120 and sqSum <= 2^53 * qSq
+      and max(abs(x1), abs(y1), abs(points[4])) <= 2^49 * q
+      and 2^10 * (m + 4) * (m + 4) * m * qSq * (sqSum + m * qSq) <= twice * twice then
+      return abs(twice) * 0.5
+    end
+  elseif m <= 4096 then
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
     local k = m - m % 2 + 1   -- the middle vertex, as the flat index of its x
     local g = points[k] - x1
