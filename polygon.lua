@@ -2263,16 +2263,19 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
     -- luacheck: ignore 581 (NaN must count as non-finite)
     if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+    -- Both turns and the spans before the box test, so that only those four numbers are alive
+    -- at its exit: the side trace that a miss takes there inherits them, where with the sums
+    -- and the boxes alive it failed to compile in some runs ("NYI: register coalescing too
+    -- complex", 10 in 3 of 16 runs of `bash bench/aborts.sh 16`)
+    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
+    spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
     if both and min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1) <= 0 then
       return false   -- (the one-sided test may still see overlap)
     end
-    if turn1 == 0 then return false end
-    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
-    if turn2 == 0 then return false end
+    if turn1 == 0 or turn2 == 0 then return false end
     -- (a sure sign is finite: areaSignOf sends an infinite sum to the exact path; so t / |t|
     -- is 1 or -1 exactly)
     turn1, turn2 = turn1 / abs(turn1), turn2 / abs(turn2)
-    spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
   else
     -- PUC Lua: both in one call per polygon, comparisons instead of min and max (calls here)
     local sign1, xmin1, xmax1, ymin1, ymax1 = turnAndBounds(p1, n1)
