@@ -416,12 +416,12 @@ if JIT then
     -- tutorial's time with the loop, 0.12 to 0.16 without: `luajit bench/isolated.lua
     -- polygonsCollideV miss`). Vertices 2 to 8, the last one repeated for fewer (its edges add
     -- 0 to the sum); the sum in pairs, as a tree, where the loop's is a chain.
+    -- (vertices 2 and 3 at constant indices: convexPenetration, the one caller, hands on 3
+    -- vertices or more)
     local x1, y1 = points[1] + 0.0, points[2] + 0.0
-    local j = min(3, n - 1)
-    local x2, y2 = points[j] + 0.0, points[j + 1] + 0.0
-    j = min(5, n - 1)
-    local x3, y3 = points[j] + 0.0, points[j + 1] + 0.0
-    j = min(7, n - 1)
+    local x2, y2 = points[3] + 0.0, points[4] + 0.0
+    local x3, y3 = points[5] + 0.0, points[6] + 0.0
+    local j = min(7, n - 1)
     local x4, y4 = points[j] + 0.0, points[j + 1] + 0.0
     j = min(9, n - 1)
     local x5, y5 = points[j] + 0.0, points[j + 1] + 0.0
@@ -1978,12 +1978,9 @@ if JIT then
     -- convert and check every index on each entry (its first pass took 387 machine instructions
     -- on the overlapping pairs so, 228 now, callgrind; the reads, in the calling trace, share
     -- shoelaceBounds' there for the first call)
-    local x1, y1 = other[1], other[2]
-    local j = min(3, no - 1)
-    local x2, y2 = other[j], other[j + 1]
-    j = min(5, no - 1)
-    local x3, y3 = other[j], other[j + 1]
-    j = min(7, no - 1)
+    -- (vertices 2 and 3 at constant indices: convexPenetration hands on 3 vertices or more)
+    local x1, y1, x2, y2, x3, y3 = other[1], other[2], other[3], other[4], other[5], other[6]
+    local j = min(7, no - 1)
     local x4, y4 = other[j], other[j + 1]
     j = min(9, no - 1)
     local x5, y5 = other[j], other[j + 1]
@@ -2346,16 +2343,19 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
     -- luacheck: ignore 581 (NaN must count as non-finite)
     if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+    -- Both turns and the spans before the box test, so that only those four numbers are alive
+    -- at its exit: the side trace that a miss takes there inherits them, where with the sums
+    -- and the boxes alive it failed to compile in some runs ("NYI: register coalescing too
+    -- complex", 10 in 3 of 16 runs of `bash bench/aborts.sh 16`)
+    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
+    spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
     if both and min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1) <= 0 then
       return false   -- (the one-sided test may still see overlap)
     end
-    if turn1 == 0 then return false end
-    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
-    if turn2 == 0 then return false end
+    if turn1 == 0 or turn2 == 0 then return false end
     -- (a sure sign is finite: areaSignOf sends an infinite sum to the exact path; so t / |t|
     -- is 1 or -1 exactly)
     turn1, turn2 = turn1 / abs(turn1), turn2 / abs(turn2)
-    spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
   else
     -- PUC Lua: both in one call per polygon, comparisons instead of min and max (calls here)
     local sign1, xmin1, xmax1, ymin1, ymax1 = turnAndBounds(p1, n1)
@@ -2468,12 +2468,11 @@ if JIT then
       local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves,
         dx, dy)
       ex, ey = ex * inside, ey * inside
+      -- (vertices 2 and 3 at constant indices: a polygon that collides has 3 vertices or more)
       local worst = max(0.0, reachOf(ex, ey, qx, qy, qbx, qby, points[1] + vx, points[2] + vy))
-      local j = min(3, n - 1)
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
-      j = min(5, n - 1)
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
-      j = min(7, n - 1)
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[3] + vx, points[4] + vy))
+      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[5] + vx, points[6] + vy))
+      local j = min(7, n - 1)
       worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
       j = min(9, n - 1)
       worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
