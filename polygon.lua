@@ -5990,7 +5990,7 @@ if JIT then
     -- without its record. The box and the table from parallel arrays (partBox), whose bounds
     -- checks the trace makes once before the loop, where a record costs a load, its type's
     -- guard and its own bounds check a part; the test of this loop-invariant flag is made once
-    -- too. (`luajit bench/compound.lua ratio scanFloor pushPairs`, three fixed seeds of the trace
+    -- too. (`luajit bench/compound.lua ratio scanFloor pushPairs`, five fixed seeds of the trace
     -- penalties: the scan of bench/compound.lua's floor 0.16 -> 0.14 us.)
     local everyFromMin = info.othersCount == 0
     for k = 1, info.count do
