@@ -4801,17 +4801,7 @@ local function partBox(view, k, part, n)
   -- PUC Lua's scan: 0 for a rectangle whose first vertex is its (xmin, ymin), and so its third
   -- its (xmax, ymax) (a box as games write it), compared with the box's values it loads anyway
   -- (see partsOverlapping); else the length
-  local fromMin = rect ~= 0 and ixmin == 1 and iymin == 2
-  record[16] = fromMin and 0 or n
-  -- LuaJIT's scan of a list whose parts are all such rectangles reads parallel arrays (see
-  -- partsOverlapping): the box again and the table, and the count of the other parts
-  local wasFromMin = view.fromMin[k]
-  if fromMin ~= wasFromMin then
-    view.fromMin[k] = fromMin
-    view.othersCount = view.othersCount + (fromMin and -1 or 1)
-  end
-  view.lefts[k], view.tops[k], view.rights[k], view.bottoms[k] = xmin, ymin, xmax, ymax
-  view.tables[k] = record[9]
+  record[16] = rect ~= 0 and ixmin == 1 and iymin == 2 and 0 or n
   return finite == 0
 end
 
@@ -4903,9 +4893,7 @@ end
 local function prepareParts(fname, argname, parts)
   local count = #parts
   local info = { count = count, lengths = {}, internal = {}, copies = {}, boxes = {}, turns = {},
-                 normals = {}, records = {}, checked = {}, rects = {}, sides = {},
-                 fromMin = {}, othersCount = count, lefts = {}, tops = {}, rights = {},
-                 bottoms = {}, tables = {} }
+                 normals = {}, records = {}, checked = {}, rects = {}, sides = {} }
   for k = 1, count do
     local part = parts[k]
     local n = #part
@@ -4915,7 +4903,6 @@ local function prepareParts(fname, argname, parts)
     for i = 1, n - 1, 2 do flags[i] = 0 end
     info.lengths[k], info.internal[k], info.copies[k], info.normals[k] = n, flags, copy, {}
     info.records[k], info.checked[k] = { 0, 0, 0, 0, 1, 2, 1, 2, part, n, 0, 0, 0, 0, 0, n }, 0
-    info.fromMin[k] = false   -- counted in othersCount until partBox finds otherwise
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
     end
@@ -4996,7 +4983,6 @@ local callStamp = 0   -- counts the calls that push: checked[k] == callStamp whe
 local function refreshPart(view, k, part, n, level)
   if not partBox(view, k, part, n) then
     view.records[k][9] = false   -- the next call refreshes the part again, and raises again
-    view.tables[k] = false
     error(("%s: %s holds a non-finite coordinate"):format(view.fname, view.argname), level)
   end
   partNormals(view, k, part, n)
@@ -5984,20 +5970,12 @@ local partsOverlapping
 if JIT then
   partsOverlapping = function(info, shape, x0, y0, x1, y1, window)
     local found, near, leastGapX, leastGapY = 0, 0, huge, huge
-    local records, tables = info.records, info.tables
-    local lefts, tops, rights, bottoms = info.lefts, info.tops, info.rights, info.bottoms
-    -- Every part a rectangle from its (xmin, ymin) (a floor or wall of boxes): its checks
-    -- without its record. The box and the table from parallel arrays (partBox), whose bounds
-    -- checks the trace makes once before the loop, where a record costs a load, its type's
-    -- guard and its own bounds check a part; the test of this loop-invariant flag is made once
-    -- too. (`luajit bench/compound.lua ratio scanFloor pushPairs`, five fixed seeds of the trace
-    -- penalties: the scan of bench/compound.lua's floor 0.16 -> 0.14 us.)
-    local everyFromMin = info.othersCount == 0
+    local records = info.records
     for k = 1, info.count do
-      local part = shape[k]
-      local xmin, ymin, xmax, ymax = lefts[k], tops[k], rights[k], bottoms[k]
-      if part ~= tables[k] then return nil end
-      if everyFromMin or records[k][16] == 0 then
+      local part, record = shape[k], records[k]
+      local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
+      if part ~= record[9] then return nil end
+      if record[16] == 0 then
         -- a rectangle from its (xmin, ymin): as below, against the box's values loaded (the
         -- scan of bench/compound.lua's floor: 2,815 machine instructions a call by callgrind,
         -- where record[12] .. [15] took 2,978)
@@ -6005,8 +5983,7 @@ if JIT then
             or part[9] ~= nil or part[8] == nil then
           return nil
         end
-      elseif records[k][11] ~= 0 then
-        local record = records[k]
+      elseif record[11] ~= 0 then
         -- an axis-parallel rectangle (rectKind): the coordinates of its first and third
         -- vertices, the four watched (see partBox), read at constant indices, not through the
         -- indices kept (a conversion and a bounds check each: the scan of the 20 parts of
@@ -6016,7 +5993,6 @@ if JIT then
           return nil
         end
       else
-        local record = records[k]
         local n = record[10]
         if n >= 6 then
           -- the length as a border, part[n] set and part[n + 1] not, the same for an array
