@@ -2451,8 +2451,8 @@ end
 -- 2.56 -> 3.88 and 4.15 -> 4.79. LuaJIT machine instructions per overlapping call 3,619 ->
 -- 3,514, mixed 2,361 -> 2,308 (valgrind's cachegrind, 900 minus 300 passes over `W.pairs(300,
 -- ...)`, trace seed fixed by bench/fixseed.c); time per call overlapping about 7 % less, mixed
--- 4 to 7 % (both versions in one process, interleaved rounds). Up to 8 vertices there is no loop: the vertices in one expression, as in
--- reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop in
+-- 4 to 7 % (both versions in one process, interleaved rounds). Up to 8 vertices there is no
+-- loop: the vertices in one expression, as in reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop in
 -- root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
 -- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine
 -- in every step: LuaJIT hoists those loads and products out of its compiled loop, and a side
