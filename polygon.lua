@@ -2437,29 +2437,29 @@ local function pushLine(lines, ia, ib, base, lineMoves, dx, dy)
 end
 
 -- separatingPush's check of one push along (ux, uy), on LuaJIT (PUC Lua's is written out in its
--- separatingPush, below): the largest det + bound over the vertices p of points moved by the
--- push, where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that
--- sign, which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside
--- when it is 0. One cross product a vertex, from q only: the bound grows with |p - q|, and trying
--- each vertex from the edge's other end too (the better of the two kept, as before) placed the
--- vertex that ends near that end, but cost a second cross product and bound for every vertex,
--- where the first push's margin (see separatingPush) already covers the bound from q for all
--- but a few: on the benchmark's 300 overlapping pairs 321 checks instead of 318. The largest
--- excess: `spec/sat_push_spec.lua` 4.76 eps M on LuaJIT as before, 4.76 -> 5.99 on Lua 5.4
--- (whose sin and cos make other pairs); 5.16 -> 6.31 over 4,000 calls on random pairs at
--- offsets to 2^40; `spec/sat_push_hard_spec.lua` (the deepest vertex at the edge's far end)
--- 2.56 -> 3.88 and 4.15 -> 4.79. LuaJIT machine instructions per overlapping call 3,619 ->
--- 3,514, mixed 2,361 -> 2,308 (valgrind's cachegrind, 900 minus 300 passes over `W.pairs(300,
--- ...)`, trace seed fixed by bench/fixseed.c); time per call overlapping about 7 % less, mixed
--- 4 to 7 % (both versions in one process, interleaved rounds). Up to 8 vertices there is no
--- loop: the vertices in one expression, as in reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop in
--- root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
--- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine
--- in every step: LuaJIT hoists those loads and products out of its compiled loop, and a side
--- trace that leaves the loop midway (a trace that ran on into it before it was compiled had
--- unrolled it) inherits only the push from its parent. With the line's eight numbers held
--- across the loop such side traces needed more registers than there are ("NYI: register
--- coalescing too complex", retried on every push, `luajit bench/isolated.lua polygonsCollideV`).
+-- separatingPush, below): the largest det + bound over the vertices p of points moved by the push,
+-- where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that sign,
+-- which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside when it
+-- is 0. One cross product a vertex, from q only: the bound grows with |p - q|, and trying each
+-- vertex from the edge's other end too (the better of the two kept, as before) placed the vertex
+-- that ends near that end, but cost a second cross product and bound for every vertex, where the
+-- first push's margin (see separatingPush) already covers the bound from q for all but a few: on
+-- the benchmark's 300 overlapping pairs 321 checks instead of 318. The largest excess:
+-- `spec/sat_push_spec.lua` 4.76 eps M on LuaJIT as before, 4.76 -> 5.99 on Lua 5.4 (whose sin and
+-- cos make other pairs); 5.16 -> 6.31 over 4,000 calls on random pairs at offsets to 2^40;
+-- `spec/sat_push_hard_spec.lua` (the deepest vertex at the edge's far end) 2.56 -> 3.88 and 4.15 ->
+-- 4.79. LuaJIT machine instructions per overlapping call 3,619 -> 3,514, mixed 2,361 -> 2,308
+-- (valgrind's cachegrind, 900 minus 300 passes over `W.pairs(300, ...)`, trace seed fixed by
+-- bench/fixseed.c); time per call overlapping about 7 % less, mixed 4 to 7 % (both versions in one
+-- process, interleaved rounds). Up to 8 vertices there is no loop: the vertices in one expression,
+-- as in reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop
+-- in root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
+-- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine in
+-- every step: LuaJIT hoists those loads and products out of its compiled loop, and a side trace
+-- that leaves the loop midway (a trace that ran on into it before it was compiled had unrolled it)
+-- inherits only the push from its parent. With the line's numbers held across the loop such
+-- side traces needed more registers than there are ("NYI: register coalescing too complex", retried
+-- on every push, `luajit bench/isolated.lua polygonsCollideV`).
 local lineShortfall
 if JIT then
   -- one vertex's det + bound, from q
