@@ -2427,70 +2427,74 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
 end
 
 -- The line a push must clear and the move of the other polygon's vertices, for a push (dx, dy):
--- the direction e = b - a of the chosen edge, its point q (vertex `base`) and a second point qb
--- (vertex `second`: the edge's other end, or q again when the line has no second vertex), all
--- moved by (dx, dy) when the line's polygon is the one that moves (lineMoves 1, else 0), and the
--- move (vx, vy) of the other polygon's vertices. Each coordinate rounds as a game's p[i] + dx.
-local function pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
+-- the direction e = b - a of the chosen edge and its point q (vertex `base`), both moved by
+-- (dx, dy) when the line's polygon is the one that moves (lineMoves 1, else 0), and the move
+-- (vx, vy) of the other polygon's vertices. Each coordinate rounds as a game's p[i] + dx.
+local function pushLine(lines, ia, ib, base, lineMoves, dx, dy)
   local lx, ly = dx * lineMoves, dy * lineMoves
   return (lines[ib] + lx) - (lines[ia] + lx), (lines[ib + 1] + ly) - (lines[ia + 1] + ly),
-    lines[base] + lx, lines[base + 1] + ly, lines[second] + lx, lines[second + 1] + ly,
-    dx - lx, dy - ly
+    lines[base] + lx, lines[base + 1] + ly, dx - lx, dy - ly
 end
 
 -- separatingPush's check of one push along (ux, uy), on LuaJIT (PUC Lua's is written out in its
--- separatingPush, below): the largest det + bound over the vertices p of points moved by the
--- push, where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that
--- sign, which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside
--- when it is 0. The bound grows with |p - q|, so each vertex is tried from qb too, and the better
--- of the two kept. Up to 8 vertices there is no loop: the vertices in one expression, as in
--- reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop in
--- root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
--- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine
--- in every step: LuaJIT hoists those loads and products out of its compiled loop, and a side
--- trace that leaves the loop midway (a trace that ran on into it before it was compiled had
--- unrolled it) inherits only the push from its parent. With the line's eight numbers held
--- across the loop such side traces needed more registers than there are ("NYI: register
--- coalescing too complex", retried on every push, `luajit bench/isolated.lua polygonsCollideV`).
+-- separatingPush, below): the largest det + bound over the vertices p of points moved by the push,
+-- where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that sign,
+-- which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside when it
+-- is 0. One cross product a vertex, from q only: the bound grows with |p - q|, and trying each
+-- vertex from the edge's other end too (the better of the two kept, as before) placed the vertex
+-- that ends near that end, but cost a second cross product and bound for every vertex, where the
+-- first push's margin (see separatingPush) already covers the bound from q for all but a few: on
+-- the benchmark's 300 overlapping pairs 321 checks instead of 318. The largest excess:
+-- `spec/sat_push_spec.lua` 4.76 eps M on LuaJIT as before, 4.76 -> 5.99 on Lua 5.4 (whose sin and
+-- cos make other pairs); 5.16 -> 6.31 over 4,000 calls on random pairs at offsets to 2^40;
+-- `spec/sat_push_hard_spec.lua` (the deepest vertex at the edge's far end) 2.56 -> 3.88 and 4.15 ->
+-- 4.79. LuaJIT machine instructions per overlapping call 3,619 -> 3,514, mixed 2,361 -> 2,308
+-- (valgrind's cachegrind, 900 minus 300 passes over `W.pairs(300, ...)`, trace seed fixed by
+-- bench/fixseed.c); time per call overlapping about 7 % less, mixed 4 to 7 % (both versions in one
+-- process, interleaved rounds). Up to 8 vertices there is no loop: the vertices in one expression,
+-- as in reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop
+-- in root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
+-- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine in
+-- every step: LuaJIT hoists those loads and products out of its compiled loop, and a side trace
+-- that leaves the loop midway (a trace that ran on into it before it was compiled had unrolled it)
+-- inherits only the push from its parent. With the line's numbers held across the loop such
+-- side traces needed more registers than there are ("NYI: register coalescing too complex", retried
+-- on every push, `luajit bench/isolated.lua polygonsCollideV`).
 local lineShortfall
 if JIT then
-  -- one vertex's det + bound, from q and from qb, the better of the two
-  local reachOf = function(ex, ey, qx, qy, qbx, qby, px, py)
+  -- one vertex's det + bound, from q
+  local reachOf = function(ex, ey, qx, qy, px, py)
     local l, r = ex * (py - qy), ey * (px - qx)
-    local lb, rb = ex * (py - qby), ey * (px - qbx)
-    return min(l - r + CROSS_BOUND * (abs(l) + abs(r)), lb - rb + CROSS_BOUND * (abs(lb) + abs(rb)))
+    return l - r + CROSS_BOUND * (abs(l) + abs(r))
   end
-  lineShortfall = function(lines, ia, ib, base, second, lineMoves, ux, uy, push, inside, points, n)
+  lineShortfall = function(lines, ia, ib, base, lineMoves, ux, uy, push, inside, points, n)
     local dx, dy = ux * push + 0.0, uy * push + 0.0
     if n <= 16 then
       -- Up to 8 vertices no loop: the vertices in one expression, the last one repeated for
       -- fewer (harmless to a max), taken in the loop's order
-      local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves,
-        dx, dy)
+      local ex, ey, qx, qy, vx, vy = pushLine(lines, ia, ib, base, lineMoves, dx, dy)
       ex, ey = ex * inside, ey * inside
       -- (vertices 2 and 3 at constant indices: a polygon that collides has 3 vertices or more)
-      local worst = max(0.0, reachOf(ex, ey, qx, qy, qbx, qby, points[1] + vx, points[2] + vy))
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[3] + vx, points[4] + vy))
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[5] + vx, points[6] + vy))
+      local worst = max(0.0, reachOf(ex, ey, qx, qy, points[1] + vx, points[2] + vy))
+      worst = max(worst, reachOf(ex, ey, qx, qy, points[3] + vx, points[4] + vy))
+      worst = max(worst, reachOf(ex, ey, qx, qy, points[5] + vx, points[6] + vy))
       local j = min(7, n - 1)
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      worst = max(worst, reachOf(ex, ey, qx, qy, points[j] + vx, points[j + 1] + vy))
       j = min(9, n - 1)
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      worst = max(worst, reachOf(ex, ey, qx, qy, points[j] + vx, points[j + 1] + vy))
       j = min(11, n - 1)
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
+      worst = max(worst, reachOf(ex, ey, qx, qy, points[j] + vx, points[j + 1] + vy))
       j = min(13, n - 1)
-      worst = max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[j] + vx, points[j + 1] + vy))
-      return max(worst, reachOf(ex, ey, qx, qy, qbx, qby, points[n - 1] + vx, points[n] + vy))
+      worst = max(worst, reachOf(ex, ey, qx, qy, points[j] + vx, points[j + 1] + vy))
+      return max(worst, reachOf(ex, ey, qx, qy, points[n - 1] + vx, points[n] + vy))
     end
     local worst = 0.0
     for i = 1, n - 1, 2 do
-      local ex, ey, qx, qy, qbx, qby, vx, vy = pushLine(lines, ia, ib, base, second, lineMoves, dx, dy)
+      local ex, ey, qx, qy, vx, vy = pushLine(lines, ia, ib, base, lineMoves, dx, dy)
       ex, ey = ex * inside, ey * inside
       local px, py = points[i] + vx, points[i + 1] + vy
       local l, r = ex * (py - qy), ey * (px - qx)
-      local lb, rb = ex * (py - qby), ey * (px - qbx)
-      worst = max(worst, min(l - r + CROSS_BOUND * (abs(l) + abs(r)),
-        lb - rb + CROSS_BOUND * (abs(lb) + abs(rb))))
+      worst = max(worst, l - r + CROSS_BOUND * (abs(l) + abs(r)))
     end
     return worst
   end
@@ -2515,16 +2519,20 @@ local PUSH_ROUNDS = 64
 -- line's point, e its edge: the moved coordinates' rounding, the depth's and the filter's bound
 -- grow with them), and one check proves it for 282 of the benchmark's 300 overlapping pairs,
 -- where from the depth itself 201 needed a second (which costs a square root and a division
--- too; 318 checks in all, not 501: `bench/workloads.lua`'s pairOverlap, a count hook). The
--- largest excess in `spec/sat_push_spec.lua` went from 4.46 to 4.76 eps M (the contract: 8),
--- as long as the second round's pushes it replaces. Along an axis the depth comes first, as
+-- too; 318 checks in all, not 501: `bench/workloads.lua`'s pairOverlap, a count hook; counted
+-- again per call, 285 in one check, and 282 and 321 since it tries each vertex from q only).
+-- The largest excess in `spec/sat_push_spec.lua` went from 4.46 to 4.76 eps M (the contract:
+-- 8), as long as the second round's pushes it replaces. Along an axis the depth comes first, as
 -- before: a move along x or y is often exact there.
 -- Returns push length, dx, dy.
--- Two bodies computing the same push. On PUC Lua the check (lineShortfall's, with pushLine's
+-- Two bodies computing the same push (to the depth's rounding, which differs by an ulp where the
+-- two SAT bodies round differently). On PUC Lua the check (lineShortfall's, with pushLine's
 -- line) is written out in the loop over the rounds, and its filter is tried first without abs,
 -- which places most vertices: with the calls (twelve arguments for the check, pushLine's eight
 -- results, abs) the push took 395 VM instructions per overlapping pair of the benchmark on Lua
--- 5.4, 313 so (`lua5.4 bench/instructions.lua`, the push's share counted by a count hook).
+-- 5.4, 313 so (`lua5.4 bench/instructions.lua`, the push's share counted by a count hook). Each
+-- vertex from q only, as on LuaJIT (the same pushes): overlapping pairs 1,374 -> 1,368 VM
+-- instructions a call, mixed 876 -> 875.
 local separatingPush
 if JIT then
   separatingPush = function(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
@@ -2532,7 +2540,6 @@ if JIT then
     local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
     if owner == 2 then lines, nl, others, no, lineMoves = p2, n2, p1, n1, 1.0 end
     local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
-    local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
     -- a moved vertex rounds by up to eps |x| against the push, |x| about the line's: the
     -- allowance for it, none on the first check, then that, doubling every further round
     local allowance = 0.0
@@ -2545,12 +2552,12 @@ if JIT then
         * isAbove(abs(ux * uy))
     end
     for _ = 1, PUSH_ROUNDS do
-      local worst = lineShortfall(lines, ia, edgeEnd, base, second, lineMoves, ux, uy, push,
-        inside, others, no)
+      local worst = lineShortfall(lines, ia, edgeEnd, base, lineMoves, ux, uy, push, inside,
+        others, no)
       if worst == 0 then return push, ux * push + 0.0, uy * push + 0.0 end   -- + 0.0: -0 to 0
       -- lengthen by the shortfall and the rounding allowance at the line (where the vertex that
       -- fell short lies, to within the polygons' size), doubled every round
-      local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, second, lineMoves,
+      local ex, ey, qx, qy = pushLine(lines, ia, edgeEnd, base, lineMoves,
         ux * push + 0.0, uy * push + 0.0)
       allowance = allowance == 0 and EPS * (abs(qx * ux) + abs(qy * uy)) or 2 * allowance
       push = push + worst / sqrt(ex * ex + ey * ey) + allowance
@@ -2565,7 +2572,6 @@ else
     local lines, nl, points, n, lineMoves = p1, n1, p2, n2, 0.0
     if owner == 2 then lines, nl, points, n, lineMoves = p2, n2, p1, n1, 1.0 end
     local ia = edgeEnd == 1 and nl - 1 or edgeEnd - 2
-    local second = base == ia and edgeEnd or base   -- the edge's other end when the line is it
     local crossBound = CROSS_BOUND   -- (a local: an upvalue is read by an instruction of its own)
     local allowance = 0.0   -- as on LuaJIT
     local push = depth
@@ -2582,7 +2588,6 @@ else
       local ex = ((lines[edgeEnd] + lx) - (lines[ia] + lx)) * inside
       local ey = ((lines[edgeEnd + 1] + ly) - (lines[ia + 1] + ly)) * inside
       local qx, qy = lines[base] + lx, lines[base + 1] + ly
-      local qbx, qby = lines[second] + lx, lines[second + 1] + ly
       local vx, vy = dx - lx, dy - ly
       local worst = 0.0
       for i = 1, n - 1, 2 do
@@ -2594,12 +2599,7 @@ else
         local det, t = l - r, crossBound * (l + r)
         if det > t or det > -t then
           local reach = det + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
-          if reach > worst then
-            l, r = ex * (py - qby), ey * (px - qbx)
-            local fromB = l - r + crossBound * ((l < 0 and -l or l) + (r < 0 and -r or r))
-            if fromB < reach then reach = fromB end
-            if reach > worst then worst = reach end
-          end
+          if reach > worst then worst = reach end
         end
       end
       if worst == 0 then return push, dx, dy end
