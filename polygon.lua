@@ -1979,16 +1979,17 @@ if JIT then
     -- on the overlapping pairs so, 228 now, callgrind; the reads, in the calling trace, share
     -- shoelaceBounds' there for the first call)
     -- (vertices 2 and 3 at constant indices: convexPenetration hands on 3 vertices or more)
-    local x1, y1, x2, y2, x3, y3 = other[1], other[2], other[3], other[4], other[5], other[6]
+    local ox, oy = other[1], other[2]
+    local x2, y2, x3, y3 = other[3] - ox, other[4] - oy, other[5] - ox, other[6] - oy
     local j = min(7, no - 1)
-    local x4, y4 = other[j], other[j + 1]
+    local x4, y4 = other[j] - ox, other[j + 1] - oy
     j = min(9, no - 1)
-    local x5, y5 = other[j], other[j + 1]
+    local x5, y5 = other[j] - ox, other[j + 1] - oy
     j = min(11, no - 1)
-    local x6, y6 = other[j], other[j + 1]
+    local x6, y6 = other[j] - ox, other[j + 1] - oy
     j = min(13, no - 1)
-    local x7, y7 = other[j], other[j + 1]
-    local x8, y8 = other[no - 1], other[no]
+    local x7, y7 = other[j] - ox, other[j + 1] - oy
+    local x8, y8 = other[no - 1] - ox, other[no] - oy
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
       -- (no + 0.0 here: LuaJIT has no integers, and a -0.0 changes only the sign of a zero
@@ -1997,10 +1998,9 @@ if JIT then
       local nx, ny = (edges[ib + 1] - ay) * turn, (ax - edges[ib]) * turn   -- outward
       -- as a tree of mins, not a chain: the edges' work overlaps more where each is shorter
       local lo = min(
-        min(min(nx * (x1 - ax) + ny * (y1 - ay), nx * (x2 - ax) + ny * (y2 - ay)),
-            min(nx * (x3 - ax) + ny * (y3 - ay), nx * (x4 - ax) + ny * (y4 - ay))),
-        min(min(nx * (x5 - ax) + ny * (y5 - ay), nx * (x6 - ax) + ny * (y6 - ay)),
-            min(nx * (x7 - ax) + ny * (y7 - ay), nx * (x8 - ax) + ny * (y8 - ay))))
+        min(min(0, nx * x2 + ny * y2), min(nx * x3 + ny * y3, nx * x4 + ny * y4)),
+        min(min(nx * x5 + ny * y5, nx * x6 + ny * y6), min(nx * x7 + ny * y7, nx * x8 + ny * y8)))
+        - (nx * (ax - ox) + ny * (ay - oy))
       -- The edge's key: its squared depth, negated when it is apart (lo > 0). An edge is taken
       -- as it is when surely reached past (lo < 0) by a finite depth beyond tolSq: when its key
       -- is above tolSq and below 2^1023; so the least key is at most tolSq exactly when some
@@ -2017,7 +2017,7 @@ if JIT then
     -- (the vertices' locals dead from here: kept alive, the side traces leaving the loop took them
     -- over and failed to compile, "NYI: register coalescing too complex", 382 and 669 aborts a
     -- run when the traces were first recorded on missing pairs)
-    x1, y1, x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil   -- luacheck: ignore 311 532
+    x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil   -- luacheck: ignore 311 532
     if not (leastKey > tolSq and largestKey < 2^1023) then
       -- The edge of the least key: apart, surely or decided exactly; else (reached past exactly,
       -- no axis, keys beyond 2^1023 or -2^1023 only beyond the exact range, where no edge is
