@@ -1905,9 +1905,10 @@ end
 -- all of other's vertices in one expression (the last one repeated for fewer, harmless to a
 -- min; the first, at o, projected to 0 exactly), with no inner loop and no data-dependent
 -- exit: LuaJIT hoists the vertices' loads out of the loop, the edges do not wait for each other
--- (the least is kept by selection with isAbove). Each edge's key is its squared depth, negated when the edge is apart, so that the
--- least key also names an edge within tolSq or apart (a touching pair's), if there is one,
--- which is decided after the loop from the loop's own numbers; if it is reached past after
+-- (the least is kept by selection with isAbove). Each edge's key is its squared depth, negated
+-- when the edge is apart, so that the least key also names an edge within tolSq or apart (a
+-- touching pair's), if there is one, which is decided after the loop from the loop's own
+-- numbers; if it is reached past after
 -- all, reachPastFull decides from the start, as it does for larger polygons and where a
 -- selection would not keep -0.0 or NaN as the comparisons do. (Before, a second selection per
 -- edge noted the first such edge and the projections were taken again for it: 4,040 -> 3,840
