@@ -2048,7 +2048,22 @@ if JIT then
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
     end
-    return leastKey, leastOverlap, leastEnd
+    -- The chosen edge's overlap and key taken again from p - a, as reachPastFull does: the
+    -- shifted projections err by up to 8 eps S where these err by 3 eps S, and the depth
+    -- returned with them passed 8 eps M over the exact least depth (the push's contract) in 2 of
+    -- 28,220 random overlapping pairs (largest 8.66 eps M, 6.19 so); the same edge chosen, the
+    -- answer is now main's bit for bit.
+    ia = leastEnd == 1 and ne - 1 or leastEnd - 2
+    local ax, ay = edges[ia], edges[ia + 1]
+    local nx, ny = (edges[leastEnd + 1] - ay) * turn, (ax - edges[leastEnd]) * turn
+    local k4, k5, k6, k7 = min(7, no - 1), min(9, no - 1), min(11, no - 1), min(13, no - 1)
+    local lo = min(
+      min(min(nx * (other[1] - ax) + ny * (other[2] - ay), nx * (other[3] - ax) + ny * (other[4] - ay)),
+          min(nx * (other[5] - ax) + ny * (other[6] - ay), nx * (other[k4] - ax) + ny * (other[k4 + 1] - ay))),
+      min(min(nx * (other[k5] - ax) + ny * (other[k5 + 1] - ay), nx * (other[k6] - ax) + ny * (other[k6 + 1] - ay)),
+          min(nx * (other[k7] - ax) + ny * (other[k7 + 1] - ay), nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
+    local overlap = -lo
+    return overlap * (abs(overlap) / max(nx * nx + ny * ny, 2^-1074)), overlap, leastEnd
   end
 else
   -- PUC Lua: the least over both polygons' edges at once (reachPast's results and the polygon
