@@ -1889,26 +1889,19 @@ end
 -- Returns false on a separating or touching axis; otherwise the least penetration's squared
 -- depth o (o / |n|^2) (neither overflows nor underflows in the exact range), its overlap
 -- o >= 0 along n (the depth is o / |n|), and the index of its edge's end b.
--- The least projection lo's rounding error is below 8.01 eps S, S = spanX |nx| + spanY |ny| (see
--- projectionTolerance; 3 eps S in reachPastFull, which projects p - a). The LuaJIT loop below
--- takes other's vertices relative to its first one o, X = p - o, once per call, and lo as
--- min(n.X) - n.(a - o): each shift rounds by at most eps times its size, which spanX or spanY
--- bounds (o, p and a all lie in the box), each n.X and n.(a - o) adds two products and a sum,
--- so each is within 3 eps S (1 + 2 eps) of its exact value; the min adds no error, and the
--- subtraction of the two (each at most S (1 + 3 eps) in size) at most 2 eps S (1 + 3 eps).
--- 8.01 eps S is at most 8.01 eps |n| sqrt(spanX^2 + spanY^2) (Cauchy-Schwarz): so an edge
--- whose squared depth lo^2 / |n|^2 exceeds tolSq = (16 eps)^2 (spanX^2 + spanY^2) has the sign
--- of lo for sure, with room for the rounding of both squares (a few eps of relative error, where
--- the factor 16 / 8.01 leaves almost 2), and one comparison with a number computed once per call
--- replaces a tolerance per edge. Within it, vertexInside decides exactly.
+-- The least projection lo's rounding error is below 8 eps (spanX |nx| + spanY |ny|) (see
+-- projectionTolerance), which is at most 8 eps |n| sqrt(spanX^2 + spanY^2) (Cauchy-Schwarz):
+-- so an edge whose squared depth lo^2 / |n|^2 exceeds tolSq = (16 eps)^2 (spanX^2 + spanY^2)
+-- has the sign of lo for sure, with room for the rounding of both squares, and one comparison
+-- with a number computed once per call replaces a tolerance per edge. Within it, vertexInside
+-- decides exactly.
 -- Two bodies. On LuaJIT, for `other` of at most 8 vertices, one loop over the edges projects
 -- all of other's vertices in one expression (the last one repeated for fewer, harmless to a
--- min; the first, at o, projected to 0 exactly), with no inner loop and no data-dependent
--- exit: LuaJIT hoists the vertices' loads out of the loop, the edges do not wait for each other
--- (the least is kept by selection with isAbove). Each edge's key is its squared depth, negated
--- when the edge is apart, so that the least key also names an edge within tolSq or apart (a
--- touching pair's), if there is one, which is decided after the loop from the loop's own
--- numbers; if it is reached past after
+-- min), with no inner loop and no data-dependent exit: LuaJIT hoists the vertices' loads out
+-- of the loop, the edges do not wait for each other (the least is kept by selection with
+-- isAbove). Each edge's key is its squared depth, negated when the edge is apart, so that the
+-- least key also names an edge within tolSq or apart (a touching pair's), if there is one,
+-- which is decided after the loop from the loop's own numbers; if it is reached past after
 -- all, reachPastFull decides from the start, as it does for larger polygons and where a
 -- selection would not keep -0.0 or NaN as the comparisons do. (Before, a second selection per
 -- edge noted the first such edge and the projections were taken again for it: 4,040 -> 3,840
@@ -1986,21 +1979,16 @@ if JIT then
     -- on the overlapping pairs so, 228 now, callgrind; the reads, in the calling trace, share
     -- shoelaceBounds' there for the first call)
     -- (vertices 2 and 3 at constant indices: convexPenetration hands on 3 vertices or more)
-    -- (relative to the first, o, at 0: n.X is three operations a vertex where n.(p - a) was
-    -- five, and 14 numbers are kept where there were 16; machine instructions per overlapping
-    -- call 3,619 -> 3,459, mixed 2,361 -> 2,261, /work/brief/s10/tools/cg.sh; the error bound
-    -- above)
-    local ox, oy = other[1], other[2]
-    local x2, y2, x3, y3 = other[3] - ox, other[4] - oy, other[5] - ox, other[6] - oy
+    local x1, y1, x2, y2, x3, y3 = other[1], other[2], other[3], other[4], other[5], other[6]
     local j = min(7, no - 1)
-    local x4, y4 = other[j] - ox, other[j + 1] - oy
+    local x4, y4 = other[j], other[j + 1]
     j = min(9, no - 1)
-    local x5, y5 = other[j] - ox, other[j + 1] - oy
+    local x5, y5 = other[j], other[j + 1]
     j = min(11, no - 1)
-    local x6, y6 = other[j] - ox, other[j + 1] - oy
+    local x6, y6 = other[j], other[j + 1]
     j = min(13, no - 1)
-    local x7, y7 = other[j] - ox, other[j + 1] - oy
-    local x8, y8 = other[no - 1] - ox, other[no] - oy
+    local x7, y7 = other[j], other[j + 1]
+    local x8, y8 = other[no - 1], other[no]
     local ia = ne - 1
     for ib = 1, ne - 1, 2 do
       -- (no + 0.0 here: LuaJIT has no integers, and a -0.0 changes only the sign of a zero
@@ -2009,9 +1997,10 @@ if JIT then
       local nx, ny = (edges[ib + 1] - ay) * turn, (ax - edges[ib]) * turn   -- outward
       -- as a tree of mins, not a chain: the edges' work overlaps more where each is shorter
       local lo = min(
-        min(min(0, nx * x2 + ny * y2), min(nx * x3 + ny * y3, nx * x4 + ny * y4)),
-        min(min(nx * x5 + ny * y5, nx * x6 + ny * y6), min(nx * x7 + ny * y7, nx * x8 + ny * y8)))
-        - (nx * (ax - ox) + ny * (ay - oy))
+        min(min(nx * (x1 - ax) + ny * (y1 - ay), nx * (x2 - ax) + ny * (y2 - ay)),
+            min(nx * (x3 - ax) + ny * (y3 - ay), nx * (x4 - ax) + ny * (y4 - ay))),
+        min(min(nx * (x5 - ax) + ny * (y5 - ay), nx * (x6 - ax) + ny * (y6 - ay)),
+            min(nx * (x7 - ax) + ny * (y7 - ay), nx * (x8 - ax) + ny * (y8 - ay))))
       -- The edge's key: its squared depth, negated when it is apart (lo > 0). An edge is taken
       -- as it is when surely reached past (lo < 0) by a finite depth beyond tolSq: when its key
       -- is above tolSq and below 2^1023; so the least key is at most tolSq exactly when some
@@ -2028,7 +2017,7 @@ if JIT then
     -- (the vertices' locals dead from here: kept alive, the side traces leaving the loop took them
     -- over and failed to compile, "NYI: register coalescing too complex", 382 and 669 aborts a
     -- run when the traces were first recorded on missing pairs)
-    x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil   -- luacheck: ignore 311 532
+    x1, y1, x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil   -- luacheck: ignore 311 532
     if not (leastKey > tolSq and largestKey < 2^1023) then
       -- The edge of the least key: apart, surely or decided exactly; else (reached past exactly,
       -- no axis, keys beyond 2^1023 or -2^1023 only beyond the exact range, where no edge is
@@ -2048,22 +2037,7 @@ if JIT then
       local least, overlap, edgeEnd = reachPastFull(edges, ne, turn, other, no, tolSq)
       return least, overlap, edgeEnd
     end
-    -- The chosen edge's overlap and key taken again from p - a, as reachPastFull does: the
-    -- shifted projections err by up to 8 eps S where these err by 3 eps S, and the depth
-    -- returned with them passed 8 eps M over the exact least depth (the push's contract) in 2 of
-    -- 28,220 random overlapping pairs (largest 8.66 eps M, 6.19 so); the same edge chosen, the
-    -- answer is now main's bit for bit.
-    ia = leastEnd == 1 and ne - 1 or leastEnd - 2
-    local ax, ay = edges[ia], edges[ia + 1]
-    local nx, ny = (edges[leastEnd + 1] - ay) * turn, (ax - edges[leastEnd]) * turn
-    local k4, k5, k6, k7 = min(7, no - 1), min(9, no - 1), min(11, no - 1), min(13, no - 1)
-    local lo = min(
-      min(min(nx * (other[1] - ax) + ny * (other[2] - ay), nx * (other[3] - ax) + ny * (other[4] - ay)),
-          min(nx * (other[5] - ax) + ny * (other[6] - ay), nx * (other[k4] - ax) + ny * (other[k4 + 1] - ay))),
-      min(min(nx * (other[k5] - ax) + ny * (other[k5 + 1] - ay), nx * (other[k6] - ax) + ny * (other[k6 + 1] - ay)),
-          min(nx * (other[k7] - ax) + ny * (other[k7 + 1] - ay), nx * (other[no - 1] - ax) + ny * (other[no] - ay))))
-    local overlap = -lo
-    return overlap * (abs(overlap) / max(nx * nx + ny * ny, 2^-1074)), overlap, leastEnd
+    return leastKey, leastOverlap, leastEnd
   end
 else
   -- PUC Lua: the least over both polygons' edges at once (reachPast's results and the polygon
