@@ -1743,6 +1743,59 @@ end
 -- exactly at its bound, whose sign crossExact gives too.
 local vertexInside
 if JIT then
+  local function onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
+    local bxd, byd = bx + 0.0, by + 0.0
+    local ux, uy = bxd - ax, byd - ay
+    local t = bxd - ux
+    local unsafe = abs((bxd - (ux + t)) + (t - ax))
+    t = byd - uy
+    unsafe = unsafe + abs((byd - (uy + t)) + (t - ay))
+    ux, uy = ux * inside, uy * inside
+    local pdx, pdy, qdx, qdy = px - cx, py - cy, qx - cx, qy - cy
+    t = px - pdx
+    unsafe = unsafe + abs((px - (pdx + t)) + (t - cx))
+    t = py - pdy
+    unsafe = unsafe + abs((py - (pdy + t)) + (t - cy))
+    t = qx - qdx
+    unsafe = unsafe + abs((qx - (qdx + t)) + (t - cx))
+    t = qy - qdy
+    unsafe = unsafe + abs((qy - (qdy + t)) + (t - cy))
+    local aux, auy, apdx, apdy, aqdx, aqdy = abs(ux), abs(uy), abs(pdx), abs(pdy), abs(qdx),
+      abs(qdy)
+    local pl, pr, ql, qr = ux * pdy, uy * pdx, ux * qdy, uy * qdx   -- (p's l and r, q's)
+    unsafe = unsafe + max(0, max(aux, auy, apdx, apdy, aqdx, aqdy) - 2^500,
+      min(aux, apdy, 2^-900 - abs(pl)), min(auy, apdx, 2^-900 - abs(pr)),
+      min(aux, aqdy, 2^-900 - abs(ql)), min(auy, aqdx, 2^-900 - abs(qr)))
+    -- the splits into 26-bit halves, and the products' errors (Dekker's)
+    t = SPLITTER * ux
+    local uxh = t - (t - ux)
+    local uxl = ux - uxh
+    t = SPLITTER * uy
+    local uyh = t - (t - uy)
+    local uyl = uy - uyh
+    t = SPLITTER * pdx
+    local dxh = t - (t - pdx)
+    local dxl = pdx - dxh
+    t = SPLITTER * pdy
+    local dyh = t - (t - pdy)
+    local dyl = pdy - dyh
+    local det = pl - pr
+    local low = (uxl * dyl - (((pl - uxh * dyh) - uxl * dyh) - uxh * dyl))
+      - (uyl * dxl - (((pr - uyh * dxh) - uyl * dxh) - uyh * dxl))
+    local pSign = det + low * (1 - min(abs(det) * 2^1000 * 2^1000, 1))
+    t = SPLITTER * qdx
+    dxh = t - (t - qdx)
+    dxl = qdx - dxh
+    t = SPLITTER * qdy
+    dyh = t - (t - qdy)
+    dyl = qdy - dyh
+    det = ql - qr
+    low = (uxl * dyl - (((ql - uxh * dyh) - uxl * dyh) - uxh * dyl))
+      - (uyl * dxl - (((qr - uyh * dxh) - uyl * dxh) - uyh * dxl))
+    local qSign = det + low * (1 - min(abs(det) * 2^1000 * 2^1000, 1))
+    return unsafe, max(pSign, qSign)
+  end
+
   vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
     cx, cy = cx + 0.0, cy + 0.0
     local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
@@ -1843,56 +1896,8 @@ if JIT then
       -- anywhere makes `unsafe` NaN or positive. Otherwise both vertices go to crossExact.
       local px, py, qx, qy = points[first] + 0.0, points[first + 1] + 0.0, points[last] + 0.0,
         points[last + 1] + 0.0
-      local bxd, byd = bx + 0.0, by + 0.0
-      local ux, uy = bxd - ax, byd - ay
-      local t = bxd - ux
-      local unsafe = abs((bxd - (ux + t)) + (t - ax))
-      t = byd - uy
-      unsafe = unsafe + abs((byd - (uy + t)) + (t - ay))
-      ux, uy = ux * inside, uy * inside
-      local pdx, pdy, qdx, qdy = px - cx, py - cy, qx - cx, qy - cy
-      t = px - pdx
-      unsafe = unsafe + abs((px - (pdx + t)) + (t - cx))
-      t = py - pdy
-      unsafe = unsafe + abs((py - (pdy + t)) + (t - cy))
-      t = qx - qdx
-      unsafe = unsafe + abs((qx - (qdx + t)) + (t - cx))
-      t = qy - qdy
-      unsafe = unsafe + abs((qy - (qdy + t)) + (t - cy))
-      local aux, auy, apdx, apdy, aqdx, aqdy = abs(ux), abs(uy), abs(pdx), abs(pdy), abs(qdx),
-        abs(qdy)
-      local pl, pr, ql, qr = ux * pdy, uy * pdx, ux * qdy, uy * qdx   -- (p's l and r, q's)
-      unsafe = unsafe + max(0, max(aux, auy, apdx, apdy, aqdx, aqdy) - 2^500,
-        min(aux, apdy, 2^-900 - abs(pl)), min(auy, apdx, 2^-900 - abs(pr)),
-        min(aux, aqdy, 2^-900 - abs(ql)), min(auy, aqdx, 2^-900 - abs(qr)))
-      -- the splits into 26-bit halves, and the products' errors (Dekker's)
-      t = SPLITTER * ux
-      local uxh = t - (t - ux)
-      local uxl = ux - uxh
-      t = SPLITTER * uy
-      local uyh = t - (t - uy)
-      local uyl = uy - uyh
-      t = SPLITTER * pdx
-      local dxh = t - (t - pdx)
-      local dxl = pdx - dxh
-      t = SPLITTER * pdy
-      local dyh = t - (t - pdy)
-      local dyl = pdy - dyh
-      local det = pl - pr
-      local low = (uxl * dyl - (((pl - uxh * dyh) - uxl * dyh) - uxh * dyl))
-        - (uyl * dxl - (((pr - uyh * dxh) - uyl * dxh) - uyh * dxl))
-      local pSign = det + low * (1 - min(abs(det) * 2^1000 * 2^1000, 1))
-      t = SPLITTER * qdx
-      dxh = t - (t - qdx)
-      dxl = qdx - dxh
-      t = SPLITTER * qdy
-      dyh = t - (t - qdy)
-      dyl = qdy - dyh
-      det = ql - qr
-      low = (uxl * dyl - (((ql - uxh * dyh) - uxl * dyh) - uxh * dyl))
-        - (uyl * dxl - (((qr - uyh * dxh) - uyl * dxh) - uyh * dxl))
-      local qSign = det + low * (1 - min(abs(det) * 2^1000 * 2^1000, 1))
-      if unsafe == 0 then return max(pSign, qSign) > 0 end
+      local unsafe, sign = onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
+      if unsafe == 0 then return sign > 0 end
       return max(crossExact(ax, ay, bx, by, cx, cy, px, py),
         crossExact(ax, ay, bx, by, cx, cy, qx, qy)) * inside > 0
     end
