@@ -1898,8 +1898,10 @@ if JIT then
         points[last + 1] + 0.0
       local unsafe, sign = onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
       if unsafe == 0 then return sign > 0 end
-      return max(crossExact(ax, ay, bx, by, cx, cy, px, py),
-        crossExact(ax, ay, bx, by, cx, cy, qx, qy)) * inside > 0
+      -- (each sign turned before the max: main's max(s1, s2) * inside missed a vertex inside
+      -- next to one on the line when inside = -1, as the touching spec's one-ulp nudges found)
+      return max(crossExact(ax, ay, bx, by, cx, cy, px, py) * inside,
+        crossExact(ax, ay, bx, by, cx, cy, qx, qy) * inside) > 0
     end
     local found = 0.0
     for i = 1, n - 1, 2 do
