@@ -12,7 +12,8 @@
 --     line by one ulp, into A or away from it.
 -- Families: coordinates on a 2^-30 grid near the origin and offset by up to 2^40 (differences
 -- exact); polygons spanning -1e15 to 1e15 with fractional coordinates (differences inexact);
--- tiny (scale 1e-77 and 2^-447: products of differences near 2^-954) and huge (2^400).
+-- tiny (scale 1e-77, 2^-447 and 2^-490: products' rounding errors below 2^-1074) and huge (2^400,
+-- and 2^520: products beyond 2^1024).
 
 local polygon = require "polygon"
 local oracle = require "oracle"
@@ -134,12 +135,20 @@ describe("polygonsCollideV and polygonsCollide on touching convex pairs", functi
       checkFamily(105, 30, 1e-77, 2^30)
     end)
 
-    it("agree with the exact oracle at scale 2^-447 (products of differences near 2^-954)", function()
+    it("agree with the exact oracle at scale 2^-447 (the exact range's smallest coordinates)", function()
       checkFamily(106, 30, 2^-447, 2^30)
     end)
 
     it("agree with the exact oracle at scale 2^400", function()
       checkFamily(107, 30, 2^400, 2^30)
+    end)
+
+    it("agree with the exact oracle at scale 2^520 (products of differences beyond 2^1024)", function()
+      checkFamily(108, 30, 2^520, 2^30)
+    end)
+
+    it("agree with the exact oracle at scale 2^-490 (products' errors below 2^-1074)", function()
+      checkFamily(109, 30, 2^-490, 2^30)
     end)
   end)
 
