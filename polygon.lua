@@ -1729,11 +1729,12 @@ end
 -- Two bodies giving the same answer. On LuaJIT a first pass keeps the largest det - bound and
 -- det + bound with max and abs, no branch (the branches' side exits, taken from traces that had
 -- unrolled this loop, failed to compile: "NYI: register coalescing too complex"), and counts
--- the vertices it cannot place, keeping the first and the last. When it cannot decide, those
--- go to crossExact, whose stage B decides all but exactly collinear ones with inexact
--- differences (through cross, the vertices near the line took its filter's side exit, and
--- those side traces failed to compile too): at most two of them (a touching pair's shared
--- edge, a vertex on the edge) by two calls, where a pass over every vertex took touching pairs
+-- the vertices it cannot place, keeping the first and the last. When it cannot decide, at most
+-- two of them (a touching pair's shared edge, a vertex on the edge) go to onLineSigns, an exact
+-- test of both without a branch when their differences are exact, else to crossExact, whose
+-- stage B decides all but exactly collinear ones with inexact differences (through cross, the
+-- vertices near the line took its filter's side exit, and those side traces failed to compile
+-- too), by two calls, where a pass over every vertex took touching pairs
 -- 0.31 to 0.32 of the tutorial's time, not 0.26 to 0.27 (`luajit bench/isolated.lua
 -- polygonsCollideV touch`); more by a second pass with no early exit (an exit in it made
 -- LuaJIT abort the loop's trace, "leaving loop in root trace"). On PUC Lua one pass returns at
@@ -1743,6 +1744,8 @@ end
 -- exactly at its bound, whose sign crossExact gives too.
 local vertexInside
 if JIT then
+  -- For vertexInside: whether its test of vertices p and q against the line can be trusted
+  -- (`unsafe` 0), and the larger of their exact signs turned by `inside` (see its use).
   local function onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
     local bxd, byd = bx + 0.0, by + 0.0
     local ux, uy = bxd - ax, byd - ay
@@ -1894,6 +1897,12 @@ if JIT then
       -- exponents sum to at least -902, every step of Dekker's is a multiple of 2^-1006 and
       -- exact, as without underflow; a zero factor makes l, pl and every step 0). NaN or inf
       -- anywhere makes `unsafe` NaN or positive. Otherwise both vertices go to crossExact.
+      -- Against two crossExact calls always: touching pairs 204 -> 193, 208 -> 197, 206 -> 189 ns
+      -- a call, mixed 235 -> 232, 228 -> 227, 237 -> 231 (`luajit /work/brief/s10/tools/t2.lua
+      -- touch|mix`, interleaved, machine shared); machine instructions a touching call 2,646 ->
+      -- 2,504, mixed 2,361 -> 2,295 (cachegrind, fixed trace seed). Written inline here, the
+      -- guard's snapshot kept every temporary alive and spilled them (2,520 instructions); in a
+      -- function they die at its return.
       local px, py, qx, qy = points[first] + 0.0, points[first + 1] + 0.0, points[last] + 0.0,
         points[last + 1] + 0.0
       local unsafe, sign = onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
