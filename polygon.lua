@@ -1729,11 +1729,12 @@ end
 -- Two bodies giving the same answer. On LuaJIT a first pass keeps the largest det - bound and
 -- det + bound with max and abs, no branch (the branches' side exits, taken from traces that had
 -- unrolled this loop, failed to compile: "NYI: register coalescing too complex"), and counts
--- the vertices it cannot place, keeping the first and the last. When it cannot decide, those
--- go to crossExact, whose stage B decides all but exactly collinear ones with inexact
--- differences (through cross, the vertices near the line took its filter's side exit, and
--- those side traces failed to compile too): at most two of them (a touching pair's shared
--- edge, a vertex on the edge) by two calls, where a pass over every vertex took touching pairs
+-- the vertices it cannot place, keeping the first and the last. When it cannot decide, at most
+-- two of them (a touching pair's shared edge, a vertex on the edge) go to onLineSigns, an exact
+-- test of both without a branch when their differences are exact, else to crossExact, whose
+-- stage B decides all but exactly collinear ones with inexact differences (through cross, the
+-- vertices near the line took its filter's side exit, and those side traces failed to compile
+-- too), by two calls, where a pass over every vertex took touching pairs
 -- 0.31 to 0.32 of the tutorial's time, not 0.26 to 0.27 (`luajit bench/isolated.lua
 -- polygonsCollideV touch`); more by a second pass with no early exit (an exit in it made
 -- LuaJIT abort the loop's trace, "leaving loop in root trace"). On PUC Lua one pass returns at
@@ -1743,6 +1744,61 @@ end
 -- exactly at its bound, whose sign crossExact gives too.
 local vertexInside
 if JIT then
+  -- For vertexInside: whether its test of vertices p and q against the line can be trusted
+  -- (`unsafe` 0), and the larger of their exact signs turned by `inside` (see its use).
+  local function onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
+    local bxd, byd = bx + 0.0, by + 0.0
+    local ux, uy = bxd - ax, byd - ay
+    local t = bxd - ux
+    local unsafe = abs((bxd - (ux + t)) + (t - ax))
+    t = byd - uy
+    unsafe = unsafe + abs((byd - (uy + t)) + (t - ay))
+    ux, uy = ux * inside, uy * inside
+    local pdx, pdy, qdx, qdy = px - cx, py - cy, qx - cx, qy - cy
+    t = px - pdx
+    unsafe = unsafe + abs((px - (pdx + t)) + (t - cx))
+    t = py - pdy
+    unsafe = unsafe + abs((py - (pdy + t)) + (t - cy))
+    t = qx - qdx
+    unsafe = unsafe + abs((qx - (qdx + t)) + (t - cx))
+    t = qy - qdy
+    unsafe = unsafe + abs((qy - (qdy + t)) + (t - cy))
+    local aux, auy, apdx, apdy, aqdx, aqdy = abs(ux), abs(uy), abs(pdx), abs(pdy), abs(qdx),
+      abs(qdy)
+    local pl, pr, ql, qr = ux * pdy, uy * pdx, ux * qdy, uy * qdx   -- (p's l and r, q's)
+    unsafe = unsafe + max(0, max(aux, auy, apdx, apdy, aqdx, aqdy) - 2^500,
+      min(aux, apdy, 2^-900 - abs(pl)), min(auy, apdx, 2^-900 - abs(pr)),
+      min(aux, aqdy, 2^-900 - abs(ql)), min(auy, aqdx, 2^-900 - abs(qr)))
+    -- the splits into 26-bit halves, and the products' errors (Dekker's)
+    t = SPLITTER * ux
+    local uxh = t - (t - ux)
+    local uxl = ux - uxh
+    t = SPLITTER * uy
+    local uyh = t - (t - uy)
+    local uyl = uy - uyh
+    t = SPLITTER * pdx
+    local dxh = t - (t - pdx)
+    local dxl = pdx - dxh
+    t = SPLITTER * pdy
+    local dyh = t - (t - pdy)
+    local dyl = pdy - dyh
+    local det = pl - pr
+    local low = (uxl * dyl - (((pl - uxh * dyh) - uxl * dyh) - uxh * dyl))
+      - (uyl * dxl - (((pr - uyh * dxh) - uyl * dxh) - uyh * dxl))
+    local pSign = det + low * (1 - min(abs(det) * 2^1000 * 2^1000, 1))
+    t = SPLITTER * qdx
+    dxh = t - (t - qdx)
+    dxl = qdx - dxh
+    t = SPLITTER * qdy
+    dyh = t - (t - qdy)
+    dyl = qdy - dyh
+    det = ql - qr
+    low = (uxl * dyl - (((ql - uxh * dyh) - uxl * dyh) - uxh * dyl))
+      - (uyl * dxl - (((qr - uyh * dxh) - uyl * dxh) - uyh * dxl))
+    local qSign = det + low * (1 - min(abs(det) * 2^1000 * 2^1000, 1))
+    return unsafe, max(pSign, qSign)
+  end
+
   vertexInside = function(ax, ay, bx, by, cx, cy, inside, points, n)
     cx, cy = cx + 0.0, cy + 0.0
     local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
@@ -1828,8 +1884,33 @@ if JIT then
     if sure > 0 then return true end
     if maybe <= 0 then return false end
     if open <= 2 then   -- (as on a touching pair's shared edge, or a vertex on an edge)
-      return max(crossExact(ax, ay, bx, by, cx, cy, points[first] + 0.0, points[first + 1] + 0.0),
-        crossExact(ax, ay, bx, by, cx, cy, points[last] + 0.0, points[last + 1] + 0.0)) * inside > 0
+      -- Both vertices at once, exactly, without a branch, when every difference is exact (the
+      -- usual case: a vertex on the line, nearby coordinates). Per vertex p, with u = (b - a)
+      -- turned by `inside` and d = p - c: l = ux dy and r = uy dx rounded. Rounding being
+      -- monotone (in the subnormal range too), l ~= r orders l and r as the exact products, and
+      -- l - r, nonzero (gradual underflow), has the sign; when l = r the exact difference is
+      -- pl - ql, the products' rounding errors by Dekker's split, whose subtraction's sign is
+      -- exact. The value used is l - r + (pl - ql) z, z being 1 when l - r is 0 and 0 otherwise.
+      -- It is only trusted when `unsafe` below is 0: every difference's TwoDiff error is 0; every
+      -- |difference| is at most 2^500 (no product, split or step of Dekker's overflows); and no
+      -- product of two nonzero differences is below 2^-900 in magnitude (then its factors'
+      -- exponents sum to at least -902, every step of Dekker's is a multiple of 2^-1006 and
+      -- exact, as without underflow; a zero factor makes l, pl and every step 0). NaN or inf
+      -- anywhere makes `unsafe` NaN or positive. Otherwise both vertices go to crossExact.
+      -- Against two crossExact calls always: touching pairs 204 -> 193, 208 -> 197, 206 -> 189 ns
+      -- a call, mixed 235 -> 232, 228 -> 227, 237 -> 231 (`luajit /work/brief/s10/tools/t2.lua
+      -- touch|mix`, interleaved, machine shared); machine instructions a touching call 2,646 ->
+      -- 2,504, mixed 2,361 -> 2,295 (cachegrind, fixed trace seed). Written inline here, the
+      -- guard's snapshot kept every temporary alive and spilled them (2,520 instructions); in a
+      -- function they die at its return.
+      local px, py, qx, qy = points[first] + 0.0, points[first + 1] + 0.0, points[last] + 0.0,
+        points[last + 1] + 0.0
+      local unsafe, sign = onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
+      if unsafe == 0 then return sign > 0 end
+      -- (each sign turned before the max: main's max(s1, s2) * inside missed a vertex inside
+      -- next to one on the line when inside = -1, as the touching spec's one-ulp nudges found)
+      return max(crossExact(ax, ay, bx, by, cx, cy, px, py) * inside,
+        crossExact(ax, ay, bx, by, cx, cy, qx, qy) * inside) > 0
     end
     local found = 0.0
     for i = 1, n - 1, 2 do
