@@ -782,12 +782,16 @@ function polygon.polygonAreaAccurate(points)
     -- nothing) and D_k = y_{k-1} - y_{k+1}. In the split's parts X_k = X + xl (X = xh - x0h)
     -- and D_k = dh + dlExact (dh = yh_{k-1} - yh_{k+1}, dlExact = yl_{k-1} - yl_{k+1}): the
     -- term is X dh, summed exactly in hi, plus X dlExact + xl (dh + dlExact), small, summed in
-    -- floating point in lo (dl, dlExact rounded). 20 floating-point operations a vertex against
-    -- Dot2's 33: 40 machine instructions a step of the compiled loop against 71 (luajit -jdump
-    -- on bench/workloads.lua's ordinary polygons), 756 a call in all against 944 (cachegrind on
-    -- luajit bench/area_small.lua --alone; polygonArea 391).
-    -- The y parts carry from step to step: y_m's and y_1's first; vertex m's term, with y_1's
-    -- again, after the loop (carrying x too, to take it in the loop, spilled registers). The
+    -- floating point in lo (dl, dlExact rounded). 26 floating-point operations a vertex against
+    -- Dot2's 33: about 750 machine instructions a call against 944 (cachegrind, the difference
+    -- of 500 and 1,500 passes of luajit bench/area_small.lua --alone FILE polygonAreaAccurate
+    -- ord PASSES; polygonArea 391).
+    -- Each step splits its neighbours' y again, carrying no part from step to step: with the
+    -- four y parts carried (two fewer splits a vertex) the traces that left the loop failed to
+    -- compile ("NYI: register coalescing too complex", 291 and 385 aborts in 3 and 6 of 16
+    -- runs of `bash bench/aborts.sh 16 polygonAreaAccurate`; 0 in 32 runs so, as with Dot2
+    -- alone), for about 3 % more time (`luajit bench/area_small.lua --alone FILE
+    -- polygonAreaAccurate ord 20000`, three alternating runs: 70.0-71.6 -> 72.7-76.4 ns). The
     -- middle vertex comes from integer operations: m - m % 2 + 1 is a floating-point floor on
     -- LuaJIT, on the path to every split; the same instructions, but it cost 3 to 8 ns a call
     -- (luajit bench/area_small.lua --alone, alternating runs).
@@ -799,34 +803,35 @@ function polygon.polygonAreaAccurate(points)
     local t, u = g * 2^86, g * 2^33
     local sigma = max((t + u) - t, u)
     local x0h = (x1 + sigma) - sigma
-    local y = points[n]
-    local yhPrev = (y + sigma) - sigma    -- the parts of y_{k-1}, then of y_k
-    local ylPrev = y - yhPrev
-    local yhCur = (y1 + sigma) - sigma
-    local ylCur = y1 - yhCur
+    -- vertex k's term from its x and the y of its neighbours (yp before, yn after), each split
+    -- again where it is read: no part carried from step to step
     local hi, lo, sqSum = 0.0, 0.0, 0.0   -- sqSum: the sum of X^2 + dh^2
-    for i = 1, n - 3, 2 do
-      local x = points[i]
-      y = points[i + 3]
+    for i = 3, n - 3, 2 do
+      local x, yp, yn = points[i], points[i - 1], points[i + 3]
       local xh = (x + sigma) - sigma
       local xl = x - xh
       local X = xh - x0h
-      local yh = (y + sigma) - sigma
-      local yl = y - yh
-      local dh = yhPrev - yh
-      local dl = ylPrev - yl
+      local yph = (yp + sigma) - sigma
+      local ynh = (yn + sigma) - sigma
+      local dh = yph - ynh
+      local dl = (yp - yph) - (yn - ynh)
       hi = hi + X * dh
       lo = lo + (X * dl + xl * (dh + dl))
       sqSum = sqSum + (X * X + dh * dh)
-      yhPrev, ylPrev, yhCur, ylCur = yhCur, ylCur, yh, yl
     end
-    local x = points[n - 1]               -- vertex m: y_{m-1} before it, y_1 after it
+    -- vertex 1 (X = 0: its term is all in lo) and vertex m, across the wrap
+    local yp, yn = points[n], points[4]
+    local yph, ynh = (yp + sigma) - sigma, (yn + sigma) - sigma
+    local dh, dl = yph - ynh, (yp - yph) - (yn - ynh)
+    lo = lo + (x1 - x0h) * (dh + dl)
+    sqSum = sqSum + dh * dh
+    local x = points[n - 1]
     local xh = (x + sigma) - sigma
     local xl = x - xh
     local X = xh - x0h
-    local yh = (y1 + sigma) - sigma
-    local dh = yhPrev - yh
-    local dl = ylPrev - (y1 - yh)
+    yp, yn = points[n - 2], y1
+    yph, ynh = (yp + sigma) - sigma, (yn + sigma) - sigma
+    dh, dl = yph - ynh, (yp - yph) - (yn - ynh)
     local twice = (hi + X * dh) + (lo + (X * dl + xl * (dh + dl)))
     sqSum = sqSum + (X * X + dh * dh)
     local q = sigma * 2^-53
