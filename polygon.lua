@@ -5519,7 +5519,7 @@ local addFaces
 -- vertical internal faces, which sent four calls in five of bench/compound.lua's pushFloor
 -- into the crossing search on LuaJIT: with them apart, 24.4 -> 22.4 simulated branch
 -- mispredictions a call, `valgrind --tool=cachegrind --branch-sim=yes`, and the ratio to
--- the pair calls 1.20 -> 1.10, medians over five fixed trace seeds: see the README).
+-- the pair calls 1.20 -> 1.10, medians over five fixed trace seeds: see bench/NOTES.md).
 local function keepFeet(first, last)
   local foot, footReach, foot2, foot2Reach = nearestFoot, nearestReach, secondFoot, secondReach
   local seamLeast, seamLeastX, seamLeastY = seamReach, seamX, seamY
