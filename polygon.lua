@@ -6040,15 +6040,17 @@ local function nearestFree(np, margin)
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
   -- A candidate t whose computed length e is below low = leastFree - 0.75 margin is not free,
-  -- and is not tried (pushFree would say false: the answer is the same). Let L = leastFree, the
-  -- least fc + lift of some pair: each face h of that pair has fc + lift >= L (1 - eps), so
-  -- fc + margin (lift = 1.25 margin) rounds to at least L (1 - 2 eps) - 0.25 margin; and t
+  -- and is not tried (pushFree would say false: the answer is the same; on LuaJIT the
+  -- crossings are, see below). Let L = leastFree, the least fc + lift of some pair: each
+  -- face h of that pair has fc + lift >= L (1 - eps), so fc + margin (lift = 1.25 margin)
+  -- rounds to at least L (1 - 2 eps) - 0.25 margin; and t
   -- gives fx tx + fy ty <= e (1 + 10 eps) (a unit normal within 4 eps of length 1, |t| within
   -- 5 eps of e for a foot or a crossing, the products and the sum rounded), below that when
   -- 0.5 margin > 14 eps L, true as L <= 1.01 E and margin >= 64 eps E: t lies inside the pair's
   -- D widened by margin. (The crate turned 0.5 radian on bench/compound.lua's floor: its
   -- nearest foot is mostly a face of the crate against the part it barely reaches into, inside
-  -- the other part's D: pushFree 3.62 -> 1.60 calls a push, by a count in a copy.)
+  -- the other part's D: pushFree 3.62 -> 1.31 calls a push on PUC Lua, 1.84 on LuaJIT, by a
+  -- count in a copy.)
   local low = leastFree - 0.75 * margin
   if JIT and feetKept < last then   -- (PUC Lua: pairFaces kept them)
     keepFeet(feetKept + 1, last)
@@ -6109,7 +6111,15 @@ local function nearestFree(np, margin)
           if det ~= 0 then
             local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
             local d = sqrt(tx * tx + ty * ty)
-            if d < best and d >= low and pushFree(tx, ty, np, margin) then best, bestX, bestY = d, tx, ty end
+            -- Below low not tried on PUC Lua, as the feet (2,924 -> 2,848 VM instructions a
+            -- push of the turned crate); tried on LuaJIT, where that test's side exits led
+            -- into pushFree in side traces that failed to compile, "NYI: register coalescing
+            -- too complex", about 250 aborts in each of 2 of 11 runs of `luajit -jv
+            -- bench/compound.lua timing 5000` at fixed trace seeds (without it 4 aborts in 7
+            -- of 14 runs, as before this test in 7 of 10)
+            if d < best and (JIT or d >= low) and pushFree(tx, ty, np, margin) then
+              best, bestX, bestY = d, tx, ty
+            end
           end
         end
       end
