@@ -6043,11 +6043,11 @@ local function nearestFree(np, margin)
   -- and is not tried (pushFree would say false: the answer is the same; on LuaJIT the
   -- crossings are, see below). Let L = leastFree, the least fc + lift of some pair: each
   -- face h of that pair has fc + lift >= L (1 - eps), so fc + margin (lift = 1.25 margin)
-  -- rounds to at least L (1 - 2 eps) - 0.25 margin; and t
-  -- gives fx tx + fy ty <= e (1 + 10 eps) (a unit normal within 4 eps of length 1, |t| within
-  -- 5 eps of e for a foot or a crossing, the products and the sum rounded), below that when
-  -- 0.5 margin > 14 eps L, true as L <= 1.01 E and margin >= 64 eps E: t lies inside the pair's
-  -- D widened by margin. (The crate turned 0.5 radian on bench/compound.lua's floor: its
+  -- rounds to at least L (1 - 2 eps) - 0.25 margin; and t gives fx tx + fy ty <= e (1 + 10 eps)
+  -- (a unit normal within 4 eps of length 1, |t| within 5 eps of e for a foot or a crossing,
+  -- the products and the sum rounded), below that when 0.5 margin > 14 eps L, true as
+  -- L <= 1.01 E and margin >= 64 eps E: t lies inside the pair's D widened by margin, for
+  -- every face. (The crate turned 0.5 radian on bench/compound.lua's floor: its
   -- nearest foot is mostly a face of the crate against the part it barely reaches into, inside
   -- the other part's D: pushFree 3.62 -> 1.31 calls a push on PUC Lua, 1.84 on LuaJIT, by a
   -- count in a copy.)
