@@ -5479,6 +5479,10 @@ local faceLift = 0.0   -- lift (see nearestFree) of the call under way, for face
 -- FAR stands for none: finite (keepFeet multiplies it by 0) and beyond every reach (every
 -- coordinate is below 2^501, or scaled below 2^165).
 local FAR = 2^1000
+-- Over the pairs so far, the largest of each pair's least fc + lift (as faceReach has it, before
+-- its abs): a point nearer the origin than this less 0.75 margin lies inside that pair's D
+-- widened by margin, so pushFree would find it not free (see nearestFree). -FAR for none.
+local leastFree = -FAR
 local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
 -- PUC Lua's rectPairFaces keeps its internal faces' nearest reach apart, by line direction:
 -- seamX for the vertical lines (normal (+-1, 0)), seamY for the horizontal ones (see
@@ -5581,7 +5585,80 @@ if JIT then
     -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic):
     -- an edge whose -lo exceeds it cannot separate; 1 when every edge's does (no NaN: a
     -- difference is > 0 exactly when its first term is the larger)
-    return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest)
+    return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest), highest
+  end
+end
+
+-- LuaJIT's faces of a pair of which one part is an axis-parallel rectangle (rectKind, unscaled)
+-- and the other not: addFaces' faces, the same numbers, each edge's least projection taken from
+-- the other part's box x0, y0, x1, y1 instead of its vertices, min(ux (x0 - ax), ux (x1 - ax))
+-- + min(uy (y0 - ay), uy (y1 - ay)): four products where leastProjection takes eight. The same
+-- number because rounding is monotonic: fl(fl(ux (x - ax)) + fl(uy (y - ay))) is least at the
+-- corner whose terms are least, and every corner is a vertex of the other part when it is the
+-- rectangle (its vertices are its box's corners), while against a part that is not, the
+-- rectangle's own edges have normals (+-1, +-0), whose projection of a vertex is +-(x - ax) (or
+-- +-(y - ay)) up to a zero's sign, least at the box's side. (The crate turned 0.5 radian on the
+-- floor of bench/compound.lua: addFaces and leastProjection were 39 % of its push by `luajit
+-- -jp=f`.) The loop as addFaces' (constant 8 steps up to 8 vertices).
+local addBoxFaces
+if JIT then
+  addBoxFaces = function(edges, ne, normals, x0, y0, x1, y1, internal, sense, spanX, spanY, top)
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local lift, highest = faceLift, -huge   -- highest: the largest lo
+    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+    local last = ne <= 8 and 7 or ne <= 16 and 15 or ne - 1
+    for i = 1, last, 2 do
+      local l = min(i, ne - 1)
+      local bx, by = edges[l] + 0.0, edges[l + 1] + 0.0
+      local edge = isAbove(abs(bx - ax) + abs(by - ay))   -- as in addFaces
+      local ux, uy = normals[l], normals[l + 1]
+      local lo = min(ux * (x0 - ax), ux * (x1 - ax)) + min(uy * (y0 - ay), uy * (y1 - ay))
+      highest = max(highest, lo - (1 - edge) * FAR)
+      local slot = top + 1
+      fx[slot], fy[slot], fc[slot] = ux * sense, uy * sense, -lo
+      seam[slot], reach[slot] = internal[l], abs(lift - lo)
+      top = top + edge
+      ax, ay = bx, by
+    end
+    return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest), highest
+  end
+end
+
+-- LuaJIT's faces of part i of view, an axis-parallel rectangle (rectKind), against a part that
+-- is not, whose box is at boxes[b - 3 .. b]: addFaces' faces, without a loop, the rectangle's
+-- sides in the order of its edges (sides[i]), each side's constant the other box's far side
+-- less the rectangle's own, the same numbers as rectPairFaces' (a side's normal (+-1, 0) or
+-- (0, +-1): its projections are the coordinates' differences, least at the box's side, exactly
+-- as addBoxFaces computes them, up to zeros' signs, which change no comparison and no push).
+-- (SIDE_X, SIDE_Y: the outward normals of the sides left, top, right, bottom; see rectPairFaces)
+local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
+local rectFaces
+if JIT then
+  local rectC = { 0.0, 0.0, 0.0, 0.0 }
+  rectFaces = function(view, i, boxes, b, sense, spanX, spanY, top)
+    local sides, internal, own, a = view.sides[i], view.internal[i], view.boxes, 4 * i
+    local cLeft, cTop = boxes[b - 1] - own[a - 3], boxes[b] - own[a - 2]
+    local cRight, cBottom = own[a - 1] - boxes[b - 3], own[a] - boxes[b - 2]
+    local c = rectC
+    c[1], c[2], c[3], c[4] = cLeft, cTop, cRight, cBottom
+    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+    local lift = faceLift
+    local line = sides[1]
+    fx[top + 1], fy[top + 1], fc[top + 1], seam[top + 1], reach[top + 1] = SIDE_X[line] * sense,
+      SIDE_Y[line] * sense, c[line], internal[1], abs(lift + c[line])
+    line = sides[3]
+    fx[top + 2], fy[top + 2], fc[top + 2], seam[top + 2], reach[top + 2] = SIDE_X[line] * sense,
+      SIDE_Y[line] * sense, c[line], internal[3], abs(lift + c[line])
+    line = sides[5]
+    fx[top + 3], fy[top + 3], fc[top + 3], seam[top + 3], reach[top + 3] = SIDE_X[line] * sense,
+      SIDE_Y[line] * sense, c[line], internal[5], abs(lift + c[line])
+    line = sides[7]
+    fx[top + 4], fy[top + 4], fc[top + 4], seam[top + 4], reach[top + 4] = SIDE_X[line] * sense,
+      SIDE_Y[line] * sense, c[line], internal[7], abs(lift + c[line])
+    -- addFaces' 1 when no side can separate: every lo = -c below -16 eps (spanX + spanY); and
+    -- the largest lo
+    local least = min(cLeft, cTop, cRight, cBottom)
+    return top + 4, isAbove(least - 16 * EPS * (spanX + spanY)), -least
   end
 end
 
@@ -5594,15 +5671,15 @@ local pairFaces
 if JIT then
   pairFaces = function(p1, n1, _, normals1, internal1, p2, n2, _, normals2, internal2,
                        k, spanX, spanY, top)
-    local sure1, sure2
-    top, sure1 = addFaces(p1, n1, normals1, p2, n2, internal1, 1.0, k, spanX, spanY, top)
-    top, sure2 = addFaces(p2, n2, normals2, p1, n1, internal2, -1.0, k, spanX, spanY, top)
-    return top, sure1 * sure2
+    local sure1, sure2, highest1, highest2
+    top, sure1, highest1 = addFaces(p1, n1, normals1, p2, n2, internal1, 1.0, k, spanX, spanY, top)
+    top, sure2, highest2 = addFaces(p2, n2, normals2, p1, n1, internal2, -1.0, k, spanX, spanY, top)
+    return top, sure1 * sure2, max(highest1, highest2)
   end
 else
   pairFaces = function(p1, n1, turn1, normals1, internal1, p2, n2, turn2, normals2, internal2,
                        k, spanX, spanY, top, boxes1, a, boxes2, b, rect1, rect2)
-    local separated = false
+    local separated, highest = false, -huge   -- highest: the largest lo
     local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
     local lift, foot, footReach = faceLift, nearestFoot, nearestReach
     local foot2, foot2Reach = secondFoot, secondReach
@@ -5615,6 +5692,7 @@ else
     local edges, ne, turn, normals, internal, other, no, sense =
       p1, n1, turn1, normals1, internal1, p2, n2, 1.0
     local ownBoxes, e, otherBoxes, o, rect = boxes1, a, boxes2, b, rect1
+    local otherRect = rect2
     for side = 1, 2 do
       if side == 2 then
         edges = p2
@@ -5630,6 +5708,7 @@ else
         otherBoxes = boxes1
         o = a
         rect = rect2
+        otherRect = rect1
       end
       local quad = no == 8
       -- the other part's box (exact: its least and greatest coordinates, as floats)
@@ -5704,6 +5783,19 @@ else
               if ux > 0 then lo = oxmin - ax else lo = ax - oxmax end
             elseif ux == 0 then   -- the same along y
               if uy > 0 then lo = oymin - ay else lo = ay - oymax end
+            elseif otherRect ~= 0 then
+              -- The other part is an axis-parallel rectangle: its vertices are its box's
+              -- corners, and rounding is monotonic, so the least of the projections
+              -- fl(fl(ux (x - ax)) + fl(uy (y - ay))) is the corner's whose terms are least, x
+              -- its least for ux >= 0, its greatest else (for ux a zero either term is a zero),
+              -- and y the same: the number minProjection gives, by two products (the crate
+              -- turned 0.5 radian on the floor of bench/compound.lua: 12 VM instructions an
+              -- edge where the quadrilateral's below take 32)
+              local sx = oxmin - ax
+              if ux < 0 then sx = oxmax - ax end
+              local sy = oymin - ay
+              if uy < 0 then sy = oymax - ay end
+              lo = ux * sx + uy * sy
             elseif quad then
               -- a quadrilateral: minProjection's loop unrolled, the same numbers (the first s
               -- is finite, so lo = s is what s < huge gives): constant indices and no loop
@@ -5730,6 +5822,7 @@ else
           ay = by
         end
         if lo then
+          if lo > highest then highest = lo end
           top = top + 1
           fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
           local flag, d = internal[i], lift - lo
@@ -5746,8 +5839,8 @@ else
       end
     end
     nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
-    if separated then return top, 0 end
-    return top, 1
+    if separated then return top, 0, highest end
+    return top, 1, highest
   end
 end
 
@@ -5763,7 +5856,6 @@ end
 -- outer edge, whose foot is tried). The views' sides give the sides in edge order (see
 -- rectSides). Returns the last face's index and 1 when the rectangles overlap (exactly: no side
 -- has the other rectangle beyond it or on its line), else 0.
-local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
 local sideConstant, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
 local rectPairFaces
 if JIT then
@@ -5809,7 +5901,9 @@ if JIT then
     line, flag = sides2[8], internal2[7]
     putSide(line, flag, top + 1)
     top = top + abs(flag - flags[line])
-    return top, isAbove(min(cLeft, cTop, cRight, cBottom))
+    local least = min(cLeft, cTop, cRight, cBottom)
+    leastFree = max(leastFree, faceLift + least)
+    return top, isAbove(least)
   end
 else
   rectPairFaces = function(view1, i, view2, j, top, p)
@@ -5899,6 +5993,12 @@ else
     end
     nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
     seamX, seamY = nearX, nearY
+    local least = cLeft   -- leastFree, as LuaJIT's
+    if cTop < least then least = cTop end
+    if cRight < least then least = cRight end
+    if cBottom < least then least = cBottom end
+    least = lift + least
+    if least > leastFree then leastFree = least end
     if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
     return top, 0
   end
@@ -5939,6 +6039,19 @@ local function nearestFree(np, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
   local last = faceFirst[np + 1] - 1
   local lift = 1.25 * margin
+  -- A candidate t whose computed length e is below low = leastFree - 0.75 margin is not free,
+  -- and is not tried (pushFree would say false: the answer is the same; on LuaJIT the
+  -- crossings are, see below). Let L = leastFree, the least fc + lift of some pair: each
+  -- face h of that pair has fc + lift >= L (1 - eps), so fc + margin (lift = 1.25 margin)
+  -- rounds to at least L (1 - 2 eps) - 0.25 margin; and t gives fx tx + fy ty <= e (1 + 10 eps)
+  -- (a unit normal within 4 eps of length 1, |t| within 5 eps of e for a foot or a crossing,
+  -- the products and the sum rounded), below that when 0.5 margin > 14 eps L, true as
+  -- L <= 1.01 E and margin >= 64 eps E: t lies inside the pair's D widened by margin, for
+  -- every face. (The crate turned 0.5 radian on bench/compound.lua's floor: its
+  -- nearest foot is mostly a face of the crate against the part it barely reaches into, inside
+  -- the other part's D: pushFree 3.62 -> 1.31 calls a push on PUC Lua, 1.84 on LuaJIT, by a
+  -- count in a copy.)
+  local low = leastFree - 0.75 * margin
   if JIT and feetKept < last then   -- (PUC Lua: pairFaces kept them)
     keepFeet(feetKept + 1, last)
     feetKept = last
@@ -5947,19 +6060,22 @@ local function nearestFree(np, margin)
   -- is free, and then no other foot is nearer (the feet loop below would pick the first free one
   -- in the order of reach, then of faces; it runs when neither is free).
   local found = 0
-  if nearestFoot > 0 then
+  if nearestFoot > 0 and nearestReach >= low then
     local d = fc[nearestFoot] + lift
     local tx, ty = fx[nearestFoot] * d, fy[nearestFoot] * d
     if pushFree(tx, ty, np, margin) then best, bestX, bestY, found = nearestReach, tx, ty, 1 end
   end
-  if found == 0 and secondFoot > 0 then
+  if found == 0 and secondFoot > 0 and secondReach >= low then
     local d = fc[secondFoot] + lift
     local tx, ty = fx[secondFoot] * d, fy[secondFoot] * d
     if pushFree(tx, ty, np, margin) then best, bestX, bestY, found = secondReach, tx, ty, 2 end
   end
   if found == 0 then
-    for f = 1, last do   -- feet of the perpendiculars on the outer edges' lines
-      if faceSeam[f] == 0 and reach[f] < best then
+    -- feet of the perpendiculars on the outer edges' lines, but the nearest two: not free (the
+    -- crate turned 0.5 radian: 0.29 of 0.67 pushFree calls a push here were those again)
+    local foot, foot2 = nearestFoot, secondFoot
+    for f = 1, last do
+      if faceSeam[f] == 0 and reach[f] < best and reach[f] >= low and f ~= foot and f ~= foot2 then
         local d = fc[f] + lift
         local tx, ty = fx[f] * d, fy[f] * d
         if pushFree(tx, ty, np, margin) then best, bestX, bestY = reach[f], tx, ty end
@@ -5995,7 +6111,15 @@ local function nearestFree(np, margin)
           if det ~= 0 then
             local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
             local d = sqrt(tx * tx + ty * ty)
-            if d < best and pushFree(tx, ty, np, margin) then best, bestX, bestY = d, tx, ty end
+            -- Below low not tried on PUC Lua, as the feet (2,924 -> 2,848 VM instructions a
+            -- push of the turned crate); tried on LuaJIT, where that test's side exits led
+            -- into pushFree in side traces that failed to compile, "NYI: register coalescing
+            -- too complex", about 250 aborts in each of 2 of 11 runs of `luajit -jv
+            -- bench/compound.lua timing 5000` at fixed trace seeds (without it 4 aborts in 7
+            -- of 14 runs, as before this test in 7 of 10)
+            if d < best and (JIT or d >= low) and pushFree(tx, ty, np, margin) then
+              best, bestX, bestY = d, tx, ty
+            end
           end
         end
       end
@@ -6105,7 +6229,8 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
     return np + 1, top, overlaps
   end
   local boxes1, boxes2, a, b = view1.boxes, view2.boxes, 4 * i, 4 * j
-  local right, bottom, left, low = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
+  local right1, bottom1, left1, low1 = boxes1[a - 1], boxes1[a], boxes1[a - 3], boxes1[a - 2]
+  local right, bottom, left, low = right1, bottom1, left1, low1
   if JIT then
     right, bottom = max(right, boxes2[b - 1]), max(bottom, boxes2[b])
     left, low = min(left, boxes2[b - 3]), min(low, boxes2[b - 2])
@@ -6119,9 +6244,31 @@ local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   local n1, n2 = view1.lengths[i], view2.lengths[j]
   pairBox[np + 1] = 0
   local overlaps
-  top, overlaps = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
+  if JIT and k == 1 and view1.rects[i] + view2.rects[j] ~= 0 then   -- one is a rectangle
+    local sure1, sure2, highest1, highest2
+    if view1.rects[i] ~= 0 then
+      top, sure1, highest1 = rectFaces(view1, i, boxes2, b, 1.0, spanX, spanY, top)
+    else
+      top, sure1, highest1 = addBoxFaces(p1, n1, view1.normals[i], boxes2[b - 3], boxes2[b - 2],
+        boxes2[b - 1], boxes2[b], view1.internal[i], 1.0, spanX, spanY, top)
+    end
+    if view2.rects[j] ~= 0 then
+      top, sure2, highest2 = rectFaces(view2, j, boxes1, a, -1.0, spanX, spanY, top)
+    else
+      top, sure2, highest2 = addBoxFaces(p2, n2, view2.normals[j], left1, low1, right1, bottom1,
+        view2.internal[j], -1.0, spanX, spanY, top)
+    end
+    faceFirst[np + 2] = top + 1
+    pairPart1[np + 1], pairPart2[np + 1] = i, j
+    leastFree = max(leastFree, faceLift - max(highest1, highest2))
+    return np + 1, top, sure1 * sure2
+  end
+  local highest
+  top, overlaps, highest = pairFaces(p1, n1, turn1, view1.normals[i], view1.internal[i],
     p2, n2, turn2, view2.normals[j], view2.internal[j], k, spanX, spanY, top, boxes1, a, boxes2, b,
     view1.rects[i], view2.rects[j])
+  highest = faceLift - highest   -- this pair's least fc + lift (see leastFree)
+  if highest > leastFree then leastFree = highest end
   faceFirst[np + 2] = top + 1
   if JIT then pairPart1[np + 1], pairPart2[np + 1] = i, j end
   return np + 1, top, overlaps
@@ -6360,7 +6507,7 @@ function collideParts(fname, shape1, shape2, wantPush)
   faceLift = 1.25 * margin   -- as nearestFree's lift
   faceMargin = margin
   nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
-  seamX, seamY, feetKept = FAR, FAR, 0
+  seamX, seamY, feetKept, leastFree = FAR, FAR, 0, -FAR
   if found then
     for f = 1, found do
       local part = overlapping[f]
