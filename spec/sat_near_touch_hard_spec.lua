@@ -14,12 +14,7 @@ local translate = shapes.translate
 local OFFSETS = { 1, 2^10, 1e6, 1e9, 2^32, 2^40 }
 local CASES_PER_OFFSET = 40
 
--- The spacing of doubles at magnitude m (m >= 1, a normal double).
-local function ulp(m)
-  local e = 1.0
-  while e * 2 <= m do e = e * 2 end
-  return e * 2^-52
-end
+local ulp = shapes.ulp   -- (m >= 1 here)
 
 -- Vertex k (1-based, odd index into the flat array) and the next one, cyclically.
 local function nextIndex(points, k)

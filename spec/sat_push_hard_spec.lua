@@ -13,25 +13,16 @@
 -- see the printed counts; the largest excess is reported there.
 
 local polygon = require "polygon"
-local oracle = require "oracle"
 local prng = require "prng"
 local shapes = require "shapes"
 local tally = require "tally"
+local checkPush = require "pushcheck"
 
-local translate, largestMagnitude = shapes.translate, shapes.largestMagnitude
-local EPS = 2^-53
+local translate, largestMagnitude, ulp = shapes.translate, shapes.largestMagnitude, shapes.ulp
 local OFFSETS = { 1, 1e3, 1e6, 1e9, 1e12 }
 local SIZES = { 1e-3, 1, 1e3, 1e6 }
 -- where along the edge (0 its first vertex, 1 its far end) the other polygon's deepest vertex is
 local ALONG = { 1, 0.97, 0.5, 0.03 }
-
--- The spacing of doubles at magnitude m (an ulp of m, for m a normal double).
-local function ulp(m)
-  local e = 1.0
-  while e * 2 <= m do e = e * 2 end
-  while e > m and e > 1e-300 do e = e / 2 end
-  return e * 2 * EPS
-end
 
 -- A quadrilateral with the edge from a to b (length `size`, direction angle `theta`, its outward
 -- normal n to the left of a -> b when walking a, b, then inward), `thick` deep along -n, in
@@ -51,21 +42,6 @@ local function pokingPair(rng, cx, cy, size, theta, along, depth, thick)
   if rng:int(0, 1) == 1 then quad = shapes.reverse(quad) end
   if rng:int(0, 1) == 1 then tri = shapes.reverse(tri) end
   return quad, tri
-end
-
--- Checks one ordered pair; returns the excess in units of eps M (0 when it does not collide).
-local function checkPair(a, b, both, counts)
-  local collideV = both and polygon.polygonsCollideV or polygon.polygonCollidesWithV
-  local collide = both and polygon.polygonsCollide or polygon.polygonCollidesWith
-  local o, dx, dy = collideV(a, b)
-  counts.answers:check((o ~= false) == oracle.collides(a, b, both), a, b)
-  if not o then return 0 end
-  local moved = translate(b, dx, dy)
-  counts.separations:check(not collide(a, moved) and not oracle.collides(a, moved, both), a, b,
-    dx, dy)
-  local m = largestMagnitude(a, b)
-  counts.excesses:check(oracle.depthAtLeast(a, b, both, o, 8 * EPS * m), a, b, o, dx, dy)
-  return (o - oracle.depth(a, b, both)) / (EPS * m)
 end
 
 describe("one push separates where the deepest vertex is far from the edge's first vertex", function()
@@ -101,7 +77,7 @@ describe("one push separates where the deepest vertex is far from the edge's fir
                 end
                 for _, pair in ipairs(list) do
                   for _, order in ipairs({ { pair[1], pair[2] }, { pair[2], pair[1] } }) do
-                    worst = math.max(worst, checkPair(order[1], order[2], both, counts))
+                    worst = math.max(worst, checkPush(order[1], order[2], both, counts))
                   end
                 end
               end

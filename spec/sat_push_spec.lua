@@ -10,12 +10,12 @@
 -- push (181 of 380 pairs), now none; the README's Accuracy section has the counts.
 
 local polygon = require "polygon"
-local oracle = require "oracle"
 local prng = require "prng"
 local shapes = require "shapes"
 local tally = require "tally"
+local checkPush = require "pushcheck"
 
-local translate, reverse = shapes.translate, shapes.reverse
+local translate, reverse, ulp = shapes.translate, shapes.reverse, shapes.ulp
 local EPS = 2^-53
 local OFFSETS = { 1, 1e3, 1e6, 1e9, 1e12 }
 local PAIRS_PER_OFFSET = 24
@@ -36,14 +36,6 @@ local function convexPolygon(rng, cx, cy, radius)
 end
 
 local largestMagnitude = shapes.largestMagnitude
-
--- The spacing of doubles at magnitude m (an ulp of m, for m a normal double).
-local function ulp(m)
-  local e = 1.0
-  while e * 2 <= m do e = e * 2 end
-  while e > m and e > 1e-300 do e = e / 2 end
-  return e * 2 * EPS
-end
 
 -- Pairs near (x, y): deep and shallow overlaps, misses, and from each colliding pair a copy
 -- moved out by the module's push and back by 1 to 8 ulps (overlaps of a few ulps or touching).
@@ -68,45 +60,23 @@ local function pairsAt(rng, offset)
   return list
 end
 
-local function length(dx, dy)
-  local m = math.max(math.abs(dx), math.abs(dy))
-  if m == 0 then return 0 end
-  return m * math.sqrt((dx / m) ^ 2 + (dy / m) ^ 2)
-end
-
--- Checks one ordered pair for one function family; returns the excess in units of eps M.
-local function checkPair(a, b, both, answers, separations, excesses)
-  local collideV = both and polygon.polygonsCollideV or polygon.polygonCollidesWithV
-  local collide = both and polygon.polygonsCollide or polygon.polygonCollidesWith
-  local o, dx, dy = collideV(a, b)
-  answers:check((o ~= false) == oracle.collides(a, b, both), a, b)
-  if not o then return 0 end
-  local moved = translate(b, dx, dy)
-  separations:check(not collide(a, moved) and not oracle.collides(a, moved, both), a, b, dx, dy)
-  local m = largestMagnitude(a, b)
-  -- exactly: the least penetration is at least o - 8 eps M; and (dx, dy) is o long, to rounding
-  local short = oracle.depthAtLeast(a, b, both, o, 8 * EPS * m)
-  local consistent = math.abs(length(dx, dy) - o) <= 4 * EPS * o
-  -- for the report only: the excess over the rounded exact depth, in units of eps M
-  local excess = (o - oracle.depth(a, b, both)) / (EPS * m)
-  excesses:check(short and consistent, a, b, o, dx, dy, excess)
-  return excess
-end
-
 describe("one push separates (polygonsCollideV, polygonCollidesWithV)", function()
   for _, both in ipairs({ true, false }) do
     local name = both and "polygonsCollideV" or "polygonCollidesWithV"
     it(name .. ": random convex pairs at offsets 1 to 1e12, both orders, deep to a few ulps",
       function()
         local rng = prng.new(both and 20261122 or 4242)
-        local answers = tally.new(name .. " collides as the oracle says")
-        local separations = tally.new(name .. " moved pair no longer collides")
-        local excesses = tally.new(name .. " push longer than the depth by more than 8 eps M")
+        local counts = {
+          answers = tally.new(name .. " collides as the oracle says"),
+          separations = tally.new(name .. " moved pair no longer collides"),
+          excesses = tally.new(name .. " push longer than the depth by more than 8 eps M"),
+        }
+        local answers, separations, excesses = counts.answers, counts.separations, counts.excesses
         local worst = 0
         for _, offset in ipairs(OFFSETS) do
           for _, pair in ipairs(pairsAt(rng, offset)) do
             for _, order in ipairs({ { pair[1], pair[2] }, { pair[2], pair[1] } }) do
-              local excess = checkPair(order[1], order[2], both, answers, separations, excesses)
+              local excess = checkPush(order[1], order[2], both, counts, true)
               worst = math.max(worst, excess)
             end
           end

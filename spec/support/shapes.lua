@@ -63,6 +63,14 @@ end
 -- math.tointeger exists from Lua 5.3 on (rawget: luacheck's std is the common one).
 local toInteger = rawget(math, "tointeger")
 
+-- The spacing of doubles at magnitude m (an ulp of m, for m a normal double).
+function shapes.ulp(m)
+  local e = 1.0
+  while e * 2 <= m do e = e * 2 end
+  while e > m and e > 1e-300 do e = e / 2 end
+  return e * 2 * 2^-53
+end
+
 --- x as a Lua integer on a Lua with an integer subtype (5.3, 5.4), else x itself; an error when
 -- x has no integer value.
 function shapes.integer(x)
