@@ -1,10 +1,18 @@
 -- bench/run.lua: speed beside error, polygon.lua against the tutorial's formulas (bench/baseline.lua).
 --
 -- From the repository root: luajit bench/run.lua [--quick] [--only PATTERN] [--out FILE] [--data FILE]
--- [--label NAME]. --only times the rows whose "function workload" (e.g. "polygonType ord") matches
--- the Lua pattern. Prints a markdown section (also to --out), writes gnuplot points to --data, and
--- exits non-zero if a row raised an error, a function is missing or a checksum is NaN.
+-- [--label NAME] [--draws K]. --only times the rows whose "function workload" (e.g. "polygonType ord")
+-- matches the Lua pattern. Prints a markdown section (also to --out), writes gnuplot points to
+-- --data, and exits non-zero if a row raised an error, a function is missing or a checksum is NaN.
 -- BENCH_QUICK=1 in the environment is --quick: small inputs and few rounds, a smoke test.
+-- Draws: LuaJIT picks its traces with penalties it seeds at random at start-up, so one process
+-- times one draw of traces, and a row's ratio moved from run to run by more than its targets'
+-- margins (bench/NOTES.md). On LuaJIT and Lua 5.4 every row with a target is therefore timed in
+-- K processes (--draws K; 8 by default, 1 with --quick): this one, then K - 1 fresh ones running
+-- only that row (--ratios, which prints the per-round ratios and skips the error counts). The
+-- ratio is the median over all K x rounds ratios; the table also shows the least and the largest
+-- of the K processes' own medians. (On Lua 5.4 nothing is drawn at random: its draws only add
+-- rounds.) With TRACE_SEED fixed (bench/fixseed.c) every draw is the same.
 -- Each row loads both sides afresh (new function prototypes; on LuaJIT all traces flushed first),
 -- then runs in rounds, each timing polygon.lua and its reference back to back, alternating which
 -- goes first (ABBAAB...). The row reports the median of the per-round ratios and their
@@ -27,7 +35,8 @@ local opts, argi = { quick = os.getenv("BENCH_QUICK") == "1" }, 1
 while arg and arg[argi] do
   local a = arg[argi]
   if a == "--quick" then opts.quick = true
-  elseif a == "--out" or a == "--data" or a == "--only" or a == "--label" then
+  elseif a == "--ratios" then opts.ratios = true
+  elseif a == "--out" or a == "--data" or a == "--only" or a == "--label" or a == "--draws" then
     opts[a:sub(3)] = arg[argi + 1]; argi = argi + 1
   else io.stderr:write("bench/run.lua: unknown argument ", a, "\n"); os.exit(2) end
   argi = argi + 1
@@ -49,6 +58,8 @@ loadFresh("polygon")
 local QUICK = opts.quick
 local TARGET_SECONDS = QUICK and 0.0005 or 0.004   -- one timed pass lasts at least this
 local ROUNDS = QUICK and 2 or 15
+local DRAWS = tonumber(opts.draws) or (QUICK and 1 or 8)
+local INTERPRETER_PATH = arg and arg[-1] or "lua"
 local started = clock()
 local interpreter = jit and jit.version or _VERSION
 -- the targets hold for LuaJIT and Lua 5.4; other versions are reported without them
@@ -353,6 +364,22 @@ local function sides(r)
   return s
 end
 
+local isTarget = {}
+for _, t in ipairs(TARGETS) do isTarget[t[1] .. "@" .. t[2]] = true end
+
+-- The per-round ratios of one row timed in a fresh process (a new draw of LuaJIT's traces).
+local function drawRatios(r)
+  local command = ("%s bench/run.lua --ratios --only '^%s %s$'"):format(INTERPRETER_PATH, r.fname, r.wl.key)
+  local pipe = assert(io.popen(command, "r"))
+  local text = pipe:read("*a")
+  pipe:close()
+  local list = text:match("RATIOS %S+ %S+ ([^\n]*)")
+  if not list then error(("no ratios from `%s`: %s"):format(command, text)) end
+  local ratios = {}
+  for v in list:gmatch("%S+") do ratios[#ratios + 1] = tonumber(v) end
+  return ratios
+end
+
 local function measureRow(r)
   local wl = r.wl
   r.missing = not sideOf(loadFresh("polygon"), r.fname, wl)
@@ -381,6 +408,20 @@ local function measureRow(r)
     end
     ratios[round] = t[1] / t[2]
   end
+  if opts.ratios then
+    print(("RATIOS %s %s %s"):format(r.fname, wl.key, table.concat(ratios, " ")))
+    return
+  end
+  r.drawLow, r.drawHigh = quantile(ratios, 0.5), quantile(ratios, 0.5)
+  if TARGET_COLUMN and DRAWS > 1 and isTarget[r.fname .. "@" .. wl.key] then
+    r.draws = DRAWS
+    for _ = 2, DRAWS do
+      local own = drawRatios(r)
+      local m = quantile(own, 0.5)
+      r.drawLow, r.drawHigh = math.min(r.drawLow, m), max(r.drawHigh, m)
+      for _, v in ipairs(own) do ratios[#ratios + 1] = v end
+    end
+  end
   r.ratio, r.low, r.high = quantile(ratios, 0.5), quantile(ratios, 0.25), quantile(ratios, 0.75)
   r.min, r.max = quantile(ratios, 0), quantile(ratios, 1)
   for k = 1, 2 do
@@ -406,6 +447,10 @@ for _, r in ipairs(ROWS) do
     rowsRun[#rowsRun + 1] = r
     byKey[r.fname .. "@" .. r.wl.key] = r
   end
+end
+if opts.ratios then
+  if #failures > 0 then io.stderr:write(table.concat(failures, "\n"), "\n"); os.exit(1) end
+  os.exit(0)
 end
 if checksum[1] ~= checksum[1] or checksum[2] ~= checksum[2] then
   failures[#failures + 1] = "total checksum is NaN"
@@ -434,14 +479,19 @@ emit(("Command: `%s bench/run.lua%s` (part of `make bench`), %s. %d rounds per r
      :format(opts.label or interpreter, QUICK and " --quick" or "", os.date("!%Y-%m-%d"), ROUNDS,
              TARGET_SECONDS * 1000, QUICK and " QUICK MODE: small inputs, the numbers mean nothing." or ""))
 emit("\n### Targets\n")
-emit("| function | workload | median ratio | IQR | min-max | target | met | polygon.lua B/call |")
-emit("|---|---|---:|---:|---:|---:|---|---:|")
+emit(("Each row with a target is timed in %d processes (%d rounds each; see the header of " ..
+      "bench/run.lua): the median, IQR and min-max are over all their rounds, and \"process " ..
+      "medians\" gives the least and the largest of the processes' own medians.\n"):format(DRAWS, ROUNDS))
+emit("| function | workload | median ratio | IQR | min-max | process medians | target | met " ..
+     "| polygon.lua B/call |")
+emit("|---|---|---:|---:|---:|---:|---:|---|---:|")
 for _, t in ipairs(TARGETS) do
   local r = byKey[t[1] .. "@" .. t[2]]
   if r and r.ratio then
     local goal = TARGET_COLUMN and t[TARGET_COLUMN]
-    emit(("| `%s` | %s%s | %.2f | %s | %.2f-%.2f | %s | %s | %s |"):format(t[1], r.wl.name, against(r),
-      r.ratio, spread(r), r.min, r.max, goal and ("%.2f"):format(goal) or "-",
+    emit(("| `%s` | %s%s | %.2f | %s | %.2f-%.2f | %.2f-%.2f (%d) | %s | %s | %s |"):format(t[1], r.wl.name,
+      against(r), r.ratio, spread(r), r.min, r.max, r.drawLow, r.drawHigh, r.draws or 1,
+      goal and ("%.2f"):format(goal) or "-",
       goal and (r.ratio <= goal and "met" or "**not met**") or "-", bytes(r.module.bytes)))
   end
 end
