@@ -1,18 +1,21 @@
 -- bench/run.lua: speed beside error, polygon.lua against the tutorial's formulas (bench/baseline.lua).
 --
 -- From the repository root: luajit bench/run.lua [--quick] [--only PATTERN] [--out FILE] [--data FILE]
--- [--label NAME] [--draws K]. --only times the rows whose "function workload" (e.g. "polygonType ord")
--- matches the Lua pattern. Prints a markdown section (also to --out), writes gnuplot points to
--- --data, and exits non-zero if a row raised an error, a function is missing or a checksum is NaN.
+-- [--label NAME] [--draws K] [--targets]. --only times the rows whose "function workload" (e.g.
+-- "polygonType ord") matches the Lua pattern, --targets the rows with a target. Prints a
+-- markdown section (also to --out), writes gnuplot points to --data, and exits non-zero if a row
+-- raised an error, a function is missing or a checksum is NaN.
 -- BENCH_QUICK=1 in the environment is --quick: small inputs and few rounds, a smoke test.
 -- Draws: LuaJIT picks its traces with penalties it seeds at random at start-up, so one process
 -- times one draw of traces, and a row's ratio moved from run to run by more than its targets'
--- margins (bench/NOTES.md). On LuaJIT and Lua 5.4 every row with a target is therefore timed in
--- K processes (--draws K; 8 by default, 1 with --quick): this one, then K - 1 fresh ones running
--- only that row (--ratios, which prints the per-round ratios and skips the error counts). The
--- ratio is the median over all K x rounds ratios; the table also shows the least and the largest
--- of the K processes' own medians. (On Lua 5.4 nothing is drawn at random: its draws only add
--- rounds.) With TRACE_SEED fixed (bench/fixseed.c) every draw is the same.
+-- margins (bench/NOTES.md): polygon.lua's side of polygonContains took 55-59 ns a call in eight
+-- runs, the tutorial's 62-78. So on LuaJIT every row with a target is timed in K processes
+-- (--draws K; 16 by default, 1 with --quick): this one, then K - 1 fresh ones running only that
+-- row (--ratios: they print the per-round ratios and skip the error counts). The ratio is the
+-- median over all K x rounds ratios, the ratio of a typical draw; the table also shows the least
+-- and the largest of the K processes' own medians, what one unlucky or lucky game would see.
+-- PUC Lua draws nothing at random (K = 1 unless --draws says otherwise). With TRACE_SEED fixed
+-- (bench/fixseed.c) every draw is the same.
 -- Each row loads both sides afresh (new function prototypes; on LuaJIT all traces flushed first),
 -- then runs in rounds, each timing polygon.lua and its reference back to back, alternating which
 -- goes first (ABBAAB...). The row reports the median of the per-round ratios and their
@@ -36,6 +39,7 @@ while arg and arg[argi] do
   local a = arg[argi]
   if a == "--quick" then opts.quick = true
   elseif a == "--ratios" then opts.ratios = true
+  elseif a == "--targets" then opts.targets = true
   elseif a == "--out" or a == "--data" or a == "--only" or a == "--label" or a == "--draws" then
     opts[a:sub(3)] = arg[argi + 1]; argi = argi + 1
   else io.stderr:write("bench/run.lua: unknown argument ", a, "\n"); os.exit(2) end
@@ -58,7 +62,7 @@ loadFresh("polygon")
 local QUICK = opts.quick
 local TARGET_SECONDS = QUICK and 0.0005 or 0.004   -- one timed pass lasts at least this
 local ROUNDS = QUICK and 2 or 15
-local DRAWS = tonumber(opts.draws) or (QUICK and 1 or 8)
+local DRAWS = tonumber(opts.draws) or ((QUICK or not jit) and 1 or 16)
 local INTERPRETER_PATH = arg and arg[-1] or "lua"
 local started = clock()
 local interpreter = jit and jit.version or _VERSION
@@ -438,7 +442,8 @@ end
 
 local rowsRun, byKey = {}, {}
 for _, r in ipairs(ROWS) do
-  if not opts.only or (r.fname .. " " .. r.wl.key):find(opts.only) then
+  if (not opts.only or (r.fname .. " " .. r.wl.key):find(opts.only))
+      and (not opts.targets or isTarget[r.fname .. "@" .. r.wl.key]) then
     local ok, err = pcall(measureRow, r)
     if not ok then
       r.error = tostring(err)
@@ -479,9 +484,10 @@ emit(("Command: `%s bench/run.lua%s` (part of `make bench`), %s. %d rounds per r
      :format(opts.label or interpreter, QUICK and " --quick" or "", os.date("!%Y-%m-%d"), ROUNDS,
              TARGET_SECONDS * 1000, QUICK and " QUICK MODE: small inputs, the numbers mean nothing." or ""))
 emit("\n### Targets\n")
-emit(("Each row with a target is timed in %d processes (%d rounds each; see the header of " ..
+emit(("Each row with a target is timed in %d process%s (%d rounds each; see the header of " ..
       "bench/run.lua): the median, IQR and min-max are over all their rounds, and \"process " ..
-      "medians\" gives the least and the largest of the processes' own medians.\n"):format(DRAWS, ROUNDS))
+      "medians\" gives the least and the largest of the processes' own medians.\n")
+     :format(DRAWS, DRAWS == 1 and "" or "es", ROUNDS))
 emit("| function | workload | median ratio | IQR | min-max | process medians | target | met " ..
      "| polygon.lua B/call |")
 emit("|---|---|---:|---:|---:|---:|---:|---|---:|")
