@@ -1596,6 +1596,142 @@ do
   end
 end
 
+-- LuaJIT, 3 to 16 vertices: containsShort4, containsShort8, containsShort12 and containsShort16,
+-- the same walk as straight-line code without a branch, over 4, 8, 12 or 16 vertices (the fewest
+-- that hold the polygon's; one branch on n picks): vertex k is read at min(2k, n), so a shorter
+-- polygon repeats its last vertex, and the edges between the copies have length 0 and cross
+-- nothing. Each edge adds to three sums: count, 1 when it crosses the ray's
+-- height and its side test is certainly >= 0 (going down) or <= 0 (going up); worst, more than 0
+-- when it crosses and its side is not certain; total, its determinant, so that an infinite or
+-- NaN one (overflow) shows in the sum. Unless worst is 0 and total finite, containsByRuns decides
+-- the call from the start (a point on or within a few ulps of a crossing edge; differences from
+-- (x, y) beyond about 2^537, or crossing edges' determinants below 2^-950). The side test is
+-- the determinant of (p_j - q, p_i - q), whose sign is that of (p_i - p_j) x (q - p_j):
+-- dx dy' - dy dx', certain when its magnitude is at least
+-- (|dx| + |dy|) (|dx'| + |dy'|) 2^-50 (above Shewchuk's bound 3 eps (|l| + |r|), with room for
+-- the roundings of the bound's own terms) and at least 2^-950 (so that products that underflow,
+-- off by at most 2^-1075 each, stay within that room); the factors m = (|dx| + |dy|) 2^-25 +
+-- 2^-475 are taken once per vertex. A certain determinant is then at least 2^-950, so that
+-- g det 2^1000 clamps to 1 or 0 exactly. Measured with `TRACE_SEED=N LD_PRELOAD=/tmp/fixseed.so
+-- setarch -R luajit bench/run.lua --only '^polygonContains cOrd$' --draws 1` (bench/fixseed.c),
+-- N = 1..20: polygon.lua's side 48 to 54 ns in each (single runs up to 70 when the machine was
+-- busy, the tutorial's side as slow then), where containsByRuns took 55 to 66 (the tutorial's
+-- between 58 and 88); `--draws 8`: 0.72 and 0.74 of the tutorial's time (48 and 49 ns; process
+-- medians 0.58 to 0.85), not 0.84 and 0.87 (56 and 60 ns).
+-- Timed alone over the same queries (a loop of calls, the least of 30 passes), 8 vertices take
+-- about 32 ns, 16 about 57, containsByRuns 42 to 60 at every size.
+-- Tried and dropped:
+-- - containsShort8 alone (4 to 8 vertices), containsByRuns for 9 to 16: as fast in most runs,
+--   but in 1 of 10 (seed 6 of `--only '^polygonContains'`) 100 to 115 ns: the side exit for n > 16
+--   reached containsByRuns' loops before they were traces, failed ("loop unroll limit reached",
+--   "trace too long") and was left to the interpreter; the straight-line code has no loop to
+--   wait for. A 10-vertex version alone: 1.4 times the tutorial's time in 1 of 20 seeds.
+-- - the same step in a for loop over the vertices: 67 ns on 9 to 16 vertices, not 57.
+-- - the vertices read before the edges (32 values live): spilled to the stack, 33.0 ns on 3 to 8
+--   vertices where edge after vertex takes 32.1.
+-- - worst as a max: 0 times an infinite bound is NaN, which math.max(worst, NaN) returned and
+--   the next max dropped, with the worst before it (a wrong answer for a vertex at y = 1e308 among
+--   ones near 1e-319); the sum keeps it, and then containsByRuns decides.
+-- - without containsShort4 (quadrilaterals through containsShort8): the tiles (cTiles, every call
+--   falling back) 61 to 102 ns, 45 to 79 with it.
+-- Points on or near edges pay for both walks: `--only '^polygonContains'` took the tiles 45 to 79
+-- ns where containsByRuns alone took 44 to 72, and the points near edges (cEdge) 73 to 107 where
+-- it took 66 to 104 (both rows noisy from run to run, on either side).
+local containsShort4, containsShort8, containsShort12, containsShort16
+if JIT then
+  -- Vertex k (its y at points[k]) relative to (x, y): dx, dy, 1 when it is above the ray's height
+  -- (dy < 0: at most -2^-1074, times -2^1200 beyond 1), else 0, and its factor m of the bound.
+  local function vertexFrom(points, k, x, y)
+    local dx, dy = points[k - 1] - x, points[k] - y
+    return dx, dy, min(1, max(0, dy * -2^600 * 2^600)), (abs(dx) + abs(dy)) * 2^-25 + 2^-475
+  end
+
+  -- The edge from vertex j to vertex i added to the sums. g = 1: it crosses going down (from
+  -- above), -1: going up, 0: it does not cross; it counts when g det > 0 and det is certain.
+  local function addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
+    local g = aj - ai
+    local det = dxj * dyi - dyj * dxi
+    local c = g * g
+    return count + min(1, max(0, g * det * 2^1000)), worst + c * max(0, mj * mi - abs(det)),
+      total + det
+  end
+
+  -- The next vertex, at points[k], and the edge into it from the last one (dxj, dyj, aj, mj).
+  local function step(points, k, x, y, count, worst, total, dxj, dyj, aj, mj)
+    local dxi, dyi, ai, mi = vertexFrom(points, k, x, y)
+    count, worst, total = addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
+    return count, worst, total, dxi, dyi, ai, mi
+  end
+
+  containsShort4 = function(points, n, x, y)
+    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
+    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+    if worst + total * 0 == 0 then return count % 2 == 1 end
+    local inside = containsByRuns(points, n, x, y)
+    return inside
+  end
+
+  containsShort8 = function(points, n, x, y)
+    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
+    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(8, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(10, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(12, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(14, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+    if worst + total * 0 == 0 then return count % 2 == 1 end
+    local inside = containsByRuns(points, n, x, y)
+    return inside
+  end
+
+  containsShort12 = function(points, n, x, y)
+    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
+    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 8, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 10, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 12, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 14, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(16, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(18, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(20, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(22, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+    if worst + total * 0 == 0 then return count % 2 == 1 end
+    local inside = containsByRuns(points, n, x, y)
+    return inside
+  end
+
+  containsShort16 = function(points, n, x, y)
+    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
+    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 8, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 10, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 12, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 14, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 16, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, 18, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(20, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(22, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(24, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(26, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(28, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, min(30, n), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+    if worst + total * 0 == 0 then return count % 2 == 1 end
+    local inside = containsByRuns(points, n, x, y)
+    return inside
+  end
+end
+
 -- The O(1) checks of polygonContains and Polygon:contains, raised at their callers' lines
 -- (level counted from checkQuery). A NaN or infinite x or y would make the crossing rule
 -- meaningless.
@@ -1623,6 +1759,14 @@ local function polygonContains(points, x, y)
   if n < 6 then return false end
   x = x + 0.0
   y = y + 0.0
+  if JIT and n <= 32 then   -- (see containsShort4)
+    local inside
+    if n <= 8 then inside = containsShort4(points, n, x, y)
+    elseif n <= 16 then inside = containsShort8(points, n, x, y)
+    elseif n <= 24 then inside = containsShort12(points, n, x, y)
+    else inside = containsShort16(points, n, x, y) end
+    return inside
+  end
   if JIT or x * x + y * y >= 2^106 then   -- (then |x| or |y| may reach 2^53)
     local inside = containsByRuns(points, n, x, y)
     return inside   -- not a tail call: the argument errors point at the caller's line
