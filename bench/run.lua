@@ -11,9 +11,10 @@
 -- margins (bench/NOTES.md): polygon.lua's side of polygonContains took 55-59 ns a call in eight
 -- runs, the tutorial's 62-78. So on LuaJIT every row with a target is timed in K processes
 -- (--draws K; 16 by default, 1 with --quick): this one, then K - 1 fresh ones running only that
--- row (--ratios: they print the per-round ratios and skip the error counts). The ratio is the
--- median over all K x rounds ratios, the ratio of a typical draw; the table also shows the least
--- and the largest of the K processes' own medians, what one unlucky or lucky game would see.
+-- row (--ratios: they print the per-round ratios and times and skip the error counts). The ratio
+-- is the median over all K x rounds ratios, the ratio of a typical draw (the times shown are
+-- medians over them too); the table also shows the least and the largest of the K processes'
+-- own medians, what one unlucky or lucky game would see.
 -- PUC Lua draws nothing at random (K = 1 unless --draws says otherwise). With TRACE_SEED fixed
 -- (bench/fixseed.c) every draw is the same.
 -- Each row loads both sides afresh (new function prototypes; on LuaJIT all traces flushed first),
@@ -371,17 +372,21 @@ end
 local isTarget = {}
 for _, t in ipairs(TARGETS) do isTarget[t[1] .. "@" .. t[2]] = true end
 
--- The per-round ratios of one row timed in a fresh process (a new draw of LuaJIT's traces).
+-- The per-round ratios of one row timed in a fresh process (a new draw of LuaJIT's traces), and
+-- each side's per-round times (ns a call).
 local function drawRatios(r)
   local command = ("%s bench/run.lua --ratios --only '^%s %s$'"):format(INTERPRETER_PATH, r.fname, r.wl.key)
   local pipe = assert(io.popen(command, "r"))
   local text = pipe:read("*a")
   pipe:close()
-  local list = text:match("RATIOS %S+ %S+ ([^\n]*)")
-  if not list then error(("no ratios from `%s`: %s"):format(command, text)) end
-  local ratios = {}
-  for v in list:gmatch("%S+") do ratios[#ratios + 1] = tonumber(v) end
-  return ratios
+  local lists = {}
+  for k, name in ipairs({ "RATIOS", "MODULE", "REFERENCE" }) do
+    local list = text:match(name .. " %S+ %S+ ([^\n]*)")
+    if not list then error(("no %s from `%s`: %s"):format(name, command, text)) end
+    lists[k] = {}
+    for v in list:gmatch("%S+") do lists[k][#lists[k] + 1] = tonumber(v) end
+  end
+  return lists[1], lists[2], lists[3]
 end
 
 local function measureRow(r)
@@ -414,13 +419,17 @@ local function measureRow(r)
   end
   if opts.ratios then
     print(("RATIOS %s %s %s"):format(r.fname, wl.key, table.concat(ratios, " ")))
+    print(("MODULE %s %s %s"):format(r.fname, wl.key, table.concat(ns[1], " ")))
+    print(("REFERENCE %s %s %s"):format(r.fname, wl.key, table.concat(ns[2], " ")))
     return
   end
   r.drawLow, r.drawHigh = quantile(ratios, 0.5), quantile(ratios, 0.5)
   if TARGET_COLUMN and DRAWS > 1 and isTarget[r.fname .. "@" .. wl.key] then
     r.draws = DRAWS
     for _ = 2, DRAWS do
-      local own = drawRatios(r)
+      local own, moduleNs, referenceNs = drawRatios(r)
+      for _, v in ipairs(moduleNs) do ns[1][#ns[1] + 1] = v end
+      for _, v in ipairs(referenceNs) do ns[2][#ns[2] + 1] = v end
       local m = quantile(own, 0.5)
       r.drawLow, r.drawHigh = math.min(r.drawLow, m), max(r.drawHigh, m)
       for _, v in ipairs(own) do ratios[#ratios + 1] = v end
@@ -485,7 +494,8 @@ emit(("Command: `%s bench/run.lua%s` (part of `make bench`), %s. %d rounds per r
              TARGET_SECONDS * 1000, QUICK and " QUICK MODE: small inputs, the numbers mean nothing." or ""))
 emit("\n### Targets\n")
 emit(("Each row with a target is timed in %d process%s (%d rounds each; see the header of " ..
-      "bench/run.lua): the median, IQR and min-max are over all their rounds, and \"process " ..
+      "bench/run.lua): the median, IQR and min-max (and the times in \"All rows\") are over all " ..
+      "their rounds, and \"process " ..
       "medians\" gives the least and the largest of the processes' own medians.\n")
      :format(DRAWS, DRAWS == 1 and "" or "es", ROUNDS))
 emit("| function | workload | median ratio | IQR | min-max | process medians | target | met " ..
