@@ -1663,72 +1663,67 @@ if JIT then
     return count, worst, total, dxi, dyi, ai, mi
   end
 
-  containsShort4 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  -- The first three steps, to the vertices at flat indices 4, 6 and min(8, last), from vertex 1;
+  -- then four more, to those at min(k, last) to min(k + 6, last). last is n where the polygon
+  -- may end within the steps, else the constant UNCLAMPED, which LuaJIT folds with the
+  -- constant k into constant indices (min(k, n) for every index took 27 machine instructions
+  -- a call more, 744 against 717, cachegrind at trace seeds 1 to 3 on the cOrd queries).
+  local UNCLAMPED = 64
+  local function firstSteps(points, last, x, y, dx1, dy1, a1, m1)
     local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
     count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
+    return step(points, min(8, last), x, y, count, worst, total, dx, dy, a, m)
+  end
+
+  local function fourSteps(points, k, last, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m =
+      step(points, min(k, last), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m =
+      step(points, min(k + 2, last), x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m =
+      step(points, min(k + 4, last), x, y, count, worst, total, dx, dy, a, m)
+    return step(points, min(k + 6, last), x, y, count, worst, total, dx, dy, a, m)
+  end
+
+  -- The edge back to vertex 1, then the answer, or containsByRuns' where a side is not certain.
+  local function lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
     count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
     if worst + total * 0 == 0 then return count % 2 == 1 end
     local inside = containsByRuns(points, n, x, y)
     return inside
+  end
+
+  containsShort4 = function(points, n, x, y)
+    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+    local count, worst, total, dx, dy, a, m = firstSteps(points, n, x, y, dx1, dy1, a1, m1)
+    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
   end
 
   containsShort8 = function(points, n, x, y)
     local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(8, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(10, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(12, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(14, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-    if worst + total * 0 == 0 then return count % 2 == 1 end
-    local inside = containsByRuns(points, n, x, y)
-    return inside
+    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+    count, worst, total, dx, dy, a, m = fourSteps(points, 10, n, x, y, count, worst, total, dx, dy, a, m)
+    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
   end
 
   containsShort12 = function(points, n, x, y)
     local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 8, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 10, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 12, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 14, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(16, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(18, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(20, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(22, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-    if worst + total * 0 == 0 then return count % 2 == 1 end
-    local inside = containsByRuns(points, n, x, y)
-    return inside
+    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+    count, worst, total, dx, dy, a, m =
+      fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = fourSteps(points, 18, n, x, y, count, worst, total, dx, dy, a, m)
+    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
   end
 
   containsShort16 = function(points, n, x, y)
     local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 8, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 10, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 12, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 14, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 16, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, 18, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(20, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(22, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(24, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(26, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(28, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, min(30, n), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = step(points, n, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-    if worst + total * 0 == 0 then return count % 2 == 1 end
-    local inside = containsByRuns(points, n, x, y)
-    return inside
+    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+    count, worst, total, dx, dy, a, m =
+      fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m =
+      fourSteps(points, 18, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+    count, worst, total, dx, dy, a, m = fourSteps(points, 26, n, x, y, count, worst, total, dx, dy, a, m)
+    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
   end
 end
 
