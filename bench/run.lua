@@ -9,14 +9,16 @@
 -- Draws: LuaJIT picks its traces with penalties it seeds at random at start-up, so one process
 -- times one draw of traces, and a row's ratio moved from run to run by more than its targets'
 -- margins (bench/NOTES.md): polygon.lua's side of polygonContains took 55-59 ns a call in eight
--- runs, the tutorial's 62-78. So on LuaJIT every row with a target is timed in K processes
--- (--draws K; 16 by default, 1 with --quick): this one, then K - 1 fresh ones running only that
--- row (--ratios: they print the per-round ratios and times and skip the error counts). The ratio
--- is the median over all K x rounds ratios, the ratio of a typical draw (the times shown are
+-- runs, the tutorial's 62-78. PUC Lua's ratios move from process to process too, less and for
+-- reasons not pinned down (memory layout, the shared machine): Lua 5.4's polygonWindingOrder
+-- read 1.16 to 1.32 in eight runs, 1.20 to 1.27 in six with address randomization off
+-- (setarch -R). So every row with a target (LuaJIT, Lua 5.4) is timed in K processes (--draws
+-- K; 16 by default, 1 with --quick): this one, then K - 1 fresh ones running only that row
+-- (--ratios: they print the per-round ratios and times and skip the error counts). The ratio is
+-- the median over all K x rounds ratios, the ratio of a typical draw (the times shown are
 -- medians over them too); the table also shows the least and the largest of the K processes'
--- own medians, what one unlucky or lucky game would see.
--- PUC Lua draws nothing at random (K = 1 unless --draws says otherwise). With TRACE_SEED fixed
--- (bench/fixseed.c) every draw is the same.
+-- own medians, what one unlucky or lucky run would see. With TRACE_SEED fixed (bench/fixseed.c)
+-- LuaJIT's traces are the same in every draw.
 -- Each row loads both sides afresh (new function prototypes; on LuaJIT all traces flushed first),
 -- then runs in rounds, each timing polygon.lua and its reference back to back, alternating which
 -- goes first (ABBAAB...). The row reports the median of the per-round ratios and their
@@ -63,7 +65,7 @@ loadFresh("polygon")
 local QUICK = opts.quick
 local TARGET_SECONDS = QUICK and 0.0005 or 0.004   -- one timed pass lasts at least this
 local ROUNDS = QUICK and 2 or 15
-local DRAWS = tonumber(opts.draws) or ((QUICK or not jit) and 1 or 16)
+local DRAWS = tonumber(opts.draws) or (QUICK and 1 or 16)
 local INTERPRETER_PATH = arg and arg[-1] or "lua"
 local started = clock()
 local interpreter = jit and jit.version or _VERSION
