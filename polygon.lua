@@ -1598,14 +1598,15 @@ end
 
 -- LuaJIT, 3 to 16 vertices: containsShort4, containsShort8, containsShort12 and containsShort16,
 -- the same walk as straight-line code without a branch, over 4, 8, 12 or 16 vertices (the fewest
--- that hold the polygon's; one branch on n picks): vertex k is read at min(2k, n), so a shorter
--- polygon repeats its last vertex, and the edges between the copies have length 0 and cross
--- nothing. Each edge adds to three sums: count, 1 when it crosses the ray's
--- height and its side test is certainly >= 0 (going down) or <= 0 (going up); worst, more than 0
--- when it crosses and its side is not certain; total, its determinant, so that an infinite or
--- NaN one (overflow) shows in the sum. Unless worst is 0 and total finite, containsByRuns decides
--- the call from the start (a point on or within a few ulps of a crossing edge; differences from
--- (x, y) beyond about 2^537, or crossing edges' determinants below 2^-950). The side test is
+-- that hold the polygon's; one branch on n picks), built from firstSteps, fourSteps and lastEdge:
+-- vertex k is read at flat index min(2k, n), so a shorter polygon repeats its last vertex, and
+-- the edges between the copies have length 0 and cross nothing. Each edge adds to three sums:
+-- count, 1 when it crosses the ray's height and its side test is certainly >= 0 (going down) or
+-- <= 0 (going up); worst, more than 0 when it crosses and its side is not certain; total, its
+-- determinant, so that an infinite or NaN one (overflow) shows in the sum. Unless worst is 0
+-- and total finite, containsByRuns decides the call from the start (a point on or within a few
+-- ulps of a crossing edge; differences from (x, y) beyond about 2^537, or crossing edges'
+-- determinants below 2^-950). The side test is
 -- the determinant of (p_j - q, p_i - q), whose sign is that of (p_i - p_j) x (q - p_j):
 -- dx dy' - dy dx', certain when its magnitude is at least
 -- (|dx| + |dy|) (|dx'| + |dy'|) 2^-50 (above Shewchuk's bound 3 eps (|l| + |r|), with room for
