@@ -5605,11 +5605,10 @@ local faceReach = {}               -- |faceC + lift|: how near the origin the fa
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 local pairAdded = {}               -- per pair of parts i, j (at (i - 1) count2 + j): callStamp once in
 local pairPart1, pairPart2 = {}, {}   -- pair p's parts i and j (LuaJIT: see pairsOverlap)
--- pairBox[p] is 1 when pair p's D is a box (rectPairFaces), with its sides' constants
--- plus margin: t is inside D widened by margin when tx < boxRight[p], -tx < boxLeft[p],
--- ty < boxDown[p] and -ty < boxUp[p] (pushFree); else 0
-local pairBox, boxRight, boxLeft, boxDown, boxUp = {}, {}, {}, {}, {}
-local faceMargin = 0.0   -- margin (see nearestFree) of the call under way, for boxRight and the rest
+-- pairBox[p] is 1 when pair p is two axis-parallel rectangles (rectPairFaces, boxPush), else 0;
+-- then pairRects holds their boxes at 8p - 7 .. 8p: xmin, ymin, xmax, ymax of the first shape's
+-- part, then of the second's, the one a push moves (pushFree)
+local pairBox, pairRects = {}, {}
 
 -- Whether two convex parts overlap (exact), by the SAT engine. A non-finite coordinate the
 -- checks of the views did not see (one off the box of a list's part) raises the argument error
@@ -6059,9 +6058,12 @@ if JIT then
     local cLeft, cTop = boxes2[b - 1] - boxes1[a - 3], boxes2[b] - boxes1[a - 2]
     local cRight, cBottom = boxes1[a - 1] - boxes2[b - 3], boxes1[a] - boxes2[b - 2]
     sideC[1], sideC[2], sideC[3], sideC[4] = cLeft, cTop, cRight, cBottom
-    local margin = faceMargin   -- pushFree's constants, as PUC Lua's below
-    pairBox[p], boxLeft[p], boxUp[p], boxRight[p], boxDown[p] = 1, cLeft + margin, cTop + margin,
-      cRight + margin, cBottom + margin
+    local rects, r = pairRects, 8 * p   -- for pushFree
+    pairBox[p] = 1
+    rects[r - 7], rects[r - 6], rects[r - 5], rects[r - 4] = boxes1[a - 3], boxes1[a - 2],
+      boxes1[a - 1], boxes1[a]
+    rects[r - 3], rects[r - 2], rects[r - 1], rects[r] = boxes2[b - 3], boxes2[b - 2],
+      boxes2[b - 1], boxes2[b]
     local line1, line2, line3, line4 = sides1[1], sides1[3], sides1[5], sides1[7]
     local flag1, flag2, flag3, flag4 = internal1[1], internal1[3], internal1[5], internal1[7]
     flags[line1], flags[line2], flags[line3], flags[line4] = flag1, flag2, flag3, flag4
@@ -6103,12 +6105,16 @@ else
     sideC[2] = cTop
     sideC[3] = cRight
     sideC[4] = cBottom
-    local margin = faceMargin   -- pushFree's constants: the faces' fc + margin, the same numbers
+    local rects, r = pairRects, 8 * p   -- for pushFree
     pairBox[p] = 1
-    boxLeft[p] = cLeft + margin
-    boxUp[p] = cTop + margin
-    boxRight[p] = cRight + margin
-    boxDown[p] = cBottom + margin
+    rects[r - 7] = boxes1[a - 3]
+    rects[r - 6] = boxes1[a - 2]
+    rects[r - 5] = boxes1[a - 1]
+    rects[r - 4] = boxes1[a]
+    rects[r - 3] = boxes2[b - 3]
+    rects[r - 2] = boxes2[b - 2]
+    rects[r - 1] = boxes2[b - 1]
+    rects[r] = boxes2[b]
     -- p1's sides in the order of its edges, then those of p2 whose flags differ: two loops, the
     -- face's code in both (one loop over the eight edges took 5 more VM instructions an edge to
     -- tell the two apart; one assignment per statement, as in pairFaces). The reach lift + c is
@@ -6185,17 +6191,22 @@ else
   end
 end
 
--- Whether t lies outside every D of pairs 1 .. np widened by margin. A box's D by its four
--- constants (pairBox): the faces' tests, as a face (1, 0) gives 1 tx + 0 ty, which is tx (a
--- zero's sign aside), and so on; written as the negation of their disjunction, so that a NaN
--- is inside, as there. (On LuaJIT no faster on the crate and floor of bench/compound.lua than
--- reading the faces, within the noise: one body for both.)
+-- Whether t lies outside every D of pairs 1 .. np widened by margin. A pair of rectangles
+-- (pairBox) exactly instead: whether the second's box moved by t, each side as the move rounds
+-- it (x + dx, as a game moves each vertex), overlaps the first's, which is whether the moved
+-- rectangles overlap. So a push that leaves a crate touching a wall is free, and one push
+-- still separates: a crate that fits a slot of a floor of boxes exactly, sunk into its bottom,
+-- goes straight up, flush with both walls, not out over one of them (as it did when D widened
+-- by margin was tested here too). Written as the negation of a disjunction, so that a NaN
+-- is inside, as in the faces' tests.
 local function pushFree(tx, ty, np, margin)
   local first, fx, fy, fc = faceFirst, faceX, faceY, faceC   -- locals: PUC Lua reads upvalues slower
-  local isBox = pairBox
+  local isBox, rects = pairBox, pairRects
   for p = 1, np do
     if isBox[p] ~= 0 then
-      if not (tx >= boxRight[p] or -tx >= boxLeft[p] or ty >= boxDown[p] or -ty >= boxUp[p]) then
+      local b = 8 * p
+      if not (rects[b - 7] >= rects[b - 1] + tx or rects[b - 3] + tx >= rects[b - 5]
+          or rects[b - 6] >= rects[b] + ty or rects[b - 2] + ty >= rects[b - 4]) then
         return false
       end
     else
@@ -6570,6 +6581,181 @@ else
   end
 end
 
+-- Scratch for boxPush: per pair p, at 4p - 3 .. 4p, the lines of its first shape's sides in the
+-- order of that part's edges (its faces' order in rectPairFaces): the side (1 left, 2 top, 3
+-- right, 4 bottom, as rectSides numbers them) and its c + lift.
+local boxSide, boxLine, boxReach = {}, {}, {}
+
+-- The push of a flat axis-parallel rectangle out of a list of them, or into it (a crate on a
+-- floor of tiles or boxes), unscaled: every D is a box, and nearestFree's search comes down to
+-- feet and crossings on the four lines of each box. Pair p's D is the open box -cLeft < tx <
+-- cRight, -cTop < ty < cBottom (rectPairFaces' constants, the same numbers); its lines lifted
+-- are left at tx = -(cLeft + lift), top at ty = -(cTop + lift), right at tx = cRight + lift and
+-- bottom at ty = cBottom + lift, a foot where a line meets its axis, a crossing (+-x, +-y)
+-- where a vertical line meets a horizontal one: the numbers nearestFree computes from the
+-- faces. The pairs are the parts whose boxes overlap the rectangle's (overlapping, 1 ..
+-- found); the feet are tried nearest first (then in line order) until one is free, then the
+-- crossings of the lines nearer than it. As collideParts' loop does, the free point stands when
+-- no other near part's box of D comes within near of it (the largest gaps of the scan tell
+-- most calls at once) and it lies within half the window. Returns the push as collideParts
+-- does, or nil when a part is not a rectangle, no candidate is free, or the point does not
+-- stand: then collideParts' search decides.
+-- Pairs 1 .. found of boxPush: their parts brought up to date (see preparedParts), each D's
+-- constants plus margin (pushFree's boxes) and its lines, from the boxes of the part and of the
+-- flat rectangle; lines 4 found + 1 .. 8 FAR (see boxPush). Returns leastFree (see
+-- nearestFree), or nil when a part is not a rectangle. A function of its own, its loop holding
+-- few values: where the loop's end is a side exit, LuaJIT takes over in registers every value
+-- live there, and failed to compile it ("NYI: register coalescing too complex") when
+-- boxPush's were live too.
+local function boxLines(info, list, flat, listFirst, found, margin)
+  local lift, fb, flatSides, least = 1.25 * margin, flat.boxes, flat.sides[1], -huge
+  local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
+  for q = 1, found do
+    local k = overlapping[q]
+    if info.checked[k] ~= callStamp then checkCopy(info, k, list[k], 6) end
+    if info.rects[k] == 0 then return nil end
+    local boxes, a = info.boxes, 4 * k
+    local x0, y0, x1, y1 = boxes[a - 3], boxes[a - 2], boxes[a - 1], boxes[a]
+    local cLeft, cTop, cRight, cBottom = fx1 - x0, fy1 - y0, x1 - fx0, y1 - fy0
+    local order, rects, r = flatSides, pairRects, 8 * q   -- pairRects for pushFree
+    pairBox[q] = 1
+    if listFirst then
+      order = info.sides[k]
+      rects[r - 7], rects[r - 6], rects[r - 5], rects[r - 4] = x0, y0, x1, y1
+      rects[r - 3], rects[r - 2], rects[r - 1], rects[r] = fx0, fy0, fx1, fy1
+    else
+      cLeft, cTop, cRight, cBottom = x1 - fx0, y1 - fy0, fx1 - x0, fy1 - y0
+      rects[r - 7], rects[r - 6], rects[r - 5], rects[r - 4] = fx0, fy0, fx1, fy1
+      rects[r - 3], rects[r - 2], rects[r - 1], rects[r] = x0, y0, x1, y1
+    end
+    local c, sides, lines, lineReach = sideConstant, boxSide, boxLine, boxReach
+    c[1], c[2], c[3], c[4] = cLeft, cTop, cRight, cBottom
+    local b, side = 4 * q, order[1]
+    local d = c[side] + lift
+    sides[b - 3], lines[b - 3], lineReach[b - 3] = side, d, abs(d)
+    side = order[3]
+    d = c[side] + lift
+    sides[b - 2], lines[b - 2], lineReach[b - 2] = side, d, abs(d)
+    side = order[5]
+    d = c[side] + lift
+    sides[b - 1], lines[b - 1], lineReach[b - 1] = side, d, abs(d)
+    side = order[7]
+    d = c[side] + lift
+    sides[b], lines[b], lineReach[b] = side, d, abs(d)
+    least = max(least, lift + min(cLeft, cTop, cRight, cBottom))
+  end
+  if found == 1 then
+    local sides, lines, lineReach = boxSide, boxLine, boxReach
+    sides[5], sides[6], sides[7], sides[8] = 1, 2, 1, 2
+    lines[5], lines[6], lines[7], lines[8] = FAR, FAR, FAR, FAR
+    lineReach[5], lineReach[6], lineReach[7], lineReach[8] = FAR, FAR, FAR, FAR
+  end
+  return least
+end
+
+-- The foot of line l of boxPush, and whether it is free among pairs 1 .. found.
+local function boxFoot(l, found, margin)
+  local d, side = boxLine[l], boxSide[l]
+  local tx, ty = 0.0, 0.0
+  if side == 1 then tx = -d elseif side == 3 then tx = d elseif side == 2 then ty = -d else ty = d end
+  return pushFree(tx, ty, found, margin), tx, ty
+end
+
+local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX, leastGapY,
+                       margin, window)
+  local least = boxLines(info, list, flat, listFirst, found, margin)
+  if not least then return nil end
+  local low, lines, sides, lineReach = least - 0.75 * margin, boxLine, boxSide, boxReach
+  -- The nearest foot and the second nearest (first in line order among equals), in one pass of
+  -- at least 8 steps (FAR past the lines: a constant count for one pair or two); usually one of
+  -- them is free. Else the feet in order of reach, then of lines.
+  local last, steps = 4 * found, max(8, 4 * found)
+  local foot, footReach, foot2, foot2Reach = 0, huge, 0, huge
+  for l = 1, steps do
+    local r = lineReach[l]
+    if r >= low then
+      if r < footReach then
+        foot, footReach, foot2, foot2Reach = l, r, foot, footReach
+      elseif r < foot2Reach then
+        foot2, foot2Reach = l, r
+      end
+    end
+  end
+  local best, bestX, bestY = huge, 0.0, 0.0
+  local free, tx, ty = false, 0.0, 0.0
+  if footReach < FAR then free, tx, ty = boxFoot(foot, found, margin) end
+  if free then
+    best, bestX, bestY = footReach, tx, ty
+  else
+    if foot2Reach < FAR then free, tx, ty = boxFoot(foot2, found, margin) end
+    if free then
+      best, bestX, bestY = foot2Reach, tx, ty
+    elseif foot2Reach < FAR then
+      local triedReach, triedLine = foot2Reach, foot2   -- the feet up to here were tried
+      while true do
+        local f, reach = 0, huge
+        for l = 1, last do
+          local r = lineReach[l]
+          if r < reach and r >= low and (r > triedReach or r == triedReach and l > triedLine) then
+            f, reach = l, r
+          end
+        end
+        if f == 0 then break end
+        free, tx, ty = boxFoot(f, found, margin)
+        if free then
+          best, bestX, bestY = reach, tx, ty
+          break
+        end
+        triedReach, triedLine = reach, f
+      end
+    end
+  end
+  -- crossings of a vertical line and a horizontal one, both nearer than the best, in the order
+  -- of nearestFree's (each line with those after it)
+  local count = 0
+  for l = 1, steps do
+    if lineReach[l] < best then count = count + 1; nearLines[count] = l end
+  end
+  for a = 1, count - 1 do
+    local f = nearLines[a]
+    local x, side = lines[f], sides[f]
+    if lineReach[f] < best then
+      local vertical = side % 2
+      if side <= 2 then x = -x end
+      for b = a + 1, count do
+        local g = nearLines[b]
+        local y = lines[g]
+        if lineReach[g] < best and sides[g] % 2 ~= vertical then
+          if sides[g] <= 2 then y = -y end
+          local cx, cy = x, y
+          if vertical == 0 then cx, cy = y, x end
+          local d = sqrt(cx * cx + cy * cy)
+          if d < best and pushFree(cx, cy, found, margin) then best, bestX, bestY = d, cx, cy end
+        end
+      end
+    end
+  end
+  if best == huge then return nil end
+  local near, sx, sy = 4 * margin, bestX, bestY
+  if not listFirst then sx, sy = -sx, -sy end   -- the box of D of flat - part: the tests on -t
+  local reachX, reachY = abs(sx), abs(sy)
+  if 2 * (max(reachX, reachY) + near) > window then return nil end
+  if leastGapX - reachX < near or leastGapY - reachY < near then
+    local boxes, fb = info.boxes, flat.boxes
+    local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
+    for q = 1, nearCount do
+      local a = 4 * nearParts[q]
+      local x0, y0, x1, y1 = boxes[a - 3], boxes[a - 2], boxes[a - 1], boxes[a]
+      -- not a pair (its box and the rectangle's apart), and its box of D near t
+      if not (x0 < fx1 and fx0 < x1 and y0 < fy1 and fy0 < y1) and (x0 - fx1) - sx < near
+          and sx - (x1 - fx0) < near and (y0 - fy1) - sy < near and sy - (y1 - fy0) < near then
+        return nil
+      end
+    end
+  end
+  return best, bestX + 0.0, bestY + 0.0
+end
+
 -- Whether some pair 1 .. np overlaps, decided exactly (on LuaJIT, after addPair found none that
 -- overlaps for sure): as the boolean decides each pair.
 local function pairsOverlap(fname, view1, shape1, view2, shape2, np, scaled)
@@ -6678,6 +6864,14 @@ function collideParts(fname, shape1, shape2, wantPush)
   local extent = ((max(view1.right, view2.right) - min(view1.left, view2.left))
     + (max(view1.bottom, view2.bottom) - min(view1.top, view2.top))) * k
   local margin = 2^-47 * extent + 2^-52 * magnitude * k   -- delta above: 64 eps E + 2 eps S
+  if found and found > 0 and k == 1 then
+    local flat = parts1 and view2 or view1
+    if flat.rects[1] ~= 0 then
+      local best, tx, ty = boxPush(parts1 and view1 or view2, parts1 and shape1 or shape2, flat,
+        parts1, found, nearCount, leastGapX, leastGapY, margin, window)
+      if best then return best, tx, ty end
+    end
+  end
   -- The pairs whose boxes overlap go in now, marked in pairAdded; the others when their box of D
   -- comes near the best free point (below). A pair is numbered (i - 1) count2 + j; against a
   -- flat shape, by the list's part. One loop over the pairs, not two nested (on LuaJIT an inner
@@ -6686,7 +6880,6 @@ function collideParts(fname, shape1, shape2, wantPush)
   local np, top, hits = 0, 0, 0
   local added = pairAdded   -- a local: PUC Lua reads an upvalue by an extra instruction
   faceLift = 1.25 * margin   -- as nearestFree's lift
-  faceMargin = margin
   nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
   seamX, seamY, feetKept, leastFree = FAR, FAR, 0, -FAR
   if found then

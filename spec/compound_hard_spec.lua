@@ -117,6 +117,85 @@ describe("compound shapes against the union oracle", function()
     assert.is_true(stats.worst < 1e-2, "worst relative excess " .. stats.worst)
   end)
 
+  it("pushes a flat box out of a list of boxes as out of the one-part list, at every way out", function()
+    -- A box against a list of boxes takes the rectangles' own search (every D a box); passed as a
+    -- one-part list it takes the general one: check compares them number for number, and both
+    -- with the oracle. The scenes reach each way that search hands back to the general one: a
+    -- push beyond half the box's width plus height (deep and thin crates), a part near the push
+    -- that is not a pair (crates flush with a part's side or a gap's edge), a near part that is
+    -- not a rectangle (a wedge in the row), and pushes at a crossing (crates in a corner).
+    -- Scenes with a wedge count apart: a crate that fits a slot exactly, flush with the wedge's
+    -- vertical side, is not free there (a pair that is not two rectangles is tested widened by
+    -- the margin), and its push may be longer than the least (README, "Accuracy").
+    local g = prng.new(515)
+    local wrong = newWrong()
+    local stats = { collisions = 0, beyondSlack = 0, worst = 0 }
+    local wedgeStats = { collisions = 0, beyondSlack = 0, worst = 0 }
+    for trial = 1, 200 do
+      local off = OFFSETS[trial % #OFFSETS + 1]
+      local size = g:pick({ 1, 4, 10 })
+      local list = {}
+      local wedge = false
+      for k = 0, 5 do
+        if g:float() < 0.8 then   -- a row of parts with gaps, some taller (corners)
+          local top = 10 * size - (g:float() < 0.3 and g:int(1, 3) * size or 0)
+          if g:float() < 0.1 then   -- a wedge, not a rectangle
+            wedge = true
+            list[#list + 1] = { off + k * size, off + 13 * size, off + (k + 1) * size, off + top,
+                                off + (k + 1) * size, off + 13 * size }
+          else
+            list[#list + 1] = parts.box(off + k * size, off + top, size, 13 * size - top)
+          end
+        end
+      end
+      if #list == 0 then list[1] = parts.box(off, off + 10 * size, size, size) end
+      local w = g:pick({ 0.3, 0.8, 2, 5 }) * size
+      local h = g:pick({ 0.3, 0.8, 2, 5 }) * size
+      -- on the grid (flush with sides and seams) or off it
+      local x = g:float() < 0.5 and g:int(-1, 6) * size or g:range(-1, 6) * size
+      local y = 10 * size - h + g:pick({ 0.25, 0.5, 1, 2, 4 }) * size * (g:float() < 0.3 and 0.01 or 1)
+      local crate = parts.box(off + x, off + y, w, h)
+      checkBothOrders(list, { crate }, wrong, wedge and wedgeStats or stats)
+    end
+    assertNone(wrong)
+    assert.is_true(wedgeStats.collisions > 20, wedgeStats.collisions .. " collisions with a wedge")
+    assert.is_true(stats.collisions > 150, stats.collisions .. " collisions")
+    -- rectangles only: every push within the face margin (tripled) of the least, crossings too
+    -- (their lines meet at right angles); the depths of 0.01 size at 1e12 are near that margin
+    assert.are.equal(0, stats.beyondSlack, stats.beyondSlack .. " of " .. stats.collisions)
+  end)
+
+  it("pushes a 4 x 4 crate sunk 1 into the seam of two boxes straight up, either order", function()
+    -- floor boxes x 0..10 and 10..20, top y = 10; the crate x 8..12, y 7..11: it reaches 1 below
+    -- the top, and 2 past the seam on each side: the least push is up 1 (the margin is about
+    -- 2^-47 (20 + 4) + 2^-52 20, below 1e-12). The crate first: the floor moves down by 1.
+    local floor = { parts.box(0, 10, 10, 20), parts.box(10, 10, 10, 20) }
+    local crate = parts.box(8, 7, 4, 4)
+    local overlap, dx, dy = collideV(floor, crate)
+    assert.are.equal(0, dx)
+    assert.is_true(math.abs(dy + 1) < 1e-12 and math.abs(overlap - 1) < 1e-12, overlap .. " " .. dy)
+    overlap, dx, dy = collideV(crate, floor)
+    assert.are.equal(0, dx)
+    assert.is_true(math.abs(dy - 1) < 1e-12 and math.abs(overlap - 1) < 1e-12, overlap .. " " .. dy)
+  end)
+
+  it("pushes a crate that fits a slot exactly straight up out of its bottom, flush with both walls", function()
+    -- walls x 0..10 and 20..30 from y 0, the slot's bottom x 10..20 from y 20; the crate x 10..20,
+    -- y 12..22 reaches 2 into the bottom and touches both walls: up 2 leaves it touching them,
+    -- which is not colliding (it went 20 sideways, over a wall, while touching counted as not free)
+    local slot = { parts.box(0, 0, 10, 40), parts.box(10, 20, 10, 20), parts.box(20, 0, 10, 40) }
+    for _, off in ipairs(OFFSETS) do
+      local shifted, crate = parts.translate(slot, off, off), parts.box(10 + off, 12 + off, 10, 10)
+      local overlap, dx, dy = collideV(shifted, crate)
+      assert.are.equal(0, dx)
+      assert.is_true(math.abs(dy + 2) < 1e-3 and dy < -2, off .. ": " .. dy)
+      assert.is_false(collide(shifted, parts.translate({ crate }, dx, dy)))
+      overlap, dx, dy = collideV({ crate }, shifted)   -- the slot moves down instead
+      assert.are.equal(0, dx)
+      assert.is_true(math.abs(dy - 2) < 1e-3 and dy > 2 and overlap > 2, off .. ": " .. dy)
+    end
+  end)
+
   it("finds the least translation exactly (within the margin) for crates on terrain", function()
     -- every push along a face: the margin bounds the excess everywhere
     local g = prng.new(77)
