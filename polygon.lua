@@ -6828,10 +6828,20 @@ function collideParts(fname, shape1, shape2, wantPush)
     -- range, where the push scales (below), by the SAT engine, which rescales itself.
     local scaled = magnitude > EXACT_TOP or magnitude < 2^-400
     if found then   -- a list against a flat shape: the parts whose boxes overlap its box
+      local list, flat = view2, view1
+      if parts1 then list, flat = view1, view2 end
+      local flatRect = flat.rects[1] ~= 0
       for f = 1, found do
         local k = overlapping[f]
         local i, j, p1, p2 = 1, k, shape1, shape2[k]
         if parts1 then i, j, p1, p2 = k, 1, shape1[k], shape2 end
+        -- two axis-parallel rectangles are their boxes: boxes that overlap (strictly, as
+        -- partsOverlapping tests them) are rectangles that overlap (the part's whole copy
+        -- compared first, as for any pair: see preparedParts)
+        if flatRect then
+          if list.checked[k] ~= callStamp then checkCopy(list, k, parts1 and p1 or p2, 4) end
+          if list.rects[k] ~= 0 then return true end
+        end
         if scaled then
           if overlapsConvex(fname, p1, p2) then return true end
         elseif pairOverlaps(view1, p1, i, view2, p2, j) then
