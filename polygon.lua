@@ -2931,7 +2931,8 @@ function polygon.polygonsCollide(points1, points2)
   local kind1 = type(points1) == "table" and type(points1[1])
   local kind2 = type(points2) == "table" and type(points2[1])
   if kind1 == "table" or kind2 == "table" then
-    local hit = collideParts("polygonsCollide", points1, points2, false)
+    local hit = collideParts("polygonsCollide", points1, points2, false, kind1 == "table",
+      kind2 == "table")
     return hit
   end
   local collided = collides("polygonsCollide", points1, points2, true, kind1, kind2)
@@ -2985,7 +2986,8 @@ function polygon.polygonsCollideV(points1, points2)
   local kind1 = type(points1) == "table" and type(points1[1])
   local kind2 = type(points2) == "table" and type(points2[1])
   if kind1 == "table" or kind2 == "table" then
-    local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true)
+    local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true,
+      kind1 == "table", kind2 == "table")
     return overlap, dx, dy
   end
   local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true, kind1, kind2)
@@ -6583,26 +6585,13 @@ end
 
 -- Scratch for boxPush: per pair p, at 4p - 3 .. 4p, the lines of its first shape's sides in the
 -- order of that part's edges (its faces' order in rectPairFaces): the side (1 left, 2 top, 3
--- right, 4 bottom, as rectSides numbers them) and its c + lift.
-local boxSide, boxLine, boxReach = {}, {}, {}
+-- right, 4 bottom, as rectSides numbers them) and its c + lift, which is also the line's
+-- distance from the origin (its reach): the pairs' rectangles overlap, so every c > 0.
+local boxSide, boxLine = {}, {}
 
--- The push of a flat axis-parallel rectangle out of a list of them, or into it (a crate on a
--- floor of tiles or boxes), unscaled: every D is a box, and nearestFree's search comes down to
--- feet and crossings on the four lines of each box. Pair p's D is the open box -cLeft < tx <
--- cRight, -cTop < ty < cBottom (rectPairFaces' constants, the same numbers); its lines lifted
--- are left at tx = -(cLeft + lift), top at ty = -(cTop + lift), right at tx = cRight + lift and
--- bottom at ty = cBottom + lift, a foot where a line meets its axis, a crossing (+-x, +-y)
--- where a vertical line meets a horizontal one: the numbers nearestFree computes from the
--- faces. The pairs are the parts whose boxes overlap the rectangle's (overlapping, 1 ..
--- found); the feet are tried nearest first (then in line order) until one is free, then the
--- crossings of the lines nearer than it. As collideParts' loop does, the free point stands when
--- no other near part's box of D comes within near of it (the largest gaps of the scan tell
--- most calls at once) and it lies within half the window. Returns the push as collideParts
--- does, or nil when a part is not a rectangle, no candidate is free, or the point does not
--- stand: then collideParts' search decides.
--- Pairs 1 .. found of boxPush: their parts brought up to date (see preparedParts), each D's
--- constants plus margin (pushFree's boxes) and its lines, from the boxes of the part and of the
--- flat rectangle; lines 4 found + 1 .. 8 FAR (see boxPush). Returns leastFree (see
+-- Pairs 1 .. found of boxPush: their parts brought up to date (see preparedParts), each pair's
+-- boxes (pairRects, for pushFree) and lines, from the boxes of the part and of the flat
+-- rectangle; lines 4 found + 1 .. 8 FAR (see boxPush). Returns leastFree (see
 -- nearestFree), or nil when a part is not a rectangle. A function of its own, its loop holding
 -- few values: where the loop's end is a side exit, LuaJIT takes over in registers every value
 -- live there, and failed to compile it ("NYI: register coalescing too complex") when
@@ -6628,27 +6617,22 @@ local function boxLines(info, list, flat, listFirst, found, margin)
       rects[r - 7], rects[r - 6], rects[r - 5], rects[r - 4] = fx0, fy0, fx1, fy1
       rects[r - 3], rects[r - 2], rects[r - 1], rects[r] = x0, y0, x1, y1
     end
-    local c, sides, lines, lineReach = sideConstant, boxSide, boxLine, boxReach
+    local c, sides, lines = sideConstant, boxSide, boxLine
     c[1], c[2], c[3], c[4] = cLeft, cTop, cRight, cBottom
     local b, side = 4 * q, order[1]
-    local d = c[side] + lift
-    sides[b - 3], lines[b - 3], lineReach[b - 3] = side, d, abs(d)
+    sides[b - 3], lines[b - 3] = side, c[side] + lift
     side = order[3]
-    d = c[side] + lift
-    sides[b - 2], lines[b - 2], lineReach[b - 2] = side, d, abs(d)
+    sides[b - 2], lines[b - 2] = side, c[side] + lift
     side = order[5]
-    d = c[side] + lift
-    sides[b - 1], lines[b - 1], lineReach[b - 1] = side, d, abs(d)
+    sides[b - 1], lines[b - 1] = side, c[side] + lift
     side = order[7]
-    d = c[side] + lift
-    sides[b], lines[b], lineReach[b] = side, d, abs(d)
+    sides[b], lines[b] = side, c[side] + lift
     least = max(least, lift + min(cLeft, cTop, cRight, cBottom))
   end
   if found == 1 then
-    local sides, lines, lineReach = boxSide, boxLine, boxReach
+    local sides, lines = boxSide, boxLine
     sides[5], sides[6], sides[7], sides[8] = 1, 2, 1, 2
     lines[5], lines[6], lines[7], lines[8] = FAR, FAR, FAR, FAR
-    lineReach[5], lineReach[6], lineReach[7], lineReach[8] = FAR, FAR, FAR, FAR
   end
   return least
 end
@@ -6661,18 +6645,33 @@ local function boxFoot(l, found, margin)
   return pushFree(tx, ty, found, margin), tx, ty
 end
 
+-- The push of a flat axis-parallel rectangle out of a list of them, or into it (a crate on a
+-- floor of tiles or boxes), unscaled: every D is a box, and nearestFree's search comes down to
+-- feet and crossings on the four lines of each box. Pair p's D is the open box -cLeft < tx <
+-- cRight, -cTop < ty < cBottom (rectPairFaces' constants, the same numbers); its lines lifted
+-- are left at tx = -(cLeft + lift), top at ty = -(cTop + lift), right at tx = cRight + lift and
+-- bottom at ty = cBottom + lift, a foot where a line meets its axis, a crossing (+-x, +-y)
+-- where a vertical line meets a horizontal one: the numbers nearestFree computes from the
+-- faces. The pairs are the parts whose boxes overlap the rectangle's (overlapping, 1 ..
+-- found); the feet are tried nearest first (then in line order) until one is free, then the
+-- crossings of the lines nearer than it. As collideParts' loop does, the free point stands when
+-- no other near part's box of D comes within near of it (the largest gaps of the scan tell
+-- most calls at once) and it lies within half the window. Returns the push as collideParts
+-- does, or nil when a part is not a rectangle, no candidate is free, or the point does not
+-- stand: then collideParts' search decides.
 local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX, leastGapY,
                        margin, window)
   local least = boxLines(info, list, flat, listFirst, found, margin)
   if not least then return nil end
-  local low, lines, sides, lineReach = least - 0.75 * margin, boxLine, boxSide, boxReach
+  local low, lines, sides = least - 0.75 * margin, boxLine, boxSide
   -- The nearest foot and the second nearest (first in line order among equals), in one pass of
   -- at least 8 steps (FAR past the lines: a constant count for one pair or two); usually one of
   -- them is free. Else the feet in order of reach, then of lines.
-  local last, steps = 4 * found, max(8, 4 * found)
+  local last = 4 * found
+  local steps = last < 8 and 8 or last
   local foot, footReach, foot2, foot2Reach = 0, huge, 0, huge
   for l = 1, steps do
-    local r = lineReach[l]
+    local r = lines[l]
     if r >= low then
       if r < footReach then
         foot, footReach, foot2, foot2Reach = l, r, foot, footReach
@@ -6695,7 +6694,7 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
       while true do
         local f, reach = 0, huge
         for l = 1, last do
-          local r = lineReach[l]
+          local r = lines[l]
           if r < reach and r >= low and (r > triedReach or r == triedReach and l > triedLine) then
             f, reach = l, r
           end
@@ -6714,18 +6713,18 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
   -- of nearestFree's (each line with those after it)
   local count = 0
   for l = 1, steps do
-    if lineReach[l] < best then count = count + 1; nearLines[count] = l end
+    if lines[l] < best then count = count + 1; nearLines[count] = l end
   end
   for a = 1, count - 1 do
     local f = nearLines[a]
     local x, side = lines[f], sides[f]
-    if lineReach[f] < best then
+    if lines[f] < best then
       local vertical = side % 2
       if side <= 2 then x = -x end
       for b = a + 1, count do
         local g = nearLines[b]
         local y = lines[g]
-        if lineReach[g] < best and sides[g] % 2 ~= vertical then
+        if lines[g] < best and sides[g] % 2 ~= vertical then
           if sides[g] <= 2 then y = -y end
           local cx, cy = x, y
           if vertical == 0 then cx, cy = y, x end
@@ -6738,8 +6737,8 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
   if best == huge then return nil end
   local near, sx, sy = 4 * margin, bestX, bestY
   if not listFirst then sx, sy = -sx, -sy end   -- the box of D of flat - part: the tests on -t
-  local reachX, reachY = abs(sx), abs(sy)
-  if 2 * (max(reachX, reachY) + near) > window then return nil end
+  local reachX, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
+  if 2 * ((reachX < reachY and reachY or reachX) + near) > window then return nil end
   if leastGapX - reachX < near or leastGapY - reachY < near then
     local boxes, fb = info.boxes, flat.boxes
     local fx0, fy0, fx1, fy1 = fb[1], fb[2], fb[3], fb[4]
@@ -6773,12 +6772,9 @@ local function pairsOverlap(fname, view1, shape1, view2, shape2, np, scaled)
 end
 
 -- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
--- of parts) overlap, or with wantPush the least translation of shape2 out of shape1 as
--- overlap, dx, dy, or false.
-function collideParts(fname, shape1, shape2, wantPush)
-  -- isParts inline (PUC Lua pays for every call)
-  local parts1 = type(shape1) == "table" and type(shape1[1]) == "table"
-  local parts2 = type(shape2) == "table" and type(shape2[1]) == "table"
+-- of parts: parts1, parts2, as isParts tells, which the public functions did inline) overlap,
+-- or with wantPush the least translation of shape2 out of shape1 as overlap, dx, dy, or false.
+function collideParts(fname, shape1, shape2, wantPush, parts1, parts2)
   local view1, view2, found, nearCount, window, leastGapX, leastGapY
   if parts1 ~= parts2 then
     -- A list against a flat shape: the list's checks and its parts' box tests in one loop

@@ -21,6 +21,13 @@
 --                                              2nd and 6th) of 7 rounds timing them back to back
 --                                              in one process: steadier than separate rows when
 --                                              the machine is shared
+--   luajit bench/compound.lua draws 16 100000
+--                                              the target rows' ratios (pushFloor / pushPairs,
+--                                              booleanFloor / booleanPairs, pushTurned /
+--                                              pushTurnedPairs), each by `ratio` in 16 processes
+--                                              of this interpreter (LuaJIT draws its traces anew
+--                                              in each): the median of the processes' medians
+--                                              and their range, as a Markdown table (make bench)
 -- The excess mode compares with spec/support/union.lua, which shares no code with polygon.lua.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local polygon = require "polygon"
@@ -276,6 +283,44 @@ local function excess(seed, trials)
   end
 end
 
+-- The target rows, each pair's ratio in `processes` processes of this interpreter (arg[-1]),
+-- `calls` calls a round.
+local TARGET_ROWS = {
+  { "pushFloor", "pushPairs", "`polygonsCollideV`, crate against the 20-part floor" },
+  { "booleanFloor", "booleanPairs", "`polygonsCollide`, crate against the 20-part floor" },
+  { "pushTurned", "pushTurnedPairs", "`polygonsCollideV`, the crate turned 0.5 radian (no target)" },
+}
+
+local function draws(processes, calls)
+  local interpreter = arg[-1] or "lua"
+  local ratios = {}
+  for p = 1, processes do
+    for r, row in ipairs(TARGET_ROWS) do
+      local command = ("%s bench/compound.lua ratio %s %s %d"):format(interpreter, row[1], row[2], calls)
+      local child = assert(io.popen(command))
+      local line = child:read("*a")
+      child:close()
+      local value = tonumber(line:match(": ([%d.]+) %("))
+      if not value then
+        io.stderr:write("compound.lua draws: no ratio from `" .. command .. "`: " .. line .. "\n")
+        os.exit(1)
+      end
+      ratios[r] = ratios[r] or {}
+      ratios[r][p] = value
+    end
+  end
+  print(("| %s, ratio to the pair calls it needs | median of %d processes | their range |"):format(
+    interpreter, processes))
+  print("|---|---:|---:|")
+  for r, row in ipairs(TARGET_ROWS) do
+    local list = ratios[r]
+    table.sort(list)
+    local n = #list
+    local median = n % 2 == 1 and list[(n + 1) / 2] or (list[n / 2] + list[n / 2 + 1]) / 2
+    print(("| %s | %.2f | %.2f-%.2f |"):format(row[3], median, list[1], list[n]))
+  end
+end
+
 local mode = arg[1]
 if mode == "timing" then
   timing(tonumber(arg[2]) or 20000)
@@ -287,8 +332,11 @@ elseif mode == "count" then
   count(arg[2], tonumber(arg[3]) or 300)
 elseif mode == "ratio" then
   ratio(arg[2], arg[3] or "pushPairs", tonumber(arg[4]) or 100000)
+elseif mode == "draws" then
+  draws(tonumber(arg[2]) or 16, tonumber(arg[3]) or 100000)
 else
   io.stderr:write("usage: lua bench/compound.lua timing [calls] | excess [seed] [scenes]"
-    .. " | only key [calls] | count key [calls] | ratio key [base] [calls]\n")
+    .. " | only key [calls] | count key [calls] | ratio key [base] [calls]"
+    .. " | draws [processes] [calls]\n")
   os.exit(2)
 end
