@@ -45,6 +45,20 @@ if [ "$quick" != 1 ]; then
   done
 fi
 
+# Lists of convex parts against the convex pair calls they need (bench/compound.lua), each ratio
+# in 16 processes (full run only: about a minute on LuaJIT, two on Lua 5.4).
+compound=$sections/compound.md
+if [ "$quick" != 1 ]; then
+  for lua in luajit lua5.4; do
+    command -v "$lua" >/dev/null 2>&1 || continue
+    calls=100000; [ "$lua" = luajit ] || calls=20000
+    { echo "## Lists of convex parts on $lua: \`$lua bench/compound.lua draws 16 $calls\`"; echo
+      "$lua" bench/compound.lua draws 16 "$calls"; rc=$?
+      echo; } >> "$compound"
+    [ "$rc" = 0 ] || { echo "bench.sh: $lua bench/compound.lua failed" >&2; status=1; }
+  done
+fi
+
 {
   echo "# Benchmark: polygon.lua against the tutorial's formulas"
   echo
@@ -61,6 +75,7 @@ fi
   echo
   for lua in $ran; do [ -f "$sections/$lua.md" ] && cat "$sections/$lua.md"; done
   [ -f "$concave" ] && cat "$concave"
+  [ -f "$compound" ] && cat "$compound"
 } > "$out/RESULTS.md"
 rm -rf "$sections"
 
