@@ -6642,6 +6642,21 @@ local function boxLines(info, list, flat, listFirst, found, margin)
   return least
 end
 
+-- The rank of line l's foot in the order nearestFree meets the feet (ties go to the first):
+-- 8 p + 1 .. 8 p + 8 for pair p. A side of the pair's first part that is not a seam in that
+-- part's order, 1 to 4; a seam's foot is the face of the flat rectangle's side on that line
+-- (rectPairFaces), after those, 5 to 8 in the order of the flat rectangle's sides. (Only ties
+-- ask for it: equal reaches.)
+local function boxRank(l, info, flat, listFirst)
+  local q = (l - 1 - (l - 1) % 4) / 4 + 1   -- the pair
+  local e = l - 4 * q + 4   -- the side's place in the order of the pair's first part
+  if not listFirst or info.internal[overlapping[q]][2 * e - 1] == 0 then return 8 * q + e end
+  local flatSides, side = flat.sides[1], boxSide[l]
+  for e2 = 1, 4 do
+    if flatSides[2 * e2] == side then return 8 * q + 4 + e2 end
+  end
+end
+
 -- The foot of line l of boxPush, and whether it is free among pairs 1 .. found.
 local function boxFoot(l, found, margin)
   local d, side = boxLine[l], boxSide[l]
@@ -6671,18 +6686,20 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
   local least = boxLines(info, list, flat, listFirst, found, margin)
   if not least then return nil end
   local low, lines, sides = least - 0.75 * margin, boxLine, boxSide
-  -- The nearest foot and the second nearest (first in line order among equals), in one pass of
-  -- at least 8 steps (FAR past the lines: a constant count for one pair or two); usually one of
-  -- them is free. Else the feet in order of reach, then of lines.
+  -- The nearest foot and the second nearest (among equals the first by boxRank), in one pass
+  -- of at least 8 steps (FAR past the lines: a constant count for one pair or two); usually one
+  -- of them is free. Else the feet in order of reach, then of rank.
   local last = 4 * found
   local steps = last < 8 and 8 or last
   local foot, footReach, foot2, foot2Reach = 0, huge, 0, huge
   for l = 1, steps do
     local r = lines[l]
     if r >= low then
-      if r < footReach then
+      if r < footReach or r == footReach and r < FAR
+          and boxRank(l, info, flat, listFirst) < boxRank(foot, info, flat, listFirst) then
         foot, footReach, foot2, foot2Reach = l, r, foot, footReach
-      elseif r < foot2Reach then
+      elseif r < foot2Reach or r == foot2Reach and r < FAR
+          and boxRank(l, info, flat, listFirst) < boxRank(foot2, info, flat, listFirst) then
         foot2, foot2Reach = l, r
       end
     end
@@ -6697,13 +6714,17 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
     if free then
       best, bestX, bestY = foot2Reach, tx, ty
     elseif foot2Reach < FAR then
-      local triedReach, triedLine = foot2Reach, foot2   -- the feet up to here were tried
+      -- the feet up to here were tried: those before (triedReach, triedRank)
+      local triedReach, triedRank = foot2Reach, boxRank(foot2, info, flat, listFirst)
       while true do
-        local f, reach = 0, huge
+        local f, reach, rank = 0, huge, 0
         for l = 1, last do
           local r = lines[l]
-          if r < reach and r >= low and (r > triedReach or r == triedReach and l > triedLine) then
-            f, reach = l, r
+          if r >= low and r <= reach and r >= triedReach then
+            local lRank = boxRank(l, info, flat, listFirst)
+            if (r < reach or lRank < rank) and (r > triedReach or lRank > triedRank) then
+              f, reach, rank = l, r, lRank
+            end
           end
         end
         if f == 0 then break end
@@ -6712,7 +6733,7 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
           best, bestX, bestY = reach, tx, ty
           break
         end
-        triedReach, triedLine = reach, f
+        triedReach, triedRank = reach, rank
       end
     end
   end
