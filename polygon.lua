@@ -6679,8 +6679,8 @@ end
 -- most calls at once) and it lies within half the window. Returns the push as collideParts
 -- does, or nil when a part is not a rectangle, no candidate is free, or the point does not
 -- stand: then collideParts' search decides. (bench/compound.lua's crate on the 20-part floor:
--- 1.21 -> 0.82 of its pair calls' time on LuaJIT, medians over 10 and 16 processes; Lua 5.4
--- 1,613 -> 1,318 VM instructions; bench/NOTES.md, session 13.)
+-- 1.21 -> 0.86 of its pair calls' time on LuaJIT, medians over 10 and 16 processes; Lua 5.4
+-- 1,613 -> 1,373 VM instructions; bench/NOTES.md, session 13.)
 local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX, leastGapY,
                        margin, window)
   local least = boxLines(info, list, flat, listFirst, found, margin)

@@ -119,8 +119,7 @@ describe("compound shapes against the union oracle", function()
 
   it("pushes a flat box out of a list of boxes as out of the one-part list, at every way out", function()
     -- A box against a list of boxes takes the rectangles' own search (every D a box); passed as a
-    -- one-part list it takes the general one: check compares them number for number (they may
-    -- differ where two pushes of the same length tie, as none of these scenes has), and both
+    -- one-part list it takes the general one: check compares them number for number, and both
     -- with the oracle. The scenes reach each way that search hands back to the general one: a
     -- push beyond half the box's width plus height (deep and thin crates), a part near the push
     -- that is not a pair (crates flush with a part's side or a gap's edge), a near part that is
