@@ -6757,7 +6757,10 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
           local cx, cy = x, y
           if vertical == 0 then cx, cy = y, x end
           local d = sqrt(cx * cx + cy * cy)
-          if d < best and pushFree(cx, cy, found, margin) then best, bestX, bestY = d, cx, cy end
+          -- below low not tried on PUC Lua, as nearestFree's crossings
+          if d < best and (JIT or d >= low) and pushFree(cx, cy, found, margin) then
+            best, bestX, bestY = d, cx, cy
+          end
         end
       end
     end
