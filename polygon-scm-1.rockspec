@@ -7,7 +7,7 @@ source = {
 description = {
   summary = "Polygon geometry for games: winding, area, convexity, point in polygon, SAT collision",
   detailed = [[
-    One pure-Lua file over flat point arrays {x1, y1, x2, y2, ...} (the form love.graphics.polygon
+    Pure Lua over flat point arrays {x1, y1, x2, y2, ...} (the form love.graphics.polygon
     takes): winding order, area, convex or concave, centre and centroid, point in polygon,
     separating-axis collision of convex polygons with a minimum translation vector, and convex
     polygon against circle. Every sign it decides is exact; per-frame calls allocate nothing.
@@ -23,6 +23,19 @@ build = {
   type = "builtin",
   modules = {
     polygon = "polygon.lua",
+    ["polygon.kernel"] = "polygon/kernel.lua",
+    ["polygon.check"] = "polygon/check.lua",
+    ["polygon.measures"] = "polygon/measures.lua",
+    ["polygon.contains"] = "polygon/contains.lua",
+    ["polygon.sat"] = "polygon/sat.lua",
+    ["polygon.circle"] = "polygon/circle.lua",
+    ["polygon.object"] = "polygon/object.lua",
+    ["polygon.triangulate"] = "polygon/triangulate.lua",
+    ["polygon.views"] = "polygon/views.lua",
+    ["polygon.faces"] = "polygon/faces.lua",
+    ["polygon.compound"] = "polygon/compound.lua",
+    ["polygon.collide"] = "polygon/collide.lua",
+    ["polygon.transform"] = "polygon/transform.lua",
   },
 }
 test = {

@@ -22,7 +22,7 @@ local clock = os.clock
 
 local function loadModule(file)
   local chunk = assert(loadfile(file))
-  return chunk()
+  return chunk("polygon")   -- the module name, from which the front requires polygon/
 end
 
 if arg and arg[1] == "--alone" then

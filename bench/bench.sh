@@ -15,10 +15,10 @@ out=bench flag=
 if [ "$quick" = 1 ]; then out=$(mktemp -d "${TMPDIR:-/tmp}/polygon-bench.XXXXXX") || exit 2; flag=--quick; fi
 sections=$(mktemp -d "${TMPDIR:-/tmp}/polygon-bench-sections.XXXXXX") || exit 2
 mkdir -p "$out/data"
-# which polygon.lua was measured: the last commit that changed it (BENCH_REV overrides)
-rev=${BENCH_REV:-$(git log -1 --format=%h -- polygon.lua 2>/dev/null || echo "an unknown revision")}
-if git rev-parse --git-dir >/dev/null 2>&1 && ! git diff --quiet HEAD -- polygon.lua 2>/dev/null; then
-  rev="$rev plus uncommitted changes to polygon.lua"
+# which library was measured: the last commit that changed polygon.lua or polygon/ (BENCH_REV overrides)
+rev=${BENCH_REV:-$(git log -1 --format=%h -- polygon.lua polygon 2>/dev/null || echo "an unknown revision")}
+if git rev-parse --git-dir >/dev/null 2>&1 && ! git diff --quiet HEAD -- polygon.lua polygon 2>/dev/null; then
+  rev="$rev plus uncommitted changes to the library"
 fi
 
 status=0 ran= start=$(date +%s)
