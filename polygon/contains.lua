@@ -132,94 +132,91 @@ end
 -- Points on or near edges pay for both walks: `--only '^polygonContains'` took the tiles 45 to 79
 -- ns where containsByRuns alone took 44 to 72, and the points near edges (cEdge) 73 to 107 where
 -- it took 66 to 104 (both rows noisy from run to run, on either side).
-local containsShort4, containsShort8, containsShort12, containsShort16
-if JIT then
-  -- Vertex k (its y at points[k]) relative to (x, y): dx, dy, 1 when it is above the ray's height
-  -- (dy < 0: at most -2^-1074, times -2^1200 beyond 1), else 0, and its factor m of the bound.
-  local function vertexFrom(points, k, x, y)
-    local dx, dy = points[k - 1] - x, points[k] - y
-    return dx, dy, min(1, max(0, dy * -2^600 * 2^600)), (abs(dx) + abs(dy)) * 2^-25 + 2^-475
-  end
+-- Vertex k (its y at points[k]) relative to (x, y): dx, dy, 1 when it is above the ray's height
+-- (dy < 0: at most -2^-1074, times -2^1200 beyond 1), else 0, and its factor m of the bound.
+local function vertexFrom(points, k, x, y)
+  local dx, dy = points[k - 1] - x, points[k] - y
+  return dx, dy, min(1, max(0, dy * -2^600 * 2^600)), (abs(dx) + abs(dy)) * 2^-25 + 2^-475
+end
 
-  -- The edge from vertex j to vertex i added to the sums. g = 1: it crosses going down (from
-  -- above), -1: going up, 0: it does not cross; it counts when g det > 0 and det is certain.
-  local function addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
-    local g = aj - ai
-    local det = dxj * dyi - dyj * dxi
-    local c = g * g
-    return count + min(1, max(0, g * det * 2^1000)), worst + c * max(0, mj * mi - abs(det)),
-      total + det
-  end
+-- The edge from vertex j to vertex i added to the sums. g = 1: it crosses going down (from
+-- above), -1: going up, 0: it does not cross; it counts when g det > 0 and det is certain.
+local function addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
+  local g = aj - ai
+  local det = dxj * dyi - dyj * dxi
+  local c = g * g
+  return count + min(1, max(0, g * det * 2^1000)), worst + c * max(0, mj * mi - abs(det)),
+    total + det
+end
 
-  -- The next vertex, at points[k], and the edge into it from the last one (dxj, dyj, aj, mj).
-  local function step(points, k, x, y, count, worst, total, dxj, dyj, aj, mj)
-    local dxi, dyi, ai, mi = vertexFrom(points, k, x, y)
-    count, worst, total = addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
-    return count, worst, total, dxi, dyi, ai, mi
-  end
+-- The next vertex, at points[k], and the edge into it from the last one (dxj, dyj, aj, mj).
+local function step(points, k, x, y, count, worst, total, dxj, dyj, aj, mj)
+  local dxi, dyi, ai, mi = vertexFrom(points, k, x, y)
+  count, worst, total = addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
+  return count, worst, total, dxi, dyi, ai, mi
+end
 
-  -- The first three steps, to the vertices at flat indices 4, 6 and min(8, last), from vertex 1;
-  -- then four more, to those at min(k, last) to min(k + 6, last). last is n where the polygon
-  -- may end within the steps, else the constant UNCLAMPED, which LuaJIT folds with the
-  -- constant k into constant indices (min(k, n) for every index took 27 machine instructions
-  -- a call more, 744 against 717, cachegrind at trace seeds 1 to 3 on the cOrd queries).
-  local UNCLAMPED = 64
-  local function firstSteps(points, last, x, y, dx1, dy1, a1, m1)
-    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
-    return step(points, min(8, last), x, y, count, worst, total, dx, dy, a, m)
-  end
+-- The first three steps, to the vertices at flat indices 4, 6 and min(8, last), from vertex 1;
+-- then four more, to those at min(k, last) to min(k + 6, last). last is n where the polygon
+-- may end within the steps, else the constant UNCLAMPED, which LuaJIT folds with the
+-- constant k into constant indices (min(k, n) for every index took 27 machine instructions
+-- a call more, 744 against 717, cachegrind at trace seeds 1 to 3 on the cOrd queries).
+local UNCLAMPED = 64
+local function firstSteps(points, last, x, y, dx1, dy1, a1, m1)
+  local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
+  return step(points, min(8, last), x, y, count, worst, total, dx, dy, a, m)
+end
 
-  local function fourSteps(points, k, last, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      step(points, min(k, last), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      step(points, min(k + 2, last), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      step(points, min(k + 4, last), x, y, count, worst, total, dx, dy, a, m)
-    return step(points, min(k + 6, last), x, y, count, worst, total, dx, dy, a, m)
-  end
+local function fourSteps(points, k, last, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    step(points, min(k, last), x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    step(points, min(k + 2, last), x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    step(points, min(k + 4, last), x, y, count, worst, total, dx, dy, a, m)
+  return step(points, min(k + 6, last), x, y, count, worst, total, dx, dy, a, m)
+end
 
-  -- The edge back to vertex 1, then the answer, or containsByRuns' where a side is not certain.
-  local function lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-    if worst + total * 0 == 0 then return count % 2 == 1 end
-    local inside = containsByRuns(points, n, x, y)
-    return inside
-  end
+-- The edge back to vertex 1, then the answer, or containsByRuns' where a side is not certain.
+local function lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+  count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+  if worst + total * 0 == 0 then return count % 2 == 1 end
+  local inside = containsByRuns(points, n, x, y)
+  return inside
+end
 
-  containsShort4 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, n, x, y, dx1, dy1, a1, m1)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort4(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, n, x, y, dx1, dy1, a1, m1)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+end
 
-  containsShort8 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m = fourSteps(points, 10, n, x, y, count, worst, total, dx, dy, a, m)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort8(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m = fourSteps(points, 10, n, x, y, count, worst, total, dx, dy, a, m)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+end
 
-  containsShort12 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m =
-      fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = fourSteps(points, 18, n, x, y, count, worst, total, dx, dy, a, m)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort12(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m =
+    fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m = fourSteps(points, 18, n, x, y, count, worst, total, dx, dy, a, m)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+end
 
-  containsShort16 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m =
-      fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      fourSteps(points, 18, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = fourSteps(points, 26, n, x, y, count, worst, total, dx, dy, a, m)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort16(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m =
+    fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    fourSteps(points, 18, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m = fourSteps(points, 26, n, x, y, count, worst, total, dx, dy, a, m)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
 end
 
 -- The O(1) checks of polygonContains and Polygon:contains, raised at their callers' lines
@@ -298,6 +295,11 @@ end
 M.polygonContains = polygonContains
 
 M.checkQuery = checkQuery
+M.containsByRuns = containsByRuns
+M.containsShort4 = containsShort4
+M.containsShort8 = containsShort8
+M.containsShort12 = containsShort12
+M.containsShort16 = containsShort16
 M.polygonContains = polygonContains
 
 return M
