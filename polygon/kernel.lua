@@ -28,15 +28,14 @@ local M = {}
 -- and math.abs included) and little for a branch; LuaJIT compiles min, max and abs to single
 -- instructions, and turns every branch that goes both ways into a side trace, whose number is
 -- limited (100 per loop, 1000 in all by default). Where that matters a function has two bodies
--- computing the same numbers, chosen once by JIT below; the LuaJIT bodies keep few values alive
--- across their loops, since a side trace leaving a loop must take them all over in registers,
--- and avoid short inner loops: a loop of a few steps (a polygon's vertices) often fails to
--- become a trace of its own, and other traces then copy it unrolled, with a side exit for every
--- other polygon size (so the SAT's hot paths read up to 8 vertices in one expression, the last
--- one repeated for fewer, and run flat over (edge, vertex) pairs beyond; a short loop has no
--- data-dependent exit but its last; `bash bench/aborts.sh` counts what LuaJIT still aborts).
--- The PUC bodies count instructions instead
--- (`lua5.4 bench/instructions.lua`): the two-sided SAT walks both polygons' edges at once
+-- computing the same numbers side by side, XJit and XPuc, one line choosing by JIT below
+-- (spec/bodies_sat_spec.lua runs both on every interpreter); the LuaJIT bodies keep few values
+-- alive across their loops, since a side trace leaving a loop must take them all over in
+-- registers, and avoid short inner loops: a loop of a few steps (a polygon's vertices) often
+-- fails to become a trace of its own, and other traces then copy it unrolled, with a side exit
+-- for every other polygon size (so the SAT's hot paths read up to 8 vertices in one expression,
+-- the last one repeated for fewer, and run flat over (edge, vertex) pairs beyond). The PUC
+-- bodies save instructions instead: the two-sided SAT walks both polygons' edges at once
 -- (rotating calipers), one projection an edge, where LuaJIT projects every pair.
 --
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
@@ -297,9 +296,7 @@ end
 -- v turns clockwise from u on screen. orient(a, b, c) is cross(a, b, a, c).
 -- The filter: det = l - r is certain when |det| >= CROSS_BOUND (|l| + |r|) (Shewchuk's bound;
 -- when l and r differ in sign or one is zero no cancellation happens and that always holds).
--- Two bodies computing the same test: on PUC Lua the signs of l and r are compared first (abs
--- is a call there); on LuaJIT abs is one instruction and the single branch leaves loops that
--- call cross with one side exit instead of five.
+-- Two bodies computing the same test, side by side.
 -- LuaJIT's: abs is one instruction, and one branch leaves a calling loop one side exit.
 local function crossJit(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
   local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)

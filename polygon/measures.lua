@@ -132,6 +132,8 @@ end
 -- 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the x differences'
 -- TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4 (interleaved rounds on
 -- bench/workloads.lua's ordinary polygons).
+-- It stays one function (about 340 lines, half of them the proofs of its tests): each split is
+-- the per-call hot path of its size, and a call per path costs PUC Lua more than the test.
 -- @return area; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function M.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
@@ -595,6 +597,7 @@ local function typeFiltered(points, n)
   if lo < -bound and hi > bound then return "concave" end
   return false
 end
+-- LuaJIT's: typeFiltered's branch-free pass (min, max and abs are single instructions there).
 local function polygonTypeJit(points)
   local n = checkPoints(points, "polygonType")
   if n < 6 then return nil end
@@ -622,6 +625,9 @@ end
 -- tutorial's 132), lua5.4 bench/run.lua --only '^polygonType ord$' 1.5-1.6 -> 1.35-1.4;
 -- walking a polygon with a negative first turn backwards instead of flipping y took 167
 -- (a longer start than the loop saves on 4 to 16 vertices).
+-- polygonTypePuc stays whole (about 100 lines): its loop is the hot path, and a call per step or
+-- per part would cost more than the turns it takes.
+-- PUC Lua's: one branchy pass, one comparison per turn, as calls cost more than branches.
 local function polygonTypePuc(points)
   if type(points) ~= "table" then checkPoints(points, "polygonType") end
   local n = #points

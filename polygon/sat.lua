@@ -38,11 +38,10 @@ end
 -- The range of the projections nx (vx - ax) + ny (vy - ay) over the vertices of points.
 -- LuaJIT compiles math.min and math.max to single branch-free instructions, where the unpredictable
 -- comparisons would cost it most of the loop; the PUC interpreters call them as functions, so for
--- them plain comparisons are faster. The two bodies compute the same numbers. On LuaJIT
--- minProjection is projectRange itself (the max costs one instruction): a loop of 6 to 8 steps
--- often fails to become a trace of its own ("leaving loop in root trace"), and other traces then
--- copy it unrolled, with side exits for every polygon size; one loop for every projection is
--- compiled sooner, from any of its callers.
+-- them plain comparisons are faster. The two bodies compute the same numbers. LuaJIT's
+-- returns the whole range (projectRange): one loop for every projection is compiled sooner, from
+-- any of its callers, than a short loop of its own.
+-- LuaJIT's: the whole range by min and max, one loop (projectRange) for every projection.
 local function minProjectionJit(points, n, ax, ay, nx, ny)
   local lo, hi = huge, -huge
   for i = 1, n - 1, 2 do
@@ -52,6 +51,7 @@ local function minProjectionJit(points, n, ax, ay, nx, ny)
   return lo, hi
 end
 
+-- PUC Lua's: the least by comparisons, as math.min and math.max are calls there.
 local function minProjectionPuc(points, n, ax, ay, nx, ny)
   local lo = huge
   for i = 1, n - 1, 2 do
@@ -157,6 +157,9 @@ local function onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
   return unsafe, max(pSign, qSign)
 end
 
+-- vertexInsideJit stays whole (about 120 lines, 8 vertices written out): a step function per
+-- vertex brought LuaJIT's trace aborts back.
+-- LuaJIT's: branch-free passes, then onLineSigns for at most two vertices (see above).
 local function vertexInsideJit(ax, ay, bx, by, cx, cy, inside, points, n)
   cx, cy = cx + 0.0, cy + 0.0
   local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
@@ -278,6 +281,7 @@ local function vertexInsideJit(ax, ay, bx, by, cx, cy, inside, points, n)
   return found > 0
 end
 
+-- PUC Lua's: one pass that returns at the first vertex surely inside (see above).
 local function vertexInsidePuc(ax, ay, bx, by, cx, cy, inside, points, n)
   cx, cy = cx + 0.0, cy + 0.0
   local ex, ey = ((bx + 0.0) - ax) * inside, ((by + 0.0) - ay) * inside
@@ -491,10 +495,13 @@ end
 -- within that of the deepest along its normal; a run of such edges errs by less than 3 eps
 -- |e| times their length, so the projections err by less than 8 eps |n| sqrt(spanX^2 +
 -- spanY^2) in all (4 of them the projection's rounding), inside tolSq; where they pass it,
--- the two bodies agree. On Lua 5.4 polygonsCollideV takes 1,229 VM instructions per call of
--- the benchmark's mixed pairs with it, 1,297 with a calipers walk per polygon (the tutorial:
--- 1,865). (On LuaJIT the choice of edge, a data-dependent branch per edge, would be a side
--- trace, as the walks' exits were.)
+-- reachBoth and reachPast (both ways) give the same verdict. Their numbers are the same bit for
+-- bit when both polygons wind the same way; otherwise p2's edges are projected from their other
+-- end here, which changes the last bits (spec/bodies_sat_spec.lua). One walk over both
+-- polygons, not one each: fewer instructions. (On LuaJIT the choice of edge, a data-dependent
+-- branch per edge, would be a side trace, as the walks' exits were.)
+-- reachBoth stays whole (about 110 lines): it is the hot loop of every PUC collision, and a call
+-- per step costs more than the step.
 
 -- Whether other reaches past the edge of `edges` ending at vertex index k, decided exactly.
 local function edgeReached(edges, ne, turn, other, no, k)
@@ -631,6 +638,7 @@ end
 -- edge loop flat over (edge, vertex) pairs, as reachPast's, with the verdicts after it, took
 -- 0.99-1.68 (mostly above 1.4); each polygon's eight projections as one expression, with no
 -- inner loop, 0.71-1.68, with 735 to 2,460 of those aborts a run.
+-- LuaJIT's: one loop over both polygons, 8 steps for up to 8 vertices.
 local function faceAndFarJit(edges, ne, other, no, ax, ay, nx, ny)
   local lo, hi, own = huge, -huge, huge
   -- (a trace taking the first choice records the literal 15: a constant count)
@@ -647,6 +655,7 @@ end
 -- projectRange's and minProjection's loops written out, not called: two calls an edge
 -- (polygonCollidesWith on Lua 5.4, the benchmark's mixed pairs: 1,614 VM instructions per
 -- call with the calls, 1,531 without, `lua5.4 bench/instructions.lua polygonCollidesWith`)
+-- PUC Lua's: minProjection's and projectRange's loops written out, two calls an edge fewer.
 local function faceAndFarPuc(edges, ne, other, no, ax, ay, nx, ny)
   local lo, hi = huge, -huge
   for i = 1, no - 1, 2 do
@@ -738,6 +747,7 @@ end
 -- taken for half of all directions, were side traces of the callers' big traces; max(|ny|, |nx|)
 -- keeps |ny| on ties, as the branch did); comparisons on PUC Lua, where abs and max are three
 -- C calls (|x| of -0 is -0 there, never the larger of the two: (nx, ny) is not (0, 0)).
+-- LuaJIT's: max and abs, no branch.
 local function unitJit(nx, ny)
   local m = max(abs(ny), abs(nx))
   nx, ny = nx / m, ny / m
@@ -745,6 +755,7 @@ local function unitJit(nx, ny)
   return nx / len, ny / len, len * m
 end
 
+-- PUC Lua's: comparisons, where abs and max are C calls.
 local function unitPuc(nx, ny)
   local m = ny < 0 and -ny or ny
   local mx = nx < 0 and -nx or nx
@@ -775,6 +786,8 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 --     that p2 must move, and the line the move must clear, for separatingPush: in polygon
 --     `owner` (1 or 2), the edge ending at vertex index edgeEnd moved to pass through vertex
 --     index base, with `inside` the cross product's sign on the side the other must leave.
+-- It stays whole (about 110 lines): the per-frame path of every collision, its LuaJIT and PUC
+-- set-ups inline so that only the turns and spans stay alive at the box test's exit.
 local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   if n1 < 6 or n2 < 6 then return false end
   -- Each polygon's turn, the sign of its area decided exactly, 1 or -1 (zero area never
@@ -986,6 +999,7 @@ local PUSH_ROUNDS = 64
 -- 5.4, 313 so (`lua5.4 bench/instructions.lua`, the push's share counted by a count hook). Each
 -- vertex from q only, as on LuaJIT (the same pushes): overlapping pairs 1,374 -> 1,368 VM
 -- instructions a call, mixed 876 -> 875.
+-- LuaJIT's: the check by lineShortfall, the first push's margin without a branch.
 local function separatingPushJit(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
   if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
   local lines, nl, others, no, lineMoves = p1, n1, p2, n2, 0.0
@@ -1018,6 +1032,7 @@ local function separatingPushJit(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, 
   return depth, ux * depth + 0.0, uy * depth + 0.0
 end
 
+-- PUC Lua's: the check written out in the loop, its filter first without abs.
 local function separatingPushPuc(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
   if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
   local lines, nl, points, n, lineMoves = p1, n1, p2, n2, 0.0
