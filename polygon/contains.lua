@@ -20,29 +20,23 @@ local M = {}
 -- The walk carries whether the last vertex was at or below the ray's height (y >= the ray's y,
 -- screen down) and reads an edge's x coordinates only where it crosses. x and y are converted
 -- (+ 0.0), and so is every coordinate the walks subtract (cross converts its own), so that Lua
--- 5.3+ integers count as the doubles they convert to. Two walks, computing the same answer:
+-- 5.3+ integers count as the doubles they convert to. Two walks, computing the same answer
+-- (spec/bodies_sat_spec.lua compares them, and containsShort4 to containsShort16, below):
 -- - containsByRuns, LuaJIT's (and PUC Lua's for |x| or |y| >= 2^53): the vertices come in runs
 --   on one side of the ray's height, each walked by one numeric for loop with one comparison
 --   per vertex, the same loop for both sides (a sign picks the side), so that LuaJIT's trace
 --   of it is the walk that crosses nothing, whatever vertex it was recorded on; a crossing is
 --   its side exit, counted without a branch by crossingCounts, and the walk goes on in the same
---   loop. Measured on LuaJIT (luajit bench/run.lua --only '^polygonContains cOrd', ten runs
---   each, medians): the previous walk, an inner while loop computing at-or-below as the number
---   min(1, max(0, (y' - y) 2^1200 + 1)) per vertex, 0.87; this loop as a repeat-until with a
---   floating-point index, 0.82; as a for loop (an integer index, bounds checks hoisted), 0.80.
---   A loop of its own for each side ran 0.63 to 0.8 in most runs but 4 to 6 times the
---   tutorial's time in 4 of 14: when one of the two short loops failed to become a trace
---   ("leaving loop in root trace"), the side traces of the other copied it unrolled, one per
---   run length, until LuaJIT gave up and interpreted. The loop with a branch per comparison
---   grew a tree of side traces that passed LuaJIT's limit of 100 per loop in some runs; one
---   loop over all vertices without a branch (the side test of every edge) took 1.07.
--- - PUC Lua's, written out in polygonContains (a call to it cost 0.03 of the tutorial's time on
---   Lua 5.4): per vertex one read and two comparisons, and at a crossing the x coordinates
+--   loop. One loop for both sides, not one each: when one of two short loops failed to become
+--   a trace, the other's side traces copied it unrolled, one per run length, until LuaJIT gave
+--   up.
+-- - PUC Lua's, written out in polygonContains (no call: a call costs more than a vertex's
+--   work): per vertex one read and two comparisons, and at a crossing the x coordinates
 --   compared with x first, the side test (a call of cross) only when x lies between them. The
---   coordinates are compared as they are, not converted (an instruction less each: 0.96 to 0.87
---   times the tutorial's time on Lua 5.4 for y): comparing a Lua 5.3+ integer with a double
---   below 2^53 in magnitude gives the converted integer's answer (the integer is then compared
---   as its exact double, or it is beyond 2^53 and so is its conversion, on the same side).
+--   coordinates are compared as they are, not converted (an instruction less each): comparing
+--   a Lua 5.3+ integer with a double below 2^53 in magnitude gives the converted integer's
+--   answer (the integer is then compared as its exact double, or it is beyond 2^53 and so is
+--   its conversion, on the same side).
 local containsByRuns
 do
   -- 1 when the edge from vertex j to vertex i, which crosses the ray's height going down
@@ -54,10 +48,8 @@ do
     local l, r = (x2 - x1) * (y - y1), (y2 - y1) * (x - x1)
     local side = l - r   -- its sign: cross(x1, y1, x2, y2, x1, y1, x, y)
     if not (abs(side) >= CROSS_BOUND * (abs(l) + abs(r))) then   -- luacheck: ignore 581
-      -- (NaN and overflow too) through cross, not crossExact directly: called here, the side
-      -- traces of crossExact's first branch failed to compile ("NYI: register coalescing too
-      -- complex") and points near edges took 7 to 80 times the tutorial's time, 4 to 5 this way
-      -- (luajit bench/run.lua --only 'polygonContains cEdge')
+      -- (NaN and overflow too) through cross, not crossExact directly: the side traces of
+      -- crossExact's first branch failed to compile when called from here
       side = cross(x1, y1, x2, y2, x1, y1, x, y)
     end
     return min(1, max(0, dir * side * 2^600 + 1))
@@ -68,9 +60,8 @@ do
     -- with (y' - y) 2^600 < 0; a run above it (sign = -2^600, tie = 2^-500) at one with
     -- -(y' - y) 2^600 < 2^-500, that is y' - y >= 0 (a nonzero difference of doubles is at least
     -- 2^-1074). The edge into that vertex crosses, going up after a run at or below (dir =
-    -- -sign), down after one above. The numbers stay clear of subnormals, slow on x86 (with a
-    -- tie of 2^-1074 the row took 1.2 to 1.3 times the tutorial's time, with 2^-500 about
-    -- 0.84). y' - y converts a Lua 5.3+ integer y'.
+    -- -sign), down after one above. The numbers stay clear of subnormals, slow on x86 (a tie
+    -- of 2^-1074 is a subnormal). y' - y converts a Lua 5.3+ integer y'.
     local above = min(1, max(0, (y - points[n]) * 2^600 * 2^600))   -- vertex n above: 1, else 0
     local sign, tie = (1 - 2 * above) * 2^600, above * 2^-500
     local crossings, i = 0, 0   -- vertex i = 0 stands for vertex n
@@ -107,119 +98,94 @@ end
 -- the roundings of the bound's own terms) and at least 2^-950 (so that products that underflow,
 -- off by at most 2^-1075 each, stay within that room); the factors m = (|dx| + |dy|) 2^-25 +
 -- 2^-475 are taken once per vertex. A certain determinant is then at least 2^-950, so that
--- g det 2^1000 clamps to 1 or 0 exactly. Measured with `TRACE_SEED=N LD_PRELOAD=/tmp/fixseed.so
--- setarch -R luajit bench/run.lua --only '^polygonContains cOrd$' --draws 1` (bench/fixseed.c),
--- N = 1..20: M.lua's side 48 to 54 ns in each (single runs up to 70 when the machine was
--- busy, the tutorial's side as slow then), where containsByRuns took 55 to 66 (the tutorial's
--- between 58 and 88); `--draws 8`: 0.72 and 0.74 of the tutorial's time (48 and 49 ns; process
--- medians 0.58 to 0.85), not 0.84 and 0.87 (56 and 60 ns).
--- Timed alone over the same queries (a loop of calls, the least of 30 passes), 8 vertices take
--- about 32 ns, 16 about 57, containsByRuns 42 to 60 at every size.
--- Tried and dropped:
--- - containsShort8 alone (4 to 8 vertices), containsByRuns for 9 to 16: as fast in most runs,
---   but in 1 of 10 (seed 6 of `--only '^polygonContains'`) 100 to 115 ns: the side exit for n > 16
---   reached containsByRuns' loops before they were traces, failed ("loop unroll limit reached",
---   "trace too long") and was left to the interpreter; the straight-line code has no loop to
---   wait for. A 10-vertex version alone: 1.4 times the tutorial's time in 1 of 20 seeds.
--- - the same step in a for loop over the vertices: 67 ns on 9 to 16 vertices, not 57.
--- - the vertices read before the edges (32 values live): spilled to the stack, 33.0 ns on 3 to 8
---   vertices where edge after vertex takes 32.1.
--- - worst as a max: 0 times an infinite bound is NaN, which math.max(worst, NaN) returned and
---   the next max dropped, with the worst before it (a wrong answer for a vertex at y = 1e308 among
---   ones near 1e-319); the sum keeps it, and then containsByRuns decides.
--- - without containsShort4 (quadrilaterals through containsShort8): the tiles (cTiles, every call
---   falling back) 61 to 102 ns, 45 to 79 with it.
--- Points on or near edges pay for both walks: `--only '^polygonContains'` took the tiles 45 to 79
--- ns where containsByRuns alone took 44 to 72, and the points near edges (cEdge) 73 to 107 where
--- it took 66 to 104 (both rows noisy from run to run, on either side).
-local containsShort4, containsShort8, containsShort12, containsShort16
-if JIT then
-  -- Vertex k (its y at points[k]) relative to (x, y): dx, dy, 1 when it is above the ray's height
-  -- (dy < 0: at most -2^-1074, times -2^1200 beyond 1), else 0, and its factor m of the bound.
-  local function vertexFrom(points, k, x, y)
-    local dx, dy = points[k - 1] - x, points[k] - y
-    return dx, dy, min(1, max(0, dy * -2^600 * 2^600)), (abs(dx) + abs(dy)) * 2^-25 + 2^-475
-  end
+-- g det 2^1000 clamps to 1 or 0 exactly. Straight-line code, not a loop: a loop of a few steps
+-- often fails to become a trace of its own, and the traces reaching it then copy it unrolled,
+-- with a side exit for every other size. worst is a sum, not a max: 0 times an infinite bound
+-- is NaN, which a max can drop (a wrong answer); the sum keeps it, and containsByRuns decides.
+-- Vertex k (its y at points[k]) relative to (x, y): dx, dy, 1 when it is above the ray's height
+-- (dy < 0: at most -2^-1074, times -2^1200 beyond 1), else 0, and its factor m of the bound.
+local function vertexFrom(points, k, x, y)
+  local dx, dy = points[k - 1] - x, points[k] - y
+  return dx, dy, min(1, max(0, dy * -2^600 * 2^600)), (abs(dx) + abs(dy)) * 2^-25 + 2^-475
+end
 
-  -- The edge from vertex j to vertex i added to the sums. g = 1: it crosses going down (from
-  -- above), -1: going up, 0: it does not cross; it counts when g det > 0 and det is certain.
-  local function addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
-    local g = aj - ai
-    local det = dxj * dyi - dyj * dxi
-    local c = g * g
-    return count + min(1, max(0, g * det * 2^1000)), worst + c * max(0, mj * mi - abs(det)),
-      total + det
-  end
+-- The edge from vertex j to vertex i added to the sums. g = 1: it crosses going down (from
+-- above), -1: going up, 0: it does not cross; it counts when g det > 0 and det is certain.
+local function addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
+  local g = aj - ai
+  local det = dxj * dyi - dyj * dxi
+  local c = g * g
+  return count + min(1, max(0, g * det * 2^1000)), worst + c * max(0, mj * mi - abs(det)),
+    total + det
+end
 
-  -- The next vertex, at points[k], and the edge into it from the last one (dxj, dyj, aj, mj).
-  local function step(points, k, x, y, count, worst, total, dxj, dyj, aj, mj)
-    local dxi, dyi, ai, mi = vertexFrom(points, k, x, y)
-    count, worst, total = addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
-    return count, worst, total, dxi, dyi, ai, mi
-  end
+-- The next vertex, at points[k], and the edge into it from the last one (dxj, dyj, aj, mj).
+local function step(points, k, x, y, count, worst, total, dxj, dyj, aj, mj)
+  local dxi, dyi, ai, mi = vertexFrom(points, k, x, y)
+  count, worst, total = addEdge(count, worst, total, dxj, dyj, aj, mj, dxi, dyi, ai, mi)
+  return count, worst, total, dxi, dyi, ai, mi
+end
 
-  -- The first three steps, to the vertices at flat indices 4, 6 and min(8, last), from vertex 1;
-  -- then four more, to those at min(k, last) to min(k + 6, last). last is n where the polygon
-  -- may end within the steps, else the constant UNCLAMPED, which LuaJIT folds with the
-  -- constant k into constant indices (min(k, n) for every index took 27 machine instructions
-  -- a call more, 744 against 717, cachegrind at trace seeds 1 to 3 on the cOrd queries).
-  local UNCLAMPED = 64
-  local function firstSteps(points, last, x, y, dx1, dy1, a1, m1)
-    local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
-    return step(points, min(8, last), x, y, count, worst, total, dx, dy, a, m)
-  end
+-- The first three steps, to the vertices at flat indices 4, 6 and min(8, last), from vertex 1;
+-- then four more, to those at min(k, last) to min(k + 6, last). last is n where the polygon
+-- may end within the steps, else the constant UNCLAMPED, which LuaJIT folds with the
+-- constant k into constant indices (fewer machine instructions than min(k, n) everywhere).
+local UNCLAMPED = 64
+local function firstSteps(points, last, x, y, dx1, dy1, a1, m1)
+  local count, worst, total, dx, dy, a, m = step(points, 4, x, y, 0, 0, 0, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m = step(points, 6, x, y, count, worst, total, dx, dy, a, m)
+  return step(points, min(8, last), x, y, count, worst, total, dx, dy, a, m)
+end
 
-  local function fourSteps(points, k, last, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      step(points, min(k, last), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      step(points, min(k + 2, last), x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      step(points, min(k + 4, last), x, y, count, worst, total, dx, dy, a, m)
-    return step(points, min(k + 6, last), x, y, count, worst, total, dx, dy, a, m)
-  end
+local function fourSteps(points, k, last, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    step(points, min(k, last), x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    step(points, min(k + 2, last), x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    step(points, min(k + 4, last), x, y, count, worst, total, dx, dy, a, m)
+  return step(points, min(k + 6, last), x, y, count, worst, total, dx, dy, a, m)
+end
 
-  -- The edge back to vertex 1, then the answer, or containsByRuns' where a side is not certain.
-  local function lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-    count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-    if worst + total * 0 == 0 then return count % 2 == 1 end
-    local inside = containsByRuns(points, n, x, y)
-    return inside
-  end
+-- The edge back to vertex 1, then the answer, or containsByRuns' where a side is not certain.
+local function lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+  count, worst, total = addEdge(count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+  if worst + total * 0 == 0 then return count % 2 == 1 end
+  local inside = containsByRuns(points, n, x, y)
+  return inside
+end
 
-  containsShort4 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, n, x, y, dx1, dy1, a1, m1)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort4(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, n, x, y, dx1, dy1, a1, m1)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+end
 
-  containsShort8 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m = fourSteps(points, 10, n, x, y, count, worst, total, dx, dy, a, m)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort8(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m = fourSteps(points, 10, n, x, y, count, worst, total, dx, dy, a, m)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+end
 
-  containsShort12 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m =
-      fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = fourSteps(points, 18, n, x, y, count, worst, total, dx, dy, a, m)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort12(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m =
+    fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m = fourSteps(points, 18, n, x, y, count, worst, total, dx, dy, a, m)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
+end
 
-  containsShort16 = function(points, n, x, y)
-    local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
-    local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
-    count, worst, total, dx, dy, a, m =
-      fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m =
-      fourSteps(points, 18, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
-    count, worst, total, dx, dy, a, m = fourSteps(points, 26, n, x, y, count, worst, total, dx, dy, a, m)
-    return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
-  end
+local function containsShort16(points, n, x, y)
+  local dx1, dy1, a1, m1 = vertexFrom(points, 2, x, y)
+  local count, worst, total, dx, dy, a, m = firstSteps(points, UNCLAMPED, x, y, dx1, dy1, a1, m1)
+  count, worst, total, dx, dy, a, m =
+    fourSteps(points, 10, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m =
+    fourSteps(points, 18, UNCLAMPED, x, y, count, worst, total, dx, dy, a, m)
+  count, worst, total, dx, dy, a, m = fourSteps(points, 26, n, x, y, count, worst, total, dx, dy, a, m)
+  return lastEdge(points, n, x, y, count, worst, total, dx, dy, a, m, dx1, dy1, a1, m1)
 end
 
 -- The O(1) checks of polygonContains and Polygon:contains, raised at their callers' lines
@@ -241,7 +207,7 @@ end
 -- finite (an error otherwise); the polygon's coordinates are not checked (validate does that).
 -- @return true or false; false for fewer than 3 points.
 local function polygonContains(points, x, y)
-  -- the checks written out where they pass (a Lua call costs about 13 ns on Lua 5.4)
+  -- the checks written out where they pass (a Lua call costs more than them)
   local n = type(points) == "table" and #points or -1
   if n % 2 ~= 0 or type(x) ~= "number" or type(y) ~= "number" or x - x ~= 0 or y - y ~= 0 then
     checkQuery("polygonContains", points, x, y, 3)
@@ -298,6 +264,11 @@ end
 M.polygonContains = polygonContains
 
 M.checkQuery = checkQuery
+M.containsByRuns = containsByRuns
+M.containsShort4 = containsShort4
+M.containsShort8 = containsShort8
+M.containsShort12 = containsShort12
+M.containsShort16 = containsShort16
 M.polygonContains = polygonContains
 
 return M

@@ -28,15 +28,14 @@ local M = {}
 -- and math.abs included) and little for a branch; LuaJIT compiles min, max and abs to single
 -- instructions, and turns every branch that goes both ways into a side trace, whose number is
 -- limited (100 per loop, 1000 in all by default). Where that matters a function has two bodies
--- computing the same numbers, chosen once by JIT below; the LuaJIT bodies keep few values alive
--- across their loops, since a side trace leaving a loop must take them all over in registers,
--- and avoid short inner loops: a loop of a few steps (a polygon's vertices) often fails to
--- become a trace of its own, and other traces then copy it unrolled, with a side exit for every
--- other polygon size (so the SAT's hot paths read up to 8 vertices in one expression, the last
--- one repeated for fewer, and run flat over (edge, vertex) pairs beyond; a short loop has no
--- data-dependent exit but its last; `bash bench/aborts.sh` counts what LuaJIT still aborts).
--- The PUC bodies count instructions instead
--- (`lua5.4 bench/instructions.lua`): the two-sided SAT walks both polygons' edges at once
+-- computing the same numbers side by side, XJit and XPuc, one line choosing by JIT below
+-- (spec/bodies_sat_spec.lua runs both on every interpreter); the LuaJIT bodies keep few values
+-- alive across their loops, since a side trace leaving a loop must take them all over in
+-- registers, and avoid short inner loops: a loop of a few steps (a polygon's vertices) often
+-- fails to become a trace of its own, and other traces then copy it unrolled, with a side exit
+-- for every other polygon size (so the SAT's hot paths read up to 8 vertices in one expression,
+-- the last one repeated for fewer, and run flat over (edge, vertex) pairs beyond). The PUC
+-- bodies save instructions instead: the two-sided SAT walks both polygons' edges at once
 -- (rotating calipers), one projection an edge, where LuaJIT projects every pair.
 --
 -- Exactness holds while no product overflows or underflows: every nonzero coordinate between
@@ -297,38 +296,37 @@ end
 -- v turns clockwise from u on screen. orient(a, b, c) is cross(a, b, a, c).
 -- The filter: det = l - r is certain when |det| >= CROSS_BOUND (|l| + |r|) (Shewchuk's bound;
 -- when l and r differ in sign or one is zero no cancellation happens and that always holds).
--- Two bodies computing the same test: on PUC Lua the signs of l and r are compared first (abs
--- is a call there); on LuaJIT abs is one instruction and the single branch leaves loops that
--- call cross with one side exit instead of five.
-local cross
-if JIT then
-  cross = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-    local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
-    local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
-    local det = l - r
-    if abs(det) >= CROSS_BOUND * (abs(l) + abs(r)) then return det end
-    return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-  end
-else
-  cross = function(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-    local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
-    local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
-    local det = l - r
-    local sum
-    if l > 0 then
-      if r <= 0 then return det end
-      sum = l + r
-    elseif l < 0 then
-      if r >= 0 then return det end
-      sum = -l - r
-    else
-      return det
-    end
-    local bound = CROSS_BOUND * sum
-    if det >= bound or -det >= bound then return det end
-    return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
-  end
+-- Two bodies computing the same test, side by side.
+-- LuaJIT's: abs is one instruction, and one branch leaves a calling loop one side exit.
+local function crossJit(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+  local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
+  local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
+  local det = l - r
+  if abs(det) >= CROSS_BOUND * (abs(l) + abs(r)) then return det end
+  return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
 end
+
+-- PUC Lua's: the signs of l and r compared first, as abs is a call there.
+local function crossPuc(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+  local l = ((ux1 + 0.0) - ux0) * ((vy1 + 0.0) - vy0)
+  local r = ((uy1 + 0.0) - uy0) * ((vx1 + 0.0) - vx0)
+  local det = l - r
+  local sum
+  if l > 0 then
+    if r <= 0 then return det end
+    sum = l + r
+  elseif l < 0 then
+    if r >= 0 then return det end
+    sum = -l - r
+  else
+    return det
+  end
+  local bound = CROSS_BOUND * sum
+  if det >= bound or -det >= bound then return det end
+  return crossExact(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1)
+end
+
+local cross = JIT and crossJit or crossPuc
 
 -- Twice the signed area of points[1..n] (n = #points >= 6), with what its error bound needs.
 -- The x coordinates are taken relative to the first vertex so the offset of a polygon does not
@@ -360,60 +358,57 @@ end
 -- functions, so there comparisons are faster, and the area's sign is decided in the same call:
 -- turnAndBounds, below. LuaJIT's xSq and dSq up to 8 vertices bound the sums by the box, as
 -- turnAndBounds does, which changes only how often areaSignOf needs its exact path, never its sign.
-local shoelaceBounds
-if JIT then
-  -- Beyond 8 vertices a loop. The first vertex and the previous one are read from points in
-  -- every step (LuaJIT hoists the first and forwards the previous): only the seven sums cross
-  -- from one step to the next, so a side trace that leaves the loop midway inherits few values
-  -- (see lineShortfall).
-  local shoelaceBoundsLoop = function(points, n)
-    local sum, xSq, dSq = 0.0, 0.0, 0.0
-    local xmin, xmax, ymin, ymax = points[1] + 0.0, points[1] + 0.0, points[2] + 0.0, points[2] + 0.0
-    for i = 3, n - 1, 2 do
-      local x0 = points[1] + 0.0
-      local vx, y = points[i] + 0.0, points[i + 1] + 0.0
-      local px, py = points[i - 2] - x0, points[i - 1] + 0.0
-      local x, d = vx - x0, y - py
-      sum = sum + (px + x) * d
-      xSq, dSq = xSq + x * x, dSq + d * d
-      xmin, xmax, ymin, ymax = min(xmin, vx), max(xmax, vx), min(ymin, y), max(ymax, y)
-    end
-    local d = (points[2] + 0.0) - points[n]
-    return sum + (points[n - 1] - points[1]) * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
+-- Beyond 8 vertices a loop. The first vertex and the previous one are read from points in
+-- every step (LuaJIT hoists the first and forwards the previous): only the seven sums cross
+-- from one step to the next, so a side trace that leaves the loop midway inherits few values
+-- (see lineShortfall).
+local function shoelaceBoundsLoop(points, n)
+  local sum, xSq, dSq = 0.0, 0.0, 0.0
+  local xmin, xmax, ymin, ymax = points[1] + 0.0, points[1] + 0.0, points[2] + 0.0, points[2] + 0.0
+  for i = 3, n - 1, 2 do
+    local x0 = points[1] + 0.0
+    local vx, y = points[i] + 0.0, points[i + 1] + 0.0
+    local px, py = points[i - 2] - x0, points[i - 1] + 0.0
+    local x, d = vx - x0, y - py
+    sum = sum + (px + x) * d
+    xSq, dSq = xSq + x * x, dSq + d * d
+    xmin, xmax, ymin, ymax = min(xmin, vx), max(xmax, vx), min(ymin, y), max(ymax, y)
   end
-  shoelaceBounds = function(points, n)
-    if n > 16 then
-      local sum, xSq, dSq, xmin, xmax, ymin, ymax = shoelaceBoundsLoop(points, n)
-      return sum, xSq, dSq, xmin, xmax, ymin, ymax
-    end
-    -- Up to 8 vertices no loop: a loop of 3 to 8 steps is a trace of its own whose entry and
-    -- exit cost more than its steps (a miss, decided by the boxes, took 0.27 to 0.32 of the
-    -- tutorial's time with the loop, 0.12 to 0.16 without: `luajit bench/isolated.lua
-    -- polygonsCollideV miss`). Vertices 2 to 8, the last one repeated for fewer (its edges add
-    -- 0 to the sum); the sum in pairs, as a tree, where the loop's is a chain.
-    -- (vertices 2 and 3 at constant indices: convexPenetration, the one caller, hands on 3
-    -- vertices or more)
-    local x1, y1 = points[1] + 0.0, points[2] + 0.0
-    local x2, y2 = points[3] + 0.0, points[4] + 0.0
-    local x3, y3 = points[5] + 0.0, points[6] + 0.0
-    local j = min(7, n - 1)
-    local x4, y4 = points[j] + 0.0, points[j + 1] + 0.0
-    j = min(9, n - 1)
-    local x5, y5 = points[j] + 0.0, points[j + 1] + 0.0
-    j = min(11, n - 1)
-    local x6, y6 = points[j] + 0.0, points[j + 1] + 0.0
-    j = min(13, n - 1)
-    local x7, y7 = points[j] + 0.0, points[j + 1] + 0.0
-    local x8, y8 = points[n - 1] + 0.0, points[n] + 0.0
-    local xmin, xmax = min(x1, x2, x3, x4, x5, x6, x7, x8), max(x1, x2, x3, x4, x5, x6, x7, x8)
-    local ymin, ymax = min(y1, y2, y3, y4, y5, y6, y7, y8), max(y1, y2, y3, y4, y5, y6, y7, y8)
-    x2, x3, x4, x5, x6, x7, x8 = x2 - x1, x3 - x1, x4 - x1, x5 - x1, x6 - x1, x7 - x1, x8 - x1
-    local sum = ((x2 * (y2 - y1) + (x2 + x3) * (y3 - y2)) + ((x3 + x4) * (y4 - y3)
-      + (x4 + x5) * (y5 - y4))) + (((x5 + x6) * (y6 - y5) + (x6 + x7) * (y7 - y6))
-      + ((x7 + x8) * (y8 - y7) + x8 * (y1 - y8)))
-    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
-    return sum, m * spanX * spanX + (sum - sum), m * spanY * spanY, xmin, xmax, ymin, ymax
+  local d = (points[2] + 0.0) - points[n]
+  return sum + (points[n - 1] - points[1]) * d, xSq, dSq + d * d, xmin, xmax, ymin, ymax
+end
+local function shoelaceBounds(points, n)
+  if n > 16 then
+    local sum, xSq, dSq, xmin, xmax, ymin, ymax = shoelaceBoundsLoop(points, n)
+    return sum, xSq, dSq, xmin, xmax, ymin, ymax
   end
+  -- Up to 8 vertices no loop: a loop of 3 to 8 steps is a trace of its own whose entry and
+  -- exit cost more than its steps (a miss, decided by the boxes, took 0.27 to 0.32 of the
+  -- tutorial's time with the loop, 0.12 to 0.16 without: `luajit bench/isolated.lua
+  -- polygonsCollideV miss`). Vertices 2 to 8, the last one repeated for fewer (its edges add
+  -- 0 to the sum); the sum in pairs, as a tree, where the loop's is a chain.
+  -- (vertices 2 and 3 at constant indices: convexPenetration, the one caller, hands on 3
+  -- vertices or more)
+  local x1, y1 = points[1] + 0.0, points[2] + 0.0
+  local x2, y2 = points[3] + 0.0, points[4] + 0.0
+  local x3, y3 = points[5] + 0.0, points[6] + 0.0
+  local j = min(7, n - 1)
+  local x4, y4 = points[j] + 0.0, points[j + 1] + 0.0
+  j = min(9, n - 1)
+  local x5, y5 = points[j] + 0.0, points[j + 1] + 0.0
+  j = min(11, n - 1)
+  local x6, y6 = points[j] + 0.0, points[j + 1] + 0.0
+  j = min(13, n - 1)
+  local x7, y7 = points[j] + 0.0, points[j + 1] + 0.0
+  local x8, y8 = points[n - 1] + 0.0, points[n] + 0.0
+  local xmin, xmax = min(x1, x2, x3, x4, x5, x6, x7, x8), max(x1, x2, x3, x4, x5, x6, x7, x8)
+  local ymin, ymax = min(y1, y2, y3, y4, y5, y6, y7, y8), max(y1, y2, y3, y4, y5, y6, y7, y8)
+  x2, x3, x4, x5, x6, x7, x8 = x2 - x1, x3 - x1, x4 - x1, x5 - x1, x6 - x1, x7 - x1, x8 - x1
+  local sum = ((x2 * (y2 - y1) + (x2 + x3) * (y3 - y2)) + ((x3 + x4) * (y4 - y3)
+    + (x4 + x5) * (y5 - y4))) + (((x5 + x6) * (y6 - y5) + (x6 + x7) * (y7 - y6))
+    + ((x7 + x8) * (y8 - y7) + x8 * (y1 - y8)))
+  local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
+  return sum, m * spanX * spanX + (sum - sum), m * spanY * spanY, xmin, xmax, ymin, ymax
 end
 
 -- The largest coordinate magnitude of points[1..n], or m if that is larger.
@@ -503,76 +498,73 @@ end
 -- holds with them (looser, but only slivers notice); two fewer sums per vertex. The shoelace
 -- sum, not the box (comparisons pass a NaN by), carries a NaN or infinity into the check for
 -- them. Only the sign is returned, so a sound filter gives the same turn as areaSignOf's.
-local turnAndBounds
-if not JIT then
-  turnAndBounds = function(points, n)
-    local x0, y1 = points[1] + 0.0, points[2] + 0.0
-    local px, py = 0.0, y1
-    local sum = 0.0
-    local xmin, xmax, ymin, ymax = x0, x0, y1, y1
-    local low, high = 1, 1   -- the flat index of x at a vertex of least y, and of largest y
-    -- Two vertices a step, the previous vertex's X and y in px and py at the start of each: the
-    -- second vertex is read straight into them, so no value is moved (on Lua 5.4 the moves and
-    -- the loop's own instruction were a sixth of the loop). vx is compared as read, a Lua 5.3+
-    -- integer too: the conversion to a double is monotone, so the extremes converted once are the
-    -- extremes of the converted coordinates (x = vx - x0 converts it, x0 being a double).
-    for i = 3, n - 3, 4 do
-      local vx, y = points[i], points[i + 1] + 0.0
-      local x = vx - x0
-      sum = sum + (px + x) * (y - py)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if y < ymin then
-        ymin = y
-        low = i
-      elseif y > ymax then
-        ymax = y
-        high = i
-      end
-      vx = points[i + 2]
-      py = points[i + 3] + 0.0
-      px = vx - x0
-      sum = sum + (x + px) * (py - y)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if py < ymin then
-        ymin = py
-        low = i + 2
-      elseif py > ymax then
-        ymax = py
-        high = i + 2
-      end
+local function turnAndBounds(points, n)
+  local x0, y1 = points[1] + 0.0, points[2] + 0.0
+  local px, py = 0.0, y1
+  local sum = 0.0
+  local xmin, xmax, ymin, ymax = x0, x0, y1, y1
+  local low, high = 1, 1   -- the flat index of x at a vertex of least y, and of largest y
+  -- Two vertices a step, the previous vertex's X and y in px and py at the start of each: the
+  -- second vertex is read straight into them, so no value is moved (on Lua 5.4 the moves and
+  -- the loop's own instruction were a sixth of the loop). vx is compared as read, a Lua 5.3+
+  -- integer too: the conversion to a double is monotone, so the extremes converted once are the
+  -- extremes of the converted coordinates (x = vx - x0 converts it, x0 being a double).
+  for i = 3, n - 3, 4 do
+    local vx, y = points[i], points[i + 1] + 0.0
+    local x = vx - x0
+    sum = sum + (px + x) * (y - py)
+    if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+    if y < ymin then
+      ymin = y
+      low = i
+    elseif y > ymax then
+      ymax = y
+      high = i
     end
-    if n % 4 == 0 then   -- an odd number of vertices after the first: the last one alone
-      local vx, y = points[n - 1], points[n] + 0.0
-      local x = vx - x0
-      sum = sum + (px + x) * (y - py)
-      if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
-      if y < ymin then
-        ymin = y
-        low = n - 1
-      elseif y > ymax then
-        ymax = y
-        high = n - 1
-      end
-      px = x
-      py = y
+    vx = points[i + 2]
+    py = points[i + 3] + 0.0
+    px = vx - x0
+    sum = sum + (x + px) * (py - y)
+    if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+    if py < ymin then
+      ymin = py
+      low = i + 2
+    elseif py > ymax then
+      ymax = py
+      high = i + 2
     end
-    sum = sum + px * (y1 - py)
-    xmin = xmin + 0.0
-    xmax = xmax + 0.0
-    local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
-    -- luacheck: ignore 581 (NaN must count as non-finite)
-    if not ((sum - sum) + spanX + spanY < huge) and holdsNonFinite(points, n) then return nil end
-    -- areaSignOf's test (see there) with xSq = m spanX^2 and dSq = m spanY^2: its bound k^2 xSq
-    -- dSq is the square of k m spanX spanY, which takes fewer operations (and underflows alike)
-    local bound = (m + 8) * 2^-50 * m * spanX * spanY
-    if not (sum * sum > bound * bound) then   -- luacheck: ignore 581 (NaN: not trusted)
-      shoelaceExact(points, n)
-      sum = expSign()
-    end
-    if sum > 0 then return 1.0, xmin, xmax, ymin, ymax, low, high end
-    if sum < 0 then return -1.0, xmin, xmax, ymin, ymax, low, high end
-    return 0.0, xmin, xmax, ymin, ymax, low, high
   end
+  if n % 4 == 0 then   -- an odd number of vertices after the first: the last one alone
+    local vx, y = points[n - 1], points[n] + 0.0
+    local x = vx - x0
+    sum = sum + (px + x) * (y - py)
+    if vx < xmin then xmin = vx elseif vx > xmax then xmax = vx end
+    if y < ymin then
+      ymin = y
+      low = n - 1
+    elseif y > ymax then
+      ymax = y
+      high = n - 1
+    end
+    px = x
+    py = y
+  end
+  sum = sum + px * (y1 - py)
+  xmin = xmin + 0.0
+  xmax = xmax + 0.0
+  local m, spanX, spanY = n / 2, xmax - xmin, ymax - ymin
+  -- luacheck: ignore 581 (NaN must count as non-finite)
+  if not ((sum - sum) + spanX + spanY < huge) and holdsNonFinite(points, n) then return nil end
+  -- areaSignOf's test (see there) with xSq = m spanX^2 and dSq = m spanY^2: its bound k^2 xSq
+  -- dSq is the square of k m spanX spanY, which takes fewer operations (and underflows alike)
+  local bound = (m + 8) * 2^-50 * m * spanX * spanY
+  if not (sum * sum > bound * bound) then   -- luacheck: ignore 581 (NaN: not trusted)
+    shoelaceExact(points, n)
+    sum = expSign()
+  end
+  if sum > 0 then return 1.0, xmin, xmax, ymin, ymax, low, high end
+  if sum < 0 then return -1.0, xmin, xmax, ymin, ymax, low, high end
+  return 0.0, xmin, xmax, ymin, ymax, low, high
 end
 
 M.CROSS_BOUND = CROSS_BOUND
@@ -582,6 +574,8 @@ M.expCompress = expCompress
 M.JIT = JIT
 M.SPLITTER = SPLITTER
 M.cross = cross
+M.crossJit = crossJit
+M.crossPuc = crossPuc
 M.expClear = expClear
 M.expAddTriple = expAddTriple
 M.expLength = expLength

@@ -132,6 +132,8 @@ end
 -- 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the x differences'
 -- TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4 (interleaved rounds on
 -- bench/workloads.lua's ordinary polygons).
+-- It stays one function (about 340 lines, half of them the proofs of its tests): each split is
+-- the per-call hot path of its size, and a call per path costs PUC Lua more than the test.
 -- @return area; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function M.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
@@ -532,197 +534,200 @@ end
 -- direction changing sign exactly twice around the polygon (twice per winding, so four times
 -- or more for a pentagram): with every turn below a half turn, the signs of dx run
 -- + (0) - (0) + once per winding.
-local polygonType
-if JIT then
-  -- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
-  -- math.abs compile to single instructions; data-dependent branches became side traces and
-  -- made this loop over twice the baseline's time (bench/run.lua --only 'polygonType ord').
-  -- The sign of the product of consecutive edges' dx is taken without a branch: in the exact
-  -- range a nonzero product of coordinate differences is at least 2^-998, so 2^1000 times it
-  -- clamps to +-1. Around m edges whose turns are all certain, no two consecutive dx are 0 and
-  -- each winding changes the sign twice (directly, or through one 0 which zeroes two products),
-  -- so the sum of those signs is m - 4k for k windings.
-  -- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
-  -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
-  -- NaN or infinite, so nothing is certain.
-  -- The turns at the last vertex, at vertex 1 and at vertex 2 are taken before the loop, and
-  -- when they disagree the call ends there (58 of the 100 stars among bench/run.lua's ordinary
-  -- polygons end there; 44 with the first two turns only, when `luajit bench/run.lua --only
-  -- '^polygonType ord'`, ten runs each alternating, gave medians of 1.195 and 1.23 with two,
-  -- 1.165 and 1.18 with three). Only four sums cross that branch: its side trace inherits
-  -- little (with the first turns' differences and products alive there too it failed to
-  -- compile in 1 of 4 runs, "NYI: register coalescing too complex").
-  local function typeFiltered(points, n)
-    local cx, cy = points[n - 1], points[n]
-    local ex, ey = cx - points[n - 3], cy - points[n - 2]
-    local lo, hi, errSum, dirAgree
-    do
-      local qx, qy = points[1], points[2]
-      local fx, fy = qx - cx, qy - cy
-      local px, py = points[3], points[4]
-      local gx, gy = px - qx, py - qy
-      local hx, hy = points[5] - px, points[6] - py
-      local l, r = ex * fy, ey * fx
-      local l2, r2 = fx * gy, fy * gx
-      local l3, r3 = gx * hy, gy * hx
-      local s, s2, s3 = l - r, l2 - r2, l3 - r3   -- the turns at the last vertex, at 1 and at 2
-      lo, hi = min(s, s2, s3), max(s, s2, s3)
-      errSum = abs(l + r) + abs(l2 + r2) + abs(l3 + r3)
-      dirAgree = min(1, max(-1, ex * fx * 2^1000)) + min(1, max(-1, fx * gx * 2^1000))
-        + min(1, max(-1, gx * hx * 2^1000))
-    end
-    if lo * hi < 0 then
-      local bound = CROSS_BOUND * errSum
-      if lo < -bound and hi > bound then return "concave" end
-      return false
-    end
-    cx, cy = points[5], points[6]
-    ex, ey = cx - points[3], cy - points[4]
-    for i = 7, n - 1, 2 do
-      local qx, qy = points[i], points[i + 1]
-      local fx, fy = qx - cx, qy - cy
-      local l, r = ex * fy, ey * fx
-      local s = l - r
-      lo, hi = min(lo, s), max(hi, s)
-      errSum = errSum + abs(l + r)
-      dirAgree = dirAgree + min(1, max(-1, ex * fx * 2^1000))
-      cx, cy, ex, ey = qx, qy, fx, fy
-      if lo * hi < 0 then break end   -- turns of both signs seen: concave if certain
-    end
+-- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
+-- math.abs compile to single instructions; data-dependent branches became side traces and
+-- made this loop over twice the baseline's time (bench/run.lua --only 'polygonType ord').
+-- The sign of the product of consecutive edges' dx is taken without a branch: in the exact
+-- range a nonzero product of coordinate differences is at least 2^-998, so 2^1000 times it
+-- clamps to +-1. Around m edges whose turns are all certain, no two consecutive dx are 0 and
+-- each winding changes the sign twice (directly, or through one 0 which zeroes two products),
+-- so the sum of those signs is m - 4k for k windings.
+-- The filter sums |l + r|, not |l| + |r|: when l and r differ in sign no cancellation can
+-- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
+-- NaN or infinite, so nothing is certain.
+-- The turns at the last vertex, at vertex 1 and at vertex 2 are taken before the loop, and
+-- when they disagree the call ends there (58 of the 100 stars among bench/run.lua's ordinary
+-- polygons end there; 44 with the first two turns only, when `luajit bench/run.lua --only
+-- '^polygonType ord'`, ten runs each alternating, gave medians of 1.195 and 1.23 with two,
+-- 1.165 and 1.18 with three). Only four sums cross that branch: its side trace inherits
+-- little (with the first turns' differences and products alive there too it failed to
+-- compile in 1 of 4 runs, "NYI: register coalescing too complex").
+local function typeFiltered(points, n)
+  local cx, cy = points[n - 1], points[n]
+  local ex, ey = cx - points[n - 3], cy - points[n - 2]
+  local lo, hi, errSum, dirAgree
+  do
+    local qx, qy = points[1], points[2]
+    local fx, fy = qx - cx, qy - cy
+    local px, py = points[3], points[4]
+    local gx, gy = px - qx, py - qy
+    local hx, hy = points[5] - px, points[6] - py
+    local l, r = ex * fy, ey * fx
+    local l2, r2 = fx * gy, fy * gx
+    local l3, r3 = gx * hy, gy * hx
+    local s, s2, s3 = l - r, l2 - r2, l3 - r3   -- the turns at the last vertex, at 1 and at 2
+    lo, hi = min(s, s2, s3), max(s, s2, s3)
+    errSum = abs(l + r) + abs(l2 + r2) + abs(l3 + r3)
+    dirAgree = min(1, max(-1, ex * fx * 2^1000)) + min(1, max(-1, fx * gx * 2^1000))
+      + min(1, max(-1, gx * hx * 2^1000))
+  end
+  if lo * hi < 0 then
     local bound = CROSS_BOUND * errSum
-    if lo > bound or hi < -bound then
-      if dirAgree == n / 2 - 4 then return "convex" end
-      return "concave"
-    end
     if lo < -bound and hi > bound then return "concave" end
     return false
   end
-  polygonType = function(points)
-    local n = checkPoints(points, "polygonType")
-    if n < 6 then return nil end
-    local kind = typeFiltered(points, n)
-    if kind == false then kind = typeCareful(points, n) end
-    return kind
-  end
-else
-  -- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
-  -- function with a branchy loop, one comparison per turn in the common case. The turns at
-  -- the last vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y
-  -- so that every turn of a convex polygon is positive, and a second turn against it ends the
-  -- call early (most concave polygons turn both ways within their first few vertices). The loop
-  -- takes two turns per step, the second writing the vertex and edge the first reads, so no
-  -- value is moved; with an odd number of vertices one turn is left after it. The vertex the
-  -- first turn reads is not converted (its differences with the converted one convert it).
-  -- The filter bounds every |l + r| by the square root of the sum of their squares and
-  -- compares squares (NaN or overflow only make it fail; squares that underflow come with an
-  -- lo that does too). Windings are counted without a direction variable: with every turn
-  -- positive and below a half turn, the edges' direction turns one way and leaves the half
-  -- plane dx > 0 exactly once per winding (a turn cannot cross the half plane dx <= 0, a half
-  -- turn wide), so the turns from an edge with dx > 0 to one with dx <= 0 count the windings.
-  -- Lua 5.4 instructions per call on bench/workloads.lua's ordinary polygons (a debug.sethook
-  -- count hook): 180 with one turn per step, its moves and a direction variable, 153 so (the
-  -- tutorial's 132), lua5.4 bench/run.lua --only '^polygonType ord$' 1.5-1.6 -> 1.35-1.4;
-  -- walking a polygon with a negative first turn backwards instead of flipping y took 167
-  -- (a longer start than the loop saves on 4 to 16 vertices).
-  polygonType = function(points)
-    if type(points) ~= "table" then checkPoints(points, "polygonType") end
-    local n = #points
-    if n % 2 ~= 0 then checkPoints(points, "polygonType") end
-    if n < 6 then return nil end
-    local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
-    local ex, ey = cx - points[n - 3], cy - points[n - 2]
-    local qx, qy = points[1] + 0.0, points[2] + 0.0
+  cx, cy = points[5], points[6]
+  ex, ey = cx - points[3], cy - points[4]
+  for i = 7, n - 1, 2 do
+    local qx, qy = points[i], points[i + 1]
     local fx, fy = qx - cx, qy - cy
     local l, r = ex * fy, ey * fx
-    local s = l - r   -- the turn at the last vertex, from edge e to edge f
-    local ySign = 1.0
-    if s < 0 then   -- (one statement each: a multiple assignment costs a move per value)
-      ySign = -1.0
-      s = -s
-      qy = -qy
-      fy = -fy
-    end
-    local firstTurn = s
-    local e = l + r   -- the first turn's error bound is CROSS_BOUND |e|
-    local firstBound = e * e
-    -- A turn s <= 0 (or NaN) ends the walk: concave when it and the first turn are certain,
-    -- as is a first turn of 0 or NaN.
+    local s = l - r
+    lo, hi = min(lo, s), max(hi, s)
+    errSum = errSum + abs(l + r)
+    dirAgree = dirAgree + min(1, max(-1, ex * fx * 2^1000))
+    cx, cy, ex, ey = qx, qy, fx, fy
+    if lo * hi < 0 then break end   -- turns of both signs seen: concave if certain
+  end
+  local bound = CROSS_BOUND * errSum
+  if lo > bound or hi < -bound then
+    if dirAgree == n / 2 - 4 then return "convex" end
+    return "concave"
+  end
+  if lo < -bound and hi > bound then return "concave" end
+  return false
+end
+-- LuaJIT's: typeFiltered's branch-free pass (min, max and abs are single instructions there).
+local function polygonTypeJit(points)
+  local n = checkPoints(points, "polygonType")
+  if n < 6 then return nil end
+  local kind = typeFiltered(points, n)
+  if kind == false then kind = typeCareful(points, n) end
+  return kind
+end
+
+-- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
+-- function with a branchy loop, one comparison per turn in the common case. The turns at
+-- the last vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y
+-- so that every turn of a convex polygon is positive, and a second turn against it ends the
+-- call early (most concave polygons turn both ways within their first few vertices). The loop
+-- takes two turns per step, the second writing the vertex and edge the first reads, so no
+-- value is moved; with an odd number of vertices one turn is left after it. The vertex the
+-- first turn reads is not converted (its differences with the converted one convert it).
+-- The filter bounds every |l + r| by the square root of the sum of their squares and
+-- compares squares (NaN or overflow only make it fail; squares that underflow come with an
+-- lo that does too). Windings are counted without a direction variable: with every turn
+-- positive and below a half turn, the edges' direction turns one way and leaves the half
+-- plane dx > 0 exactly once per winding (a turn cannot cross the half plane dx <= 0, a half
+-- turn wide), so the turns from an edge with dx > 0 to one with dx <= 0 count the windings.
+-- Lua 5.4 instructions per call on bench/workloads.lua's ordinary polygons (a debug.sethook
+-- count hook): 180 with one turn per step, its moves and a direction variable, 153 so (the
+-- tutorial's 132), lua5.4 bench/run.lua --only '^polygonType ord$' 1.5-1.6 -> 1.35-1.4;
+-- walking a polygon with a negative first turn backwards instead of flipping y took 167
+-- (a longer start than the loop saves on 4 to 16 vertices).
+-- polygonTypePuc stays whole (about 100 lines): its loop is the hot path, and a call per step or
+-- per part would cost more than the turns it takes.
+-- PUC Lua's: one branchy pass, one comparison per turn, as calls cost more than branches.
+local function polygonTypePuc(points)
+  if type(points) ~= "table" then checkPoints(points, "polygonType") end
+  local n = #points
+  if n % 2 ~= 0 then checkPoints(points, "polygonType") end
+  if n < 6 then return nil end
+  local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
+  local ex, ey = cx - points[n - 3], cy - points[n - 2]
+  local qx, qy = points[1] + 0.0, points[2] + 0.0
+  local fx, fy = qx - cx, qy - cy
+  local l, r = ex * fy, ey * fx
+  local s = l - r   -- the turn at the last vertex, from edge e to edge f
+  local ySign = 1.0
+  if s < 0 then   -- (one statement each: a multiple assignment costs a move per value)
+    ySign = -1.0
+    s = -s
+    qy = -qy
+    fy = -fy
+  end
+  local firstTurn = s
+  local e = l + r   -- the first turn's error bound is CROSS_BOUND |e|
+  local firstBound = e * e
+  -- A turn s <= 0 (or NaN) ends the walk: concave when it and the first turn are certain,
+  -- as is a first turn of 0 or NaN.
+  if s > 0 then
+    local windings = 0
+    if fx <= 0 and ex > 0 then windings = 1 end
+    cx = points[3] + 0.0   -- the turn at vertex 1, from edge f to edge e
+    cy = points[4] * ySign
+    ex = cx - qx
+    ey = cy - qy
+    l = fx * ey
+    r = fy * ex
+    s = l - r
     if s > 0 then
-      local windings = 0
-      if fx <= 0 and ex > 0 then windings = 1 end
-      cx = points[3] + 0.0   -- the turn at vertex 1, from edge f to edge e
-      cy = points[4] * ySign
-      ex = cx - qx
-      ey = cy - qy
-      l = fx * ey
-      r = fy * ex
-      s = l - r
-      if s > 0 then
-        local lo = firstTurn
+      local lo = firstTurn
+      if s < lo then lo = s end
+      e = l + r
+      local errSq = firstBound + e * e
+      if ex <= 0 and fx > 0 then windings = windings + 1 end
+      for i = 5, n - 3, 4 do
+        qx = points[i]               -- the turn at c, from edge e to edge f
+        qy = points[i + 1] * ySign
+        fx = qx - cx
+        fy = qy - cy
+        l = ex * fy
+        r = ey * fx
+        s = l - r
+        if s < lo then
+          if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
+          lo = s
+        end
+        e = l + r
+        errSq = errSq + e * e
+        if fx <= 0 and ex > 0 then windings = windings + 1 end
+        cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
+        cy = points[i + 3] * ySign
+        ex = cx - qx
+        ey = cy - qy
+        l = fx * ey
+        r = fy * ex
+        s = l - r
+        if s < lo then
+          if not (s > 0) then break end   -- luacheck: ignore 581
+          lo = s
+        end
+        e = l + r
+        errSq = errSq + e * e
+        if ex <= 0 and fx > 0 then windings = windings + 1 end
+      end
+      if n % 4 == 2 and s > 0 then   -- an odd number of vertices: the turn at m - 1 is left
+        qx = points[n - 1]
+        qy = points[n] * ySign
+        fx = qx - cx
+        fy = qy - cy
+        l = ex * fy
+        r = ey * fx
+        s = l - r
         if s < lo then lo = s end
         e = l + r
-        local errSq = firstBound + e * e
-        if ex <= 0 and fx > 0 then windings = windings + 1 end
-        for i = 5, n - 3, 4 do
-          qx = points[i]               -- the turn at c, from edge e to edge f
-          qy = points[i + 1] * ySign
-          fx = qx - cx
-          fy = qy - cy
-          l = ex * fy
-          r = ey * fx
-          s = l - r
-          if s < lo then
-            if not (s > 0) then break end   -- luacheck: ignore 581 (NaN too)
-            lo = s
-          end
-          e = l + r
-          errSq = errSq + e * e
-          if fx <= 0 and ex > 0 then windings = windings + 1 end
-          cx = points[i + 2] + 0.0     -- the turn at q, from edge f to edge e
-          cy = points[i + 3] * ySign
-          ex = cx - qx
-          ey = cy - qy
-          l = fx * ey
-          r = fy * ex
-          s = l - r
-          if s < lo then
-            if not (s > 0) then break end   -- luacheck: ignore 581
-            lo = s
-          end
-          e = l + r
-          errSq = errSq + e * e
-          if ex <= 0 and fx > 0 then windings = windings + 1 end
-        end
-        if n % 4 == 2 and s > 0 then   -- an odd number of vertices: the turn at m - 1 is left
-          qx = points[n - 1]
-          qy = points[n] * ySign
-          fx = qx - cx
-          fy = qy - cy
-          l = ex * fy
-          r = ey * fx
-          s = l - r
-          if s < lo then lo = s end
-          e = l + r
-          errSq = errSq + e * e
-          if fx <= 0 and ex > 0 then windings = windings + 1 end
-        end
-        if s > 0 and lo * lo > TURN_BOUND_SQ * errSq then
-          if windings == 1 then return "convex" end
-          return "concave"
-        end
+        errSq = errSq + e * e
+        if fx <= 0 and ex > 0 then windings = windings + 1 end
       end
-    end
-    if not (s > 0) then   -- luacheck: ignore 581
-      -- both turns certain (compared squared: underflow or overflow only fails the test)
-      e = l + r
-      if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
+      if s > 0 and lo * lo > TURN_BOUND_SQ * errSq then
+        if windings == 1 then return "convex" end
         return "concave"
       end
     end
-    local kind = typeCareful(points, n)
-    return kind
   end
+  if not (s > 0) then   -- luacheck: ignore 581
+    -- both turns certain (compared squared: underflow or overflow only fails the test)
+    e = l + r
+    if s * s > TURN_BOUND_SQ * (e * e) and firstTurn * firstTurn > TURN_BOUND_SQ * firstBound then
+      return "concave"
+    end
+  end
+  local kind = typeCareful(points, n)
+  return kind
 end
+
+local polygonType = JIT and polygonTypeJit or polygonTypePuc
 
 --- Whether the polygon is convex.
 -- Checks every vertex (the tutorial skips the last one). Repeated consecutive vertices and
@@ -733,6 +738,8 @@ end
 -- to the careful walk, which checks); a polygon found concave before one is read is concave.
 -- @return "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
 M.polygonType = polygonType
+M.polygonTypeJit = polygonTypeJit
+M.polygonTypePuc = polygonTypePuc
 
 -- The vertex sums of polygonCenter, each coordinate times scale (a power of two), compensated:
 -- TwoSum carries each addition's rounding error into errX, errY.
