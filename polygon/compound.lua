@@ -216,6 +216,12 @@ end
 -- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
 -- of parts: parts1, parts2, as isParts tells, which the public functions did inline) overlap,
 -- or with wantPush the least translation of shape2 out of shape1 as overlap, dx, dy, or false.
+-- Its steps: the views (a list against a flat shape scanned by partsOverlapping), the boolean,
+-- the scaling, the pairs whose boxes overlap, then rounds of pairs near the best free point.
+-- It stays whole: the functions it calls raise argument errors at levels counted from its
+-- frame (listView's and overlapsConvex's 4, addPair's checkCopy 5, its own checkCopy 4), so a
+-- step moved into a function of its own would put those errors on the wrong line; and the
+-- rounds share a dozen numbers with the steps before them (np, top, k, margin, the window).
 local function collideParts(fname, shape1, shape2, wantPush, parts1, parts2)
   local view1, view2, found, nearCount, window, leastGapX, leastGapY
   if parts1 ~= parts2 then
