@@ -61,9 +61,9 @@ local REACH_BOUND = 64 * EPS * EPS   -- 2^-100, exact
 -- that: 61 eps^2 M. G = b + the sum rounded once has the sign of b + the float sum, and
 -- |G| > 64 eps^2 M (computed M rounded twice) clears that error: the sign is the exact gap's.
 -- (Every value stays below 2^502 after the scaling, and below M's bound, at least 2^266, an
--- underflow's absolute error is negligible.) Only near-exact ties reach the expansion: in the
--- arena of examples/arena.lua (300 frames) 189,427 calls, whose expansions' loops were LuaJIT
--- traces' side exits that failed to compile ("register coalescing too complex").
+-- underflow's absolute error is negligible.) Only near-exact ties reach the expansion: its
+-- loops, met as side exits of LuaJIT's traces, failed to compile ("register coalescing too
+-- complex").
 local function reachesExact(x1, y1, x2, y2, rh, rl)
   local dxh, dxl = twoDiff(x2, x1)
   local dyh, dyl = twoDiff(y2, y1)
@@ -518,24 +518,17 @@ end
 -- the area is not finite (the other numbers then placeholders).
 -- An edge's signed distance is its cross product (b - a) x (a - c) over |b - a|; edges are
 -- compared by its signed square, outside |outside| / |b - a|^2, so no square root is taken.
--- As in projectRange, LuaJIT gets a loop without data-dependent branches: each such branch
--- becomes a side trace, and the rest of the function is compiled again behind every one of
--- them (measured: about 10 times slower). It is one pass, the sign included: the extremes by
--- min and max, the index of each extreme's first match by a select without a branch (it moves
--- to i by (i - index) times 1 when the new number beats the extreme, times 0 when not). The
--- farthest edge depends on the sign, known only after the loop: the loop takes the sign of the
--- turn at vertex 1 as a guess (the area's sign for a convex polygon) and runs again with the
--- sign when the guess was wrong. The sign comes from the same cross products (below), the
--- exact kernel deciding where they cannot.
--- (The walk was three passes: the shoelace sum for the sign, then the extremes, then a second
--- pass finding their indices by recomputing the same numbers: 2,867 machine instructions per
--- call of the benchmark's circles, about 2,040 now with the early exit below;
--- `valgrind --tool=cachegrind`.) Few values stay alive across the loop and after it: with both
--- signs' farthest edges kept at once, four more, side traces in the arena of
--- examples/arena.lua failed to compile ("NYI: register coalescing too complex", 95 to 6,060 a
--- run in four runs; the three-pass walk 0 to 1,442 in eleven, this one 67 to 898 in seven).
--- The PUC interpreters call min and max as functions, so for them a branchy pass is faster.
-local edgeWalk
+-- Two bodies. As in projectRange, LuaJIT gets a loop without data-dependent branches: each
+-- such branch becomes a side trace, and the rest of the function is compiled again behind
+-- every one of them. It is one pass, the sign included: the extremes by min and max, the index
+-- of each extreme's first match by a select without a branch (it moves to i by (i - index)
+-- times 1 when the new number beats the extreme, times 0 when not). The farthest edge depends
+-- on the sign, known only after the loop: the loop takes the sign of the turn at vertex 1 as a
+-- guess (the area's sign for a convex polygon) and runs again with the sign when the guess was
+-- wrong. The sign comes from the same cross products (below), the exact kernel deciding where
+-- they cannot. Few values stay alive across the loop and after it: more made side traces fail
+-- to compile ("NYI: register coalescing too complex"). The PUC interpreters call min and max
+-- as functions, so for them a branchy pass is faster.
 
 -- The sign of the polygon's area as 1.0 or -1.0, exact; 0 for a zero area, nil when the area
 -- is not finite (a non-finite coordinate, or an overflow).
@@ -547,112 +540,116 @@ local function exactTurn(points, n)
   return turn > 0 and 1.0 or -1.0
 end
 
-if JIT then
-  -- min(x * LIFT * LIFT, 1) is 1 when x > 0 and 0 when x == 0, for x >= 0, without a branch:
-  -- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
-  -- function called per vertex it started traces of its own, which LuaJIT aborted.)
-  local LIFT = 2^537
-  -- One pass with the sign guessed (1.0 or -1.0): near, nearSq, farSq, and the farthest edge
-  -- as if the area's sign were `guess`, its key, and the sum of the cross products (below).
-  local function walkGuessed(points, n, cx, cy, guess)
-    local nearSq, farSq, near = huge, 0.0, 1
-    -- the farthest edge's key and index: an edge's key is outside |outside| / |b - a|^2,
-    -- outside = crossed * sign, less 2^1000 for a repeated vertex (|b - a|^2 == 0): below
-    -- every real edge's key in the range where the walk's answer is used (farSq < 2^1000)
-    local bestKey, best = -huge, 1
-    local turnSum = 0.0
-    local ax, ay = points[n - 1] - cx, points[n] - cy
-    for i = 1, n - 1, 2 do
-      local bx, by = points[i] - cx, points[i + 1] - cy
-      local distSq = bx * bx + by * by
-      near = near + (i - near) * min(max(nearSq - distSq, 0) * LIFT * LIFT, 1)
-      nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
-      local ex, ey = bx - ax, by - ay
-      local lengthSq = ex * ex + ey * ey
-      local crossed = ex * ay - ey * ax
-      turnSum = turnSum + crossed
-      local outside = crossed * guess
-      local key = outside * (abs(outside) / max(lengthSq, 2^-1074))
-        - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
-      best = best + (i - best) * min(max(key - bestKey, 0) * LIFT * LIFT, 1)
-      bestKey = max(bestKey, key)
-      ax, ay = bx, by
-    end
-    return near, nearSq, farSq, best, bestKey, turnSum
+-- min(x * LIFT * LIFT, 1) is 1 when x > 0 and 0 when x == 0, for x >= 0, without a branch:
+-- the least positive double, 2^-1074, times 2^1074 is 1. (Written out where used: as a
+-- function called per vertex it started traces of its own, which LuaJIT aborted.)
+local LIFT = 2^537
+-- One pass with the sign guessed (1.0 or -1.0): near, nearSq, farSq, and the farthest edge
+-- as if the area's sign were `guess`, its key, and the sum of the cross products (below).
+local function walkGuessed(points, n, cx, cy, guess)
+  local nearSq, farSq, near = huge, 0.0, 1
+  -- the farthest edge's key and index: an edge's key is outside |outside| / |b - a|^2,
+  -- outside = crossed * sign, less 2^1000 for a repeated vertex (|b - a|^2 == 0): below
+  -- every real edge's key in the range where the walk's answer is used (farSq < 2^1000)
+  local bestKey, best = -huge, 1
+  local turnSum = 0.0
+  local ax, ay = points[n - 1] - cx, points[n] - cy
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] - cx, points[i + 1] - cy
+    local distSq = bx * bx + by * by
+    near = near + (i - near) * min(max(nearSq - distSq, 0) * LIFT * LIFT, 1)
+    nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
+    local ex, ey = bx - ax, by - ay
+    local lengthSq = ex * ex + ey * ey
+    local crossed = ex * ay - ey * ax
+    turnSum = turnSum + crossed
+    local outside = crossed * guess
+    local key = outside * (abs(outside) / max(lengthSq, 2^-1074))
+      - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
+    best = best + (i - best) * min(max(key - bestKey, 0) * LIFT * LIFT, 1)
+    bestKey = max(bestKey, key)
+    ax, ay = bx, by
   end
-  edgeWalk = function(points, n, cx, cy)
-    -- the guess: the sign of the turn at vertex 1, without a branch (1 when it is 0); it is
-    -- the area's for a convex polygon
-    local guess
-    do
-      local x0, y0, x1, y1 = points[n - 1], points[n], points[1], points[2]
-      local turn = (x1 - x0) * (points[4] - y1) - (y1 - y0) * (points[3] - x1)
-      guess = 1 - 2 * min(max(-turn * LIFT * LIFT, 0), 1)
-    end
-    local near, nearSq, farSq, best, bestKey, turnSum = walkGuessed(points, n, cx, cy, guess)
-    -- The sum of the cross products (b - a) x a = b x a is minus twice the area of the polygon
-    -- moved by -c and rounded, which is off from the exact area by 2 eps S at most, S the sum
-    -- of the squared distances; the cross products and their sum add (m + 5) eps S (m = n / 2;
-    -- a cross product's terms are at most (|a|^2 + |b|^2) / 2 in magnitude). S <= m farSq, and
-    -- the factor 4 and the 16 cover the second-order terms and this bound's own roundings;
-    -- 2^-900 is far above what underflow can take (a multiple of n 2^-1074).
-    local sign
-    local m = n * 0.5
-    if abs(turnSum) > max((m + 16) * 2^-51 * m * farSq, 2^-900) then
-      sign = -turnSum / abs(turnSum)
-    else
-      sign = exactTurn(points, n)
-      if sign == nil then return 0.0, 1, 0.0, 0.0, -2 end
-      if sign == 0 then return 0.0, 1, 0.0, 0.0, -1 end
-    end
-    if sign ~= guess then   -- a wrong guess (rare: a concave or degenerate turn at vertex 1)
-      near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, sign)
-    end
-    -- an infinite key (an overflow) gives 0, which sends the caller to its scaled path
-    if bestKey - bestKey ~= 0 then best = 0 end
-    return sign, near, nearSq, farSq, best
+  return near, nearSq, farSq, best, bestKey, turnSum
+end
+
+-- The edge walk for LuaJIT: two branch-free passes at most (walkGuessed), the sign filtered
+-- from the cross products' sum.
+local function edgeWalkJit(points, n, cx, cy)
+  -- the guess: the sign of the turn at vertex 1, without a branch (1 when it is 0); it is
+  -- the area's for a convex polygon
+  local guess
+  do
+    local x0, y0, x1, y1 = points[n - 1], points[n], points[1], points[2]
+    local turn = (x1 - x0) * (points[4] - y1) - (y1 - y0) * (points[3] - x1)
+    guess = 1 - 2 * min(max(-turn * LIFT * LIFT, 0), 1)
   end
-else
-  -- The PUC loop also stops at the first edge whose line the circle (radius r) is certainly
-  -- beyond, returning best = -1: an edge's squared signed distance is off by less than
-  -- 32 eps (r^2 + the squared distances of its ends), so a key past r^2 by that much means
-  -- the circle is apart, as the full pass would decide too (LuaJIT's loop stays branch-free).
-  edgeWalk = function(points, n, cx, cy, r)
-    local sign   -- exactTurn written out (a call costs PUC Lua more than these lines)
-    do
-      local area, sumX2, sumD2 = shoelace(points, n)
-      if area - area ~= 0 then return 0.0, 1, 0.0, 0.0, -2 end
-      local turn = areaSignOf(points, n, area, sumX2, sumD2)
-      if turn == 0 then return 0.0, 1, 0.0, 0.0, -1 end
-      sign = turn > 0 and 1.0 or -1.0
-    end
-    local nearSq, farSq, near = huge, 0.0, 1
-    local bestKey, best = -huge, 0
-    local ax, ay = points[n - 1] - cx, points[n] - cy
-    local radiusSq = r * r
-    local prevSq = ax * ax + ay * ay
-    for i = 1, n - 1, 2 do
-      local bx, by = points[i] - cx, points[i + 1] - cy
-      local distSq = bx * bx + by * by
-      if distSq < nearSq then nearSq, near = distSq, i end
-      if distSq > farSq then farSq = distSq end
-      local ex, ey = bx - ax, by - ay
-      local lengthSq = ex * ex + ey * ey
-      if lengthSq > 0 then   -- a repeated vertex gives no edge
-        local outside = (ex * ay - ey * ax) * sign
-        local key = outside * (abs(outside) / lengthSq)
-        if key > bestKey then
-          bestKey, best = key, i
-          if key - radiusSq > 32 * EPS * (radiusSq + prevSq + distSq) then
-            return sign, near, nearSq, farSq, -1
-          end
+  local near, nearSq, farSq, best, bestKey, turnSum = walkGuessed(points, n, cx, cy, guess)
+  -- The sum of the cross products (b - a) x a = b x a is minus twice the area of the polygon
+  -- moved by -c and rounded, which is off from the exact area by 2 eps S at most, S the sum
+  -- of the squared distances; the cross products and their sum add (m + 5) eps S (m = n / 2;
+  -- a cross product's terms are at most (|a|^2 + |b|^2) / 2 in magnitude). S <= m farSq, and
+  -- the factor 4 and the 16 cover the second-order terms and this bound's own roundings;
+  -- 2^-900 is far above what underflow can take (a multiple of n 2^-1074).
+  local sign
+  local m = n * 0.5
+  if abs(turnSum) > max((m + 16) * 2^-51 * m * farSq, 2^-900) then
+    sign = -turnSum / abs(turnSum)
+  else
+    sign = exactTurn(points, n)
+    if sign == nil then return 0.0, 1, 0.0, 0.0, -2 end
+    if sign == 0 then return 0.0, 1, 0.0, 0.0, -1 end
+  end
+  if sign ~= guess then   -- a wrong guess (rare: a concave or degenerate turn at vertex 1)
+    near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, sign)
+  end
+  -- an infinite key (an overflow) gives 0, which sends the caller to its scaled path
+  if bestKey - bestKey ~= 0 then best = 0 end
+  return sign, near, nearSq, farSq, best
+end
+
+-- The edge walk for PUC Lua: one pass with branches, the sign from the exact kernel first.
+-- It also stops at the first edge whose line the circle (radius r) is certainly
+-- beyond, returning best = -1: an edge's squared signed distance is off by less than
+-- 32 eps (r^2 + the squared distances of its ends), so a key past r^2 by that much means
+-- the circle is apart, as the full pass would decide too (LuaJIT's loop stays branch-free).
+local function edgeWalkPuc(points, n, cx, cy, r)
+  local sign   -- exactTurn written out (a call costs PUC Lua more than these lines)
+  do
+    local area, sumX2, sumD2 = shoelace(points, n)
+    if area - area ~= 0 then return 0.0, 1, 0.0, 0.0, -2 end
+    local turn = areaSignOf(points, n, area, sumX2, sumD2)
+    if turn == 0 then return 0.0, 1, 0.0, 0.0, -1 end
+    sign = turn > 0 and 1.0 or -1.0
+  end
+  local nearSq, farSq, near = huge, 0.0, 1
+  local bestKey, best = -huge, 0
+  local ax, ay = points[n - 1] - cx, points[n] - cy
+  local radiusSq = r * r
+  local prevSq = ax * ax + ay * ay
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] - cx, points[i + 1] - cy
+    local distSq = bx * bx + by * by
+    if distSq < nearSq then nearSq, near = distSq, i end
+    if distSq > farSq then farSq = distSq end
+    local ex, ey = bx - ax, by - ay
+    local lengthSq = ex * ex + ey * ey
+    if lengthSq > 0 then   -- a repeated vertex gives no edge
+      local outside = (ex * ay - ey * ax) * sign
+      local key = outside * (abs(outside) / lengthSq)
+      if key > bestKey then
+        bestKey, best = key, i
+        if key - radiusSq > 32 * EPS * (radiusSq + prevSq + distSq) then
+          return sign, near, nearSq, farSq, -1
         end
       end
-      ax, ay, prevSq = bx, by, distSq
     end
-    return sign, near, nearSq, farSq, best
+    ax, ay, prevSq = bx, by, distSq
   end
+  return sign, near, nearSq, farSq, best
 end
+
+local edgeWalk = JIT and edgeWalkJit or edgeWalkPuc
 
 local circleCollision
 
@@ -756,9 +753,7 @@ function circleCollision(points, n, cx, cy, r)
   -- in registers every number held in a local still in scope there, the callers' included:
   -- with more than the registers it fails to compile ("NYI: register coalescing too complex").
   -- So near and nearSq are dropped here, and the push's direction is not held in locals (see
-  -- penetration). Measured in the arena of examples/arena.lua (300 frames, `luajit -jv`): such
-  -- aborts in this section went from 2,260 in sixteen runs (0 to 887 a run) to 1 in twenty-four,
-  -- not counting traces through the compound code, whose frames hold most of the numbers there.
+  -- penetration).
   near, nearSq = nil, nil   -- luacheck: ignore 311 (dropped, see above)
   local depth, depthLow = penetration(points, n, sign, cx, cy, r, feature)
   -- The exact filter: the float depth is off by far less than tol, a few eps times the farthest
@@ -779,5 +774,7 @@ function circleCollision(points, n, cx, cy, r)
 end
 
 M.circleCollision = circleCollision
+M.edgeWalkJit = edgeWalkJit   -- both bodies, for spec/bodies_compound_spec.lua
+M.edgeWalkPuc = edgeWalkPuc
 
 return M

@@ -45,7 +45,7 @@ function M.polygonCollidesWith(points1, points2)
 end
 
 --- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
--- Either may be a list of convex parts instead (see "Compound shapes").
+-- Either may be a list of convex parts instead (see polygon/compound.lua).
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
 -- Raises an error for a non-finite coordinate.
 -- @return true or false
@@ -96,7 +96,7 @@ function M.polygonCollidesWithV(points1, points2)
   return push, dx, dy
 end
 
---- As polygonsCollide, with the minimum translation vector (lists of parts: see "Compound shapes").
+--- As polygonsCollide, with the minimum translation vector (lists of parts: see polygon/compound.lua).
 -- overlap is the penetration depth along the axis of least penetration, right also when one
 -- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
 -- points2), pointing the right way in either argument order and when the centres coincide.
@@ -117,7 +117,7 @@ function M.polygonsCollideV(points1, points2)
   return push, dx, dy
 end
 --- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
--- a list of convex parts (see "Compound shapes").
+-- a list of convex parts (see polygon/compound.lua).
 -- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
 -- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
 -- is the full penetration (r minus the signed distance from the centre to the polygon), so a

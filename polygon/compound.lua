@@ -95,107 +95,107 @@ local M = {}
 -- same boxes (after listView they pass: the list is up to date).
 -- Two bodies: on LuaJIT the box tests by the largest gap, one branch a part; on PUC Lua by
 -- comparisons, most parts failing the first or second.
-local partsOverlapping
-if JIT then
-  partsOverlapping = function(info, shape, x0, y0, x1, y1, window)
-    local found, near, leastGapX, leastGapY = 0, 0, huge, huge
-    local records = info.records
-    for k = 1, info.count do
-      local part, record = shape[k], records[k]
-      local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      if part ~= record[9] then return nil end
-      if record[16] == 0 then
-        -- a rectangle from its (xmin, ymin): as below, against the box's values loaded (the
-        -- scan of bench/compound.lua's floor: 2,815 machine instructions a call by callgrind,
-        -- where record[12] .. [15] took 2,978)
-        if part[1] ~= xmin or part[2] ~= ymin or part[5] ~= xmax or part[6] ~= ymax
-            or part[9] ~= nil or part[8] == nil then
-          return nil
-        end
-      elseif record[11] ~= 0 then
-        -- an axis-parallel rectangle (rectKind): the coordinates of its first and third
-        -- vertices, the four watched (see partBox), read at constant indices, not through the
-        -- indices kept (a conversion and a bounds check each: the scan of the 20 parts of
-        -- bench/compound.lua took a fifth fewer machine instructions), and its length 8
-        if part[1] ~= record[12] or part[2] ~= record[13] or part[5] ~= record[14]
-            or part[6] ~= record[15] or part[9] ~= nil or part[8] == nil then
-          return nil
-        end
-      else
-        local n = record[10]
-        if n >= 6 then
-          -- the length as a border, part[n] set and part[n + 1] not, the same for an array
-          -- without holes: #part is a call on LuaJIT, across which every live number goes to
-          -- memory (the scan of 20 parts of bench/compound.lua took 13 % longer with it)
-          if part[n + 1] ~= nil or part[n] == nil or part[record[5]] ~= xmin
-              or part[record[6]] ~= ymin or part[record[7]] ~= xmax or part[record[8]] ~= ymax then
-            return nil
-          end
-        elseif #part ~= n then
-          return nil
-        end
-      end
-      -- the largest gap between the boxes (< 0 when they overlap: a - b < 0 exactly when a < b,
-      -- no NaN), by max: one branch for most parts (PUC Lua's tests: four, each a side exit)
-      local gapX, gapY = max(xmin - x1, x0 - xmax), max(ymin - y1, y0 - ymax)
-      local gap = max(gapX, gapY)
-      if gap < window then
-        near = near + 1
-        nearParts[near] = k
-        if gap < 0 then
-          found = found + 1
-          overlapping[found] = k
-        elseif gapX >= gapY then
-          leastGapX = min(leastGapX, gapX)
-        else
-          leastGapY = min(leastGapY, gapY)
-        end
-      end
-    end
-    return found, near, leastGapX, leastGapY
-  end
-else
-  partsOverlapping = function(info, shape, x0, y0, x1, y1, window)
-    local found, near, leastGapX, leastGapY = 0, 0, huge, huge
-    local wx0, wy0, wx1, wy1 = x0 - window, y0 - window, x1 + window, y1 + window
-    local records = info.records
-    for k = 1, info.count do
-      local part, record = shape[k], records[k]
-      local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
-      local n = record[16]   -- 0 for a rectangle from its (xmin, ymin), else the length
-      if part ~= record[9] then return nil end
-      if n == 0 then
-        -- its watched coordinates at constant indices, against the box's values loaded: two VM
-        -- instructions each, where the indices kept take three (14 a part for the checks here,
-        -- 18 below; the 20 parts of bench/compound.lua's floor are such rectangles)
-        if #part ~= 8 or part[1] ~= xmin or part[2] ~= ymin or part[5] ~= xmax or part[6] ~= ymax then
-          return nil
-        end
-      elseif #part ~= n or n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
-          or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+
+-- partsOverlapping for LuaJIT: the changes sought by array borders (#part is a call there), the
+-- box tests by the largest gap.
+local function partsOverlappingJit(info, shape, x0, y0, x1, y1, window)
+  local found, near, leastGapX, leastGapY = 0, 0, huge, huge
+  local records = info.records
+  for k = 1, info.count do
+    local part, record = shape[k], records[k]
+    local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
+    if part ~= record[9] then return nil end
+    if record[16] == 0 then
+      -- a rectangle from its (xmin, ymin): as below, against the box's values loaded (fewer
+      -- machine instructions than reading record[12] .. [15])
+      if part[1] ~= xmin or part[2] ~= ymin or part[5] ~= xmax or part[6] ~= ymax
+          or part[9] ~= nil or part[8] == nil then
         return nil
       end
-      if xmin < wx1 and wx0 < xmax and ymin < wy1 and wy0 < ymax then
-        near = near + 1
-        nearParts[near] = k
-        if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
-          found = found + 1
-          overlapping[found] = k
-        else   -- the largest gaps, as on LuaJIT (the same differences)
-          local gapX, gapY = xmin - x1, ymin - y1
-          if x0 - xmax > gapX then gapX = x0 - xmax end
-          if y0 - ymax > gapY then gapY = y0 - ymax end
-          if gapX >= gapY then
-            if gapX < leastGapX then leastGapX = gapX end
-          elseif gapY < leastGapY then
-            leastGapY = gapY
-          end
+    elseif record[11] ~= 0 then
+      -- an axis-parallel rectangle (rectKind): the coordinates of its first and third
+      -- vertices, the four watched (see partBox), read at constant indices, not through the
+      -- indices kept (a conversion and a bounds check each), and its length 8
+      if part[1] ~= record[12] or part[2] ~= record[13] or part[5] ~= record[14]
+          or part[6] ~= record[15] or part[9] ~= nil or part[8] == nil then
+        return nil
+      end
+    else
+      local n = record[10]
+      if n >= 6 then
+        -- the length as a border, part[n] set and part[n + 1] not, the same for an array
+        -- without holes: #part is a call on LuaJIT, across which every live number goes to
+        -- memory
+        if part[n + 1] ~= nil or part[n] == nil or part[record[5]] ~= xmin
+            or part[record[6]] ~= ymin or part[record[7]] ~= xmax or part[record[8]] ~= ymax then
+          return nil
+        end
+      elseif #part ~= n then
+        return nil
+      end
+    end
+    -- the largest gap between the boxes (< 0 when they overlap: a - b < 0 exactly when a < b,
+    -- no NaN), by max: one branch for most parts (PUC Lua's tests: four, each a side exit)
+    local gapX, gapY = max(xmin - x1, x0 - xmax), max(ymin - y1, y0 - ymax)
+    local gap = max(gapX, gapY)
+    if gap < window then
+      near = near + 1
+      nearParts[near] = k
+      if gap < 0 then
+        found = found + 1
+        overlapping[found] = k
+      elseif gapX >= gapY then
+        leastGapX = min(leastGapX, gapX)
+      else
+        leastGapY = min(leastGapY, gapY)
+      end
+    end
+  end
+  return found, near, leastGapX, leastGapY
+end
+
+-- partsOverlapping for PUC Lua: the changes sought by #part, the box tests by comparisons.
+local function partsOverlappingPuc(info, shape, x0, y0, x1, y1, window)
+  local found, near, leastGapX, leastGapY = 0, 0, huge, huge
+  local wx0, wy0, wx1, wy1 = x0 - window, y0 - window, x1 + window, y1 + window
+  local records = info.records
+  for k = 1, info.count do
+    local part, record = shape[k], records[k]
+    local xmin, ymin, xmax, ymax = record[1], record[2], record[3], record[4]
+    local n = record[16]   -- 0 for a rectangle from its (xmin, ymin), else the length
+    if part ~= record[9] then return nil end
+    if n == 0 then
+      -- its watched coordinates at constant indices, against the box's values loaded: two VM
+      -- instructions each, where the indices kept take three
+      if #part ~= 8 or part[1] ~= xmin or part[2] ~= ymin or part[5] ~= xmax or part[6] ~= ymax then
+        return nil
+      end
+    elseif #part ~= n or n >= 6 and (part[record[5]] ~= xmin or part[record[6]] ~= ymin
+        or part[record[7]] ~= xmax or part[record[8]] ~= ymax) then
+      return nil
+    end
+    if xmin < wx1 and wx0 < xmax and ymin < wy1 and wy0 < ymax then
+      near = near + 1
+      nearParts[near] = k
+      if xmin < x1 and x0 < xmax and ymin < y1 and y0 < ymax then
+        found = found + 1
+        overlapping[found] = k
+      else   -- the largest gaps, as on LuaJIT (the same differences)
+        local gapX, gapY = xmin - x1, ymin - y1
+        if x0 - xmax > gapX then gapX = x0 - xmax end
+        if y0 - ymax > gapY then gapY = y0 - ymax end
+        if gapX >= gapY then
+          if gapX < leastGapX then leastGapX = gapX end
+        elseif gapY < leastGapY then
+          leastGapY = gapY
         end
       end
     end
-    return found, near, leastGapX, leastGapY
   end
+  return found, near, leastGapX, leastGapY
 end
+
+local partsOverlapping = JIT and partsOverlappingJit or partsOverlappingPuc
 
 -- Whether some pair 1 .. np overlaps, decided exactly (on LuaJIT, after addPair found none that
 -- overlaps for sure): as the boolean decides each pair.
@@ -216,6 +216,12 @@ end
 -- The compound cases of the public functions: whether shape1 and shape2 (flat arrays or lists
 -- of parts: parts1, parts2, as isParts tells, which the public functions did inline) overlap,
 -- or with wantPush the least translation of shape2 out of shape1 as overlap, dx, dy, or false.
+-- Its steps: the views (a list against a flat shape scanned by partsOverlapping), the boolean,
+-- the scaling, the pairs whose boxes overlap, then rounds of pairs near the best free point.
+-- It stays whole: the functions it calls raise argument errors at levels counted from its
+-- frame (listView's and overlapsConvex's 4, addPair's checkCopy 5, its own checkCopy 4), so a
+-- step moved into a function of its own would put those errors on the wrong line; and the
+-- rounds share a dozen numbers with the steps before them (np, top, k, margin, the window).
 local function collideParts(fname, shape1, shape2, wantPush, parts1, parts2)
   local view1, view2, found, nearCount, window, leastGapX, leastGapY
   if parts1 ~= parts2 then
@@ -649,5 +655,7 @@ end
 
 M.collideParts = collideParts
 M.collideCircleParts = collideCircleParts
+M.partsOverlappingJit = partsOverlappingJit   -- both bodies, for spec/bodies_compound_spec.lua
+M.partsOverlappingPuc = partsOverlappingPuc
 
 return M

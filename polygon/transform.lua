@@ -14,7 +14,7 @@ local polygonCentroid, polygonArea = measures.polygonCentroid, measures.polygonA
 local M = {}
 
 -- A shape here is a flat array {x1, y1, ...} or a list of convex parts {part1, part2, ...}, each
--- part a flat array; isParts (Compound shapes) tells them apart by the first entry.
+-- part a flat array; isParts (polygon/views.lua) tells them apart by the first entry.
 
 
 -- Checks a list of parts: every entry a table with an even count. Returns their number. level as

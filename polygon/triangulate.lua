@@ -68,8 +68,7 @@ local function orient(a, b, c)
   if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
   -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
   -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
-  -- too complex"), which cost polygonConvexParts 50 times its time on a 100-vertex outline
-  -- (Branches taken half the time, as an if for |l + r| or for the sign returned, made more.)
+  -- too complex"), as did branches taken half the time
   local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
   local s = l - r
   local e = CROSS_BOUND * abs(l + r)
@@ -143,6 +142,9 @@ end
 -- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces);
 -- the order along the line is a sorted array, searched by halving. (A skip list, which spares
 -- the array's shifts, made LuaJIT grow traces until its machine-code area ran out.)
+-- The sweep stays in this file, with the ear clipping: both read the node arrays, which one
+-- call makes and drops, through orient, which reads the call's turn; a file of its own would
+-- share that state across files or pass it through its hot loops as arguments.
 local sweepLeft, sweepRight
 local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
 local placeOrder, placeCount   -- the nodes in (x, y) order (see sortPlaces), and their count
@@ -367,7 +369,7 @@ local function sweep(starts)
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
         if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
       else
-        if not JIT then   -- as for table.insert above (a loop is 40 % faster on LuaJIT)
+        if not JIT then   -- as for table.insert above (on LuaJIT the loop is faster)
           table.remove(status, lo)
         elseif lo - bottom - 1 < bottom + m - lo then   -- the entries below s move up
           for j = lo, bottom + 2, -1 do status[j] = status[j - 1] end
@@ -1095,33 +1097,17 @@ function M.polygonTriangulate(points, holes)
   return out
 end
 
---- Splits a polygon, optionally with holes, into convex parts: the triangulation's triangles
--- merged greedily across their shared edges while both ends stay convex (Hertel and Mehlhorn:
--- at most four times the fewest parts possible). Builds new tables: for load time.
--- Arguments and errors as polygonTriangulate; a convex polygon gives one part.
--- @return an array of convex polygons (flat arrays of input vertices, wound like points), or
--- nil and a message
-function M.polygonConvexParts(points, holes)
-  local tris, message = triangulate("polygonConvexParts", points, holes)
-  if not tris then releaseNodes(); return nil, message end
-  -- corners: three per triangle, linked around their part; a part is the triangles joined so far
-  local cornerCount = #tris
-  local node, nextCorner = newArray(cornerCount), newArray(cornerCount)
-  local prevCorner, part = newArray(cornerCount), newArray(cornerCount)
+-- The corners' edges that the triangulation holds both ways (u -> v in one triangle, v -> u in
+-- the next), as pairs of corners in a flat array: the edges two parts may merge across. Edges
+-- meet by the input vertices they join, so a bridge is an edge like any other: each corner's
+-- edge u -> v waits in a list kept at the lower of u and v (a few corners) until the edge
+-- v -> u comes; a later u -> v takes the place of one waiting. (A list at a vertex, not a hash
+-- table keyed by the pair, which grew by rehashing.)
+local function sharedEdges(tris, node, nextCorner, cornerCount)
   local joins = newArray(cornerCount)
   local idLimit = 0
   for k = 1, nodeCount do idLimit = max(idLimit, origin[k]) end
   idLimit = idLimit + 1
-  for c = 1, #tris do
-    local first = c - (c - 1) % 3
-    node[c], part[c] = tris[c], first   -- part: a corner's union-find link, the first of a triangle
-    nextCorner[c] = c % 3 == 0 and first or c + 1
-    prevCorner[c] = c == first and first + 2 or c - 1
-  end
-  -- edges meet by the input vertices they join, so a bridge is an edge like any other: each
-  -- corner's edge u -> v waits in a list kept at the lower of u and v (a few corners) until the
-  -- edge v -> u comes; a later u -> v takes the place of one waiting. (A hash table keyed by
-  -- the pair took a quarter of the time at 10,000 vertices, and grew by rehashing.)
   local waitingAt, nextWaiting = newArray(idLimit), newArray(cornerCount)
   for c = 1, #tris do
     local u, v = origin[node[c]], origin[node[nextCorner[c]]]
@@ -1146,7 +1132,14 @@ function M.polygonConvexParts(points, holes)
       end
     end
   end
-  -- a dropped corner's outgoing edge now starts at heir[corner]
+  return joins
+end
+
+-- Merges the parts across each shared edge (joins, from sharedEdges) in turn, when the two
+-- parts differ and both ends of the edge stay convex: the corners' rings are spliced, and the
+-- part of one joined to the other's (union-find). Returns heir: a dropped corner's outgoing
+-- edge now starts at heir[corner].
+local function mergeParts(joins, node, nextCorner, prevCorner, part, cornerCount)
   local heir = newArray(cornerCount)
   for j = 1, #joins, 2 do
     local pu, qv = joins[j], joins[j + 1]
@@ -1167,6 +1160,11 @@ function M.polygonConvexParts(points, holes)
       part[rq] = rp
     end
   end
+  return heir
+end
+
+-- The parts as flat arrays of input vertices: each ring of corners still alive (no heir), once.
+local function partPolygons(tris, node, nextCorner, heir, cornerCount)
   local out, seen = {}, newArray(cornerCount)   -- seen: filled out of order, so made at size
   for c = 1, #tris do
     if not heir[c] and not seen[c] then
@@ -1179,9 +1177,33 @@ function M.polygonConvexParts(points, holes)
       out[#out + 1] = poly
     end
   end
-  releaseNodes()
   return out
 end
 
+--- Splits a polygon, optionally with holes, into convex parts: the triangulation's triangles
+-- merged greedily across their shared edges while both ends stay convex (Hertel and Mehlhorn:
+-- at most four times the fewest parts possible). Builds new tables: for load time.
+-- Arguments and errors as polygonTriangulate; a convex polygon gives one part.
+-- @return an array of convex polygons (flat arrays of input vertices, wound like points), or
+-- nil and a message
+function M.polygonConvexParts(points, holes)
+  local tris, message = triangulate("polygonConvexParts", points, holes)
+  if not tris then releaseNodes(); return nil, message end
+  -- corners: three per triangle, linked around their part; a part is the triangles joined so far
+  local cornerCount = #tris
+  local node, nextCorner = newArray(cornerCount), newArray(cornerCount)
+  local prevCorner, part = newArray(cornerCount), newArray(cornerCount)
+  for c = 1, #tris do
+    local first = c - (c - 1) % 3
+    node[c], part[c] = tris[c], first   -- part: a corner's union-find link, the first of a triangle
+    nextCorner[c] = c % 3 == 0 and first or c + 1
+    prevCorner[c] = c == first and first + 2 or c - 1
+  end
+  local joins = sharedEdges(tris, node, nextCorner, cornerCount)
+  local heir = mergeParts(joins, node, nextCorner, prevCorner, part, cornerCount)
+  local out = partPolygons(tris, node, nextCorner, heir, cornerCount)
+  releaseNodes()
+  return out
+end
 
 return M
