@@ -1072,19 +1072,8 @@ local function releaseNodes()
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
 end
 
---- Splits a polygon, optionally with holes, into triangles. Builds new tables: for load time,
--- not for every frame.
--- points: a flat array; holes: nil or an array of flat arrays inside the polygon (a hole may
--- touch the outline or another hole at a vertex). Weakly simple outlines work: repeated
--- vertices, straight runs, outlines touching themselves at a vertex (tile-map outlines).
--- Every decision is an exact sign; no triangle has zero area. Edges that properly cross are
--- found by a sweep (Shamos and Hoey), an outline crossing or running along itself where
--- vertices meet by the order of the edges around each such place; the ears cost a few
--- microseconds per vertex on LuaJIT, growing about as the square root of n on outlines of long
--- thin spikes (bench/concave.lua).
--- @return an array of triangles {x1, y1, x2, y2, x3, y3}, copies of input vertices, each wound
--- like points; or nil and a message (fewer than 3 points, zero area, crossing edges, a hole
--- outside the polygon)
+-- polygonTriangulate, documented in polygon.lua: the triangles as new tables of the input's own
+-- numbers, each wound like points.
 function M.polygonTriangulate(points, holes)
   local tris, message = triangulate("polygonTriangulate", points, holes)
   if not tris then releaseNodes(); return nil, message end
@@ -1180,12 +1169,9 @@ local function partPolygons(tris, node, nextCorner, heir, cornerCount)
   return out
 end
 
---- Splits a polygon, optionally with holes, into convex parts: the triangulation's triangles
--- merged greedily across their shared edges while both ends stay convex (Hertel and Mehlhorn:
--- at most four times the fewest parts possible). Builds new tables: for load time.
--- Arguments and errors as polygonTriangulate; a convex polygon gives one part.
--- @return an array of convex polygons (flat arrays of input vertices, wound like points), or
--- nil and a message
+-- polygonConvexParts, documented in polygon.lua: the triangles merged greedily across their
+-- shared edges while both ends stay convex (Hertel and Mehlhorn: at most four times the fewest
+-- parts possible). Builds new tables.
 function M.polygonConvexParts(points, holes)
   local tris, message = triangulate("polygonConvexParts", points, holes)
   if not tris then releaseNodes(); return nil, message end
