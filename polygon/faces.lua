@@ -1,6 +1,6 @@
 -- polygon/faces.lua: the push search over lists of convex parts: the half-planes (faces) of
 -- each pair of parts, the nearest free foot or crossing among them, and the faster search for
--- axis-parallel rectangles. Relies on views and sat.
+-- axis-parallel rectangles. Relies on kernel, sat and views.
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local sat = require(_PACKAGE .. ".sat")
