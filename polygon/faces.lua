@@ -1,6 +1,6 @@
 -- polygon/faces.lua: the push search over lists of convex parts: the half-planes (faces) of
 -- each pair of parts, the nearest free foot or crossing among them, and the faster search for
--- axis-parallel rectangles. Relies on views and sat.
+-- axis-parallel rectangles. Relies on kernel, sat and views.
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local sat = require(_PACKAGE .. ".sat")
@@ -24,7 +24,7 @@ local faceSeam = {}                -- 1 for a face from an internal edge (no foo
 local faceReach = {}               -- |faceC + lift|: how near the origin the face's lifted line passes
 local faceFirst = {}               -- pair p owns faces faceFirst[p] .. faceFirst[p + 1] - 1
 local pairAdded = {}               -- per pair of parts i, j (at (i - 1) count2 + j): call.stamp once in
-local pairPart1, pairPart2 = {}, {}   -- pair p's parts i and j (LuaJIT: see pairsOverlap)
+local pairPart1, pairPart2 = {}, {}   -- pair p's parts i and j (LuaJIT: compound.lua's pairsOverlap)
 -- pairBox[p] is 1 when pair p is two axis-parallel rectangles (rectPairFaces, boxPush), else 0;
 -- then pairRects holds their boxes at 8p - 7 .. 8p: xmin, ymin, xmax, ymax of the first shape's
 -- part, then of the second's, the one a push moves (pushFree)
@@ -39,31 +39,33 @@ local function overlapsConvex(fname, p1, p2)
   return depth ~= false
 end
 
--- The same number as minProjection: the least projection nx (vx - ax) + ny (vy - ay) over the
--- vertices of points. On LuaJIT four vertices a round, the last round padded with the last
--- vertex (a repeat cannot change the least), so that a part of up to four vertices takes no
--- loop: a loop that never runs twice is compiled into its caller's trace, where minProjection's
--- loop was a trace of its own, entered and left once per edge (22 % of the push's time on the
--- crate and floor of bench/compound.lua by `luajit -jp=f`, 7 % as here). PUC Lua: minProjection.
-local leastProjection = minProjection
-if JIT then
-  leastProjection = function(points, n, ax, ay, nx, ny)
-    local lo, last = huge, n - 1
-    for i = 1, last, 16 do
-      local i2, i3, i4 = min(i + 2, last), min(i + 4, last), min(i + 6, last)
-      local i5, i6, i7, i8 = min(i + 8, last), min(i + 10, last), min(i + 12, last), min(i + 14, last)
-      lo = min(lo, nx * (points[i] - ax) + ny * (points[i + 1] - ay),
-        nx * (points[i2] - ax) + ny * (points[i2 + 1] - ay),
-        nx * (points[i3] - ax) + ny * (points[i3 + 1] - ay),
-        nx * (points[i4] - ax) + ny * (points[i4 + 1] - ay),
-        nx * (points[i5] - ax) + ny * (points[i5 + 1] - ay),
-        nx * (points[i6] - ax) + ny * (points[i6 + 1] - ay),
-        nx * (points[i7] - ax) + ny * (points[i7 + 1] - ay),
-        nx * (points[i8] - ax) + ny * (points[i8 + 1] - ay))
-    end
-    return lo
+-- The least projection nx (vx - ax) + ny (vy - ay) over the vertices of points. Two bodies,
+-- the same number (spec/bodies_faces_spec.lua compares them).
+-- LuaJIT's: eight vertices a round, the last round padded with the last vertex (a repeat cannot
+-- change the least), so that a part of up to eight vertices takes no loop: a loop that never
+-- runs twice is compiled into its caller's trace, where minProjection's loop is a trace of its
+-- own, entered and left once per edge.
+local function leastProjectionJit(points, n, ax, ay, nx, ny)
+  local lo, last = huge, n - 1
+  for i = 1, last, 16 do
+    local i2, i3, i4 = min(i + 2, last), min(i + 4, last), min(i + 6, last)
+    local i5, i6, i7, i8 = min(i + 8, last), min(i + 10, last), min(i + 12, last), min(i + 14, last)
+    lo = min(lo, nx * (points[i] - ax) + ny * (points[i + 1] - ay),
+      nx * (points[i2] - ax) + ny * (points[i2 + 1] - ay),
+      nx * (points[i3] - ax) + ny * (points[i3 + 1] - ay),
+      nx * (points[i4] - ax) + ny * (points[i4 + 1] - ay),
+      nx * (points[i5] - ax) + ny * (points[i5 + 1] - ay),
+      nx * (points[i6] - ax) + ny * (points[i6 + 1] - ay),
+      nx * (points[i7] - ax) + ny * (points[i7 + 1] - ay),
+      nx * (points[i8] - ax) + ny * (points[i8 + 1] - ay))
   end
+  return lo
 end
+
+-- PUC Lua's: sat's minProjection.
+local leastProjectionPuc = minProjection
+
+local leastProjection = JIT and leastProjectionJit or leastProjectionPuc
 
 -- Whether the edge a -> b of a part (turn its area sign, (ux, uy) its outward normal, unit or
 -- not) separates the part from `other`, whose least projection on (ux, uy) from a is lo:
@@ -84,7 +86,7 @@ local FAR = 2^1000
 -- widened by margin, so pushFree would find it not free (see nearestFree). -FAR for none.
 local leastFree = -FAR
 local nearestFoot, nearestReach, secondFoot, secondReach, seamReach = 0, FAR, 0, FAR, FAR
--- PUC Lua's rectPairFaces keeps its internal faces' nearest reach apart, by line direction:
+-- rectPairFacesPuc keeps its internal faces' nearest reach apart, by line direction:
 -- seamX for the vertical lines (normal (+-1, 0)), seamY for the horizontal ones (see
 -- nearestFree); LuaJIT's keepFeet every internal face's whose normal is one of those
 local seamX, seamY = FAR, FAR
@@ -97,40 +99,16 @@ local function startSearch(lift)
   seamX, seamY, feetKept, leastFree = FAR, FAR, 0, -FAR
 end
 
--- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
--- part give (normals its outward unit normals; sense 1 for a part of the first shape, -1 for
--- one of the second, whose outward normal points the other way in t), with `other` the part it
--- is paired with, and each face's reach (see nearestFree); keeps the nearest feet's faces.
--- Coordinates are scaled by k (spanX, spanY bound the scaled coordinate differences, for
--- projectionTolerance). Returns the last index used.
--- LuaJIT's (PUC Lua's is pairFaces, below: the same faces), in two loops without a branch that
--- goes both ways (each was a side exit whose side trace LuaJIT could not compile, "NYI: register
--- coalescing too complex", thousands of times in `luajit -jv examples/arena.lua 300 default`):
--- the faces, with the projections by leastProjection, here, and the nearest feet, by keepFeet
--- over all new faces at once when nearestFree needs them (one loop of 4 steps per part was a
--- quarter of the push's time on the crate and floor of bench/compound.lua, `luajit -jp=l`). The
--- face loop runs a constant 8 steps for parts of up to 8 vertices (a repeated vertex, as the last
--- one read again is, adds no face, without a branch): the copies of a loop counting a part's
--- vertices had a side exit for every other part size, and those failed to compile in the arena
--- (`luajit -jv examples/arena.lua 300 default`, NYI aborts in this section, 8 runs each:
--- 0, 0, 272, 803, 4, 102, 520 and 0 before, at most 4 a run after; its frames 6.9-9.3 ms before,
--- 5.3-6.8 after, 3 runs each). Instead
--- of whether some edge separates the parts it returns 1 when none can (then they overlap for
--- sure), else 0: collideParts decides those pairs exactly when it needs to (pairsOverlap).
-local addFaces
-
 -- Keeps the nearest feet and the nearest internal faces among faces first .. last, in order, as
--- nearestFoot and the rest describe, and as pairFaces does with branches: here without one
--- (for LuaJIT). Each choice is a factor 0 or 1 (isAbove), and a sum of products by them is
--- exactly the value chosen (every value finite: FAR, not huge). An internal face whose unit
--- normal is (+-1, 0) or (0, +-1) (one component a zero) goes into seamX or seamY, as PUC Lua's
--- rectPairFaces keeps a rectangle pair's, whatever pair it is from: the early end of
--- nearestFree needs only that the lines it counts there be parallel, so that no two of them
--- cross (their det is a zero; a crate at a seam of a floor of boxes: its neighbours'
--- vertical internal faces, which sent four calls in five of bench/compound.lua's pushFloor
--- into the crossing search on LuaJIT: with them apart, 24.4 -> 22.4 simulated branch
--- mispredictions a call, `valgrind --tool=cachegrind --branch-sim=yes`, and the ratio to
--- the pair calls 1.20 -> 1.10, medians over five fixed trace seeds: see bench/NOTES.md).
+-- nearestFoot and the rest describe, and as pairFacesPuc does with branches: here without one
+-- (for LuaJIT's bodies: addFaces' faces, rectPairFacesJit's). Each choice is a factor 0 or 1
+-- (isAbove), and a sum of products by them is exactly the value chosen (every value finite:
+-- FAR, not huge). An internal face whose unit normal is (+-1, 0) or (0, +-1) (one component a
+-- zero) goes into seamX or seamY, as rectPairFacesPuc keeps a rectangle pair's, whatever pair
+-- it is from: the early end of nearestFree needs only that the lines it counts there be
+-- parallel, so that no two of them cross (their det is a zero; a crate at a seam of a floor
+-- of boxes: its neighbours' vertical internal faces, kept with the others, would send it into
+-- the crossing search).
 local function keepFeet(first, last)
   local foot, footReach, foot2, foot2Reach = nearestFoot, nearestReach, secondFoot, secondReach
   local seamLeast, seamLeastX, seamLeastY = seamReach, seamX, seamY
@@ -158,42 +136,57 @@ local function keepFeet(first, last)
   seamReach, seamX, seamY = seamLeast, seamLeastX, seamLeastY
 end
 
-if JIT then
-  addFaces = function(edges, ne, normals, other, no, internal, sense, k, spanX, spanY, top)
-    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-    local lift, highest = faceLift, -huge   -- highest: the largest lo
-    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-    -- up to 8 vertices a constant count, the last vertex again past the last (see faceAndFar)
-    local last = ne <= 16 and 15 or ne - 1
-    for i = 1, last, 2 do
-      local l = min(i, ne - 1)
-      local bx, by = edges[l] + 0.0, edges[l + 1] + 0.0
-      -- 1 for an edge, 0 for a repeated vertex, which gives none (its normal is (0, 0)): its
-      -- face is written past top, and left there
-      local edge = isAbove(abs(bx - ax) + abs(by - ay))
-      local ux, uy = normals[l], normals[l + 1]
-      local lo
-      if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
-        lo = huge
-        local kax, kay = ax * k, ay * k
-        for j = 1, no - 1, 2 do
-          lo = min(lo, ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay))
-        end
-      else
-        lo = leastProjection(other, no, ax, ay, ux, uy)
+-- Appends to the face arrays, from index top + 1, the half-planes of D that the edges of one
+-- part give (normals its outward unit normals; sense 1 for a part of the first shape, -1 for
+-- one of the second, whose outward normal points the other way in t), with `other` the part it
+-- is paired with, and each face's reach (see nearestFree). Coordinates are scaled by k (spanX,
+-- spanY bound the scaled coordinate differences, for projectionTolerance). Returns the last
+-- index used, `sure` (below) and the largest lo.
+-- LuaJIT's (pairFacesJit's, once a part; pairFacesPuc gives the same faces), in two loops
+-- without a branch that goes both ways (on LuaJIT such a branch is a side exit whose side trace
+-- may fail to compile, "NYI: register coalescing too complex"): the faces, with the projections
+-- by leastProjection, here, and the nearest feet, by keepFeet over all new faces at once when
+-- nearestFree needs them. The face loop runs a constant 8 steps for parts of up to 8 vertices
+-- (a repeated vertex, as the last one read again is, adds no face, without a branch): a loop
+-- counting a part's vertices has a side exit for every other part size. Instead of whether
+-- some edge separates the parts it returns `sure`, 1 when none can (then they overlap for
+-- sure), else 0: compound.lua's collideParts decides those pairs exactly when it needs to
+-- (pairsOverlap).
+local function addFaces(edges, ne, normals, other, no, internal, sense, k, spanX, spanY, top)
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local lift, highest = faceLift, -huge   -- highest: the largest lo
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  -- up to 8 vertices a constant count, the last vertex again past the last (see sat.lua's
+  -- faceAndFar)
+  local last = ne <= 16 and 15 or ne - 1
+  for i = 1, last, 2 do
+    local l = min(i, ne - 1)
+    local bx, by = edges[l] + 0.0, edges[l + 1] + 0.0
+    -- 1 for an edge, 0 for a repeated vertex, which gives none (its normal is (0, 0)): its
+    -- face is written past top, and left there
+    local edge = isAbove(abs(bx - ax) + abs(by - ay))
+    local ux, uy = normals[l], normals[l + 1]
+    local lo
+    if k ~= 1 then   -- scaled: the same numbers as unscaled where k is 1
+      lo = huge
+      local kax, kay = ax * k, ay * k
+      for j = 1, no - 1, 2 do
+        lo = min(lo, ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay))
       end
-      highest = max(highest, lo - (1 - edge) * FAR)
-      local slot = top + 1
-      fx[slot], fy[slot], fc[slot] = ux * sense, uy * sense, -lo
-      seam[slot], reach[slot] = internal[l], abs(lift - lo)
-      top = top + edge
-      ax, ay = bx, by
+    else
+      lo = leastProjection(other, no, ax, ay, ux, uy)
     end
-    -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic):
-    -- an edge whose -lo exceeds it cannot separate; 1 when every edge's does (no NaN: a
-    -- difference is > 0 exactly when its first term is the larger)
-    return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest), highest
+    highest = max(highest, lo - (1 - edge) * FAR)
+    local slot = top + 1
+    fx[slot], fy[slot], fc[slot] = ux * sense, uy * sense, -lo
+    seam[slot], reach[slot] = internal[l], abs(lift - lo)
+    top = top + edge
+    ax, ay = bx, by
   end
+  -- projectionTolerance's bound for any unit normal (|ux|, |uy| <= 1; rounding is monotonic):
+  -- an edge whose -lo exceeds it cannot separate; 1 when every edge's does (no NaN: a
+  -- difference is > 0 exactly when its first term is the larger)
+  return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest), highest
 end
 
 -- LuaJIT's faces of a pair of which one part is an axis-parallel rectangle (rectKind, unscaled)
@@ -204,31 +197,27 @@ end
 -- corner whose terms are least, and every corner is a vertex of the other part when it is the
 -- rectangle (its vertices are its box's corners), while against a part that is not, the
 -- rectangle's own edges have normals (+-1, +-0), whose projection of a vertex is +-(x - ax) (or
--- +-(y - ay)) up to a zero's sign, least at the box's side. (The crate turned 0.5 radian on the
--- floor of bench/compound.lua: addFaces and leastProjection were 39 % of its push by `luajit
--- -jp=f`.) The loop as addFaces' (constant 8 steps up to 8 vertices).
-local addBoxFaces
-if JIT then
-  addBoxFaces = function(edges, ne, normals, x0, y0, x1, y1, internal, sense, spanX, spanY, top)
-    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-    local lift, highest = faceLift, -huge   -- highest: the largest lo
-    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-    local last = ne <= 8 and 7 or ne <= 16 and 15 or ne - 1
-    for i = 1, last, 2 do
-      local l = min(i, ne - 1)
-      local bx, by = edges[l] + 0.0, edges[l + 1] + 0.0
-      local edge = isAbove(abs(bx - ax) + abs(by - ay))   -- as in addFaces
-      local ux, uy = normals[l], normals[l + 1]
-      local lo = min(ux * (x0 - ax), ux * (x1 - ax)) + min(uy * (y0 - ay), uy * (y1 - ay))
-      highest = max(highest, lo - (1 - edge) * FAR)
-      local slot = top + 1
-      fx[slot], fy[slot], fc[slot] = ux * sense, uy * sense, -lo
-      seam[slot], reach[slot] = internal[l], abs(lift - lo)
-      top = top + edge
-      ax, ay = bx, by
-    end
-    return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest), highest
+-- +-(y - ay)) up to a zero's sign, least at the box's side. The loop as addFaces' (constant 8
+-- steps up to 8 vertices).
+local function addBoxFaces(edges, ne, normals, x0, y0, x1, y1, internal, sense, spanX, spanY, top)
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local lift, highest = faceLift, -huge   -- highest: the largest lo
+  local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+  local last = ne <= 8 and 7 or ne <= 16 and 15 or ne - 1
+  for i = 1, last, 2 do
+    local l = min(i, ne - 1)
+    local bx, by = edges[l] + 0.0, edges[l + 1] + 0.0
+    local edge = isAbove(abs(bx - ax) + abs(by - ay))   -- as in addFaces
+    local ux, uy = normals[l], normals[l + 1]
+    local lo = min(ux * (x0 - ax), ux * (x1 - ax)) + min(uy * (y0 - ay), uy * (y1 - ay))
+    highest = max(highest, lo - (1 - edge) * FAR)
+    local slot = top + 1
+    fx[slot], fy[slot], fc[slot] = ux * sense, uy * sense, -lo
+    seam[slot], reach[slot] = internal[l], abs(lift - lo)
+    top = top + edge
+    ax, ay = bx, by
   end
+  return top, isAbove(-(16 * EPS * (spanX + spanY)) - highest), highest
 end
 
 -- LuaJIT's faces of part i of view, an axis-parallel rectangle (rectKind), against a part that
@@ -237,222 +226,223 @@ end
 -- less the rectangle's own, the same numbers as rectPairFaces' (a side's normal (+-1, 0) or
 -- (0, +-1): its projections are the coordinates' differences, least at the box's side, exactly
 -- as addBoxFaces computes them, up to zeros' signs, which change no comparison and no push).
--- (SIDE_X, SIDE_Y: the outward normals of the sides left, top, right, bottom; see rectPairFaces)
+-- (SIDE_X, SIDE_Y: the outward normals of the sides left, top, right, bottom, as rectSides
+-- numbers them)
 local SIDE_X, SIDE_Y = { -1.0, 0.0, 1.0, 0.0 }, { 0.0, -1.0, 0.0, 1.0 }
-local rectFaces
-if JIT then
-  local rectC = { 0.0, 0.0, 0.0, 0.0 }
-  rectFaces = function(view, i, boxes, b, sense, spanX, spanY, top)
-    local sides, internal, own, a = view.sides[i], view.internal[i], view.boxes, 4 * i
-    local cLeft, cTop = boxes[b - 1] - own[a - 3], boxes[b] - own[a - 2]
-    local cRight, cBottom = own[a - 1] - boxes[b - 3], own[a] - boxes[b - 2]
-    local c = rectC
-    c[1], c[2], c[3], c[4] = cLeft, cTop, cRight, cBottom
-    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-    local lift = faceLift
-    local line = sides[1]
-    fx[top + 1], fy[top + 1], fc[top + 1], seam[top + 1], reach[top + 1] = SIDE_X[line] * sense,
-      SIDE_Y[line] * sense, c[line], internal[1], abs(lift + c[line])
-    line = sides[3]
-    fx[top + 2], fy[top + 2], fc[top + 2], seam[top + 2], reach[top + 2] = SIDE_X[line] * sense,
-      SIDE_Y[line] * sense, c[line], internal[3], abs(lift + c[line])
-    line = sides[5]
-    fx[top + 3], fy[top + 3], fc[top + 3], seam[top + 3], reach[top + 3] = SIDE_X[line] * sense,
-      SIDE_Y[line] * sense, c[line], internal[5], abs(lift + c[line])
-    line = sides[7]
-    fx[top + 4], fy[top + 4], fc[top + 4], seam[top + 4], reach[top + 4] = SIDE_X[line] * sense,
-      SIDE_Y[line] * sense, c[line], internal[7], abs(lift + c[line])
-    -- addFaces' 1 when no side can separate: every lo = -c below -16 eps (spanX + spanY); and
-    -- the largest lo
-    local least = min(cLeft, cTop, cRight, cBottom)
-    return top + 4, isAbove(least - 16 * EPS * (spanX + spanY)), -least
-  end
+local rectC = { 0.0, 0.0, 0.0, 0.0 }
+local function rectFaces(view, i, boxes, b, sense, spanX, spanY, top)
+  local sides, internal, own, a = view.sides[i], view.internal[i], view.boxes, 4 * i
+  local cLeft, cTop = boxes[b - 1] - own[a - 3], boxes[b] - own[a - 2]
+  local cRight, cBottom = own[a - 1] - boxes[b - 3], own[a] - boxes[b - 2]
+  local c = rectC
+  c[1], c[2], c[3], c[4] = cLeft, cTop, cRight, cBottom
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local lift = faceLift
+  local line = sides[1]
+  fx[top + 1], fy[top + 1], fc[top + 1], seam[top + 1], reach[top + 1] = SIDE_X[line] * sense,
+    SIDE_Y[line] * sense, c[line], internal[1], abs(lift + c[line])
+  line = sides[3]
+  fx[top + 2], fy[top + 2], fc[top + 2], seam[top + 2], reach[top + 2] = SIDE_X[line] * sense,
+    SIDE_Y[line] * sense, c[line], internal[3], abs(lift + c[line])
+  line = sides[5]
+  fx[top + 3], fy[top + 3], fc[top + 3], seam[top + 3], reach[top + 3] = SIDE_X[line] * sense,
+    SIDE_Y[line] * sense, c[line], internal[5], abs(lift + c[line])
+  line = sides[7]
+  fx[top + 4], fy[top + 4], fc[top + 4], seam[top + 4], reach[top + 4] = SIDE_X[line] * sense,
+    SIDE_Y[line] * sense, c[line], internal[7], abs(lift + c[line])
+  -- addFaces' 1 when no side can separate: every lo = -c below -16 eps (spanX + spanY); and
+  -- the largest lo
+  local least = min(cLeft, cTop, cRight, cBottom)
+  return top + 4, isAbove(least - 16 * EPS * (spanX + spanY)), -least
 end
 
--- The faces of both parts of a pair: addFaces for p1 (sense 1) and then for p2 (sense -1), and
--- 1 when the parts overlap, else 0: decided exactly on PUC Lua; on LuaJIT 0 also when they
--- may not (see addFaces). On PUC Lua one call for both (the arguments and
--- the set-up of a call were a tenth of the faces' instructions), minProjection's loop inline,
--- unrolled for a quadrilateral.
-local pairFaces
-if JIT then
-  pairFaces = function(p1, n1, _, normals1, internal1, p2, n2, _, normals2, internal2,
-                       k, spanX, spanY, top)
-    local sure1, sure2, highest1, highest2
-    top, sure1, highest1 = addFaces(p1, n1, normals1, p2, n2, internal1, 1.0, k, spanX, spanY, top)
-    top, sure2, highest2 = addFaces(p2, n2, normals2, p1, n1, internal2, -1.0, k, spanX, spanY, top)
-    return top, sure1 * sure2, max(highest1, highest2)
-  end
-else
-  pairFaces = function(p1, n1, turn1, normals1, internal1, p2, n2, turn2, normals2, internal2,
-                       k, spanX, spanY, top, boxes1, a, boxes2, b, rect1, rect2)
-    local separated, highest = false, -huge   -- highest: the largest lo
-    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-    local lift, foot, footReach = faceLift, nearestFoot, nearestReach
-    local foot2, foot2Reach = secondFoot, secondReach
-    local scaled = k ~= 1
-    -- lo < loBound, -lo > 16 eps (spanX + spanY), projectionTolerance's bound for any unit
-    -- normal (|ux|, |uy| <= 1; rounding is monotonic): the edge cannot separate
-    local loBound = -(16 * EPS * (spanX + spanY))
-    -- p1's edges against p2's vertices, then p2's against p1's (one assignment per statement:
-    -- Lua 5.4 moves a multiple assignment through a temporary per value)
-    local edges, ne, turn, normals, internal, other, no, sense =
-      p1, n1, turn1, normals1, internal1, p2, n2, 1.0
-    local ownBoxes, e, otherBoxes, o, rect = boxes1, a, boxes2, b, rect1
-    local otherRect = rect2
-    for side = 1, 2 do
-      if side == 2 then
-        edges = p2
-        ne = n2
-        turn = turn2
-        normals = normals2
-        internal = internal2
-        other = p1
-        no = n1
-        sense = -1.0
-        ownBoxes = boxes2
-        e = b
-        otherBoxes = boxes1
-        o = a
-        rect = rect2
-        otherRect = rect1
+-- The faces of both parts of a pair: addFaces' for p1 (sense 1) and then for p2 (sense -1), 1
+-- when the parts overlap, else 0, and the largest lo. Two bodies, the same faces (up to zeros'
+-- signs, which change no comparison and no push; spec/bodies_faces_spec.lua compares them).
+-- LuaJIT's: addFaces twice; its 1 means overlap for sure, 0 also when the parts may not (see
+-- addFaces); the nearest feet kept later, by keepFeet.
+local function pairFacesJit(p1, n1, _, normals1, internal1, p2, n2, _, normals2, internal2,
+                            k, spanX, spanY, top)
+  local sure1, sure2, highest1, highest2
+  top, sure1, highest1 = addFaces(p1, n1, normals1, p2, n2, internal1, 1.0, k, spanX, spanY, top)
+  top, sure2, highest2 = addFaces(p2, n2, normals2, p1, n1, internal2, -1.0, k, spanX, spanY, top)
+  return top, sure1 * sure2, max(highest1, highest2)
+end
+
+-- PUC Lua's: overlap decided exactly, the nearest feet kept as the faces are written; one call
+-- for both parts (a call's arguments and set-up cost on PUC Lua), minProjection's loop inline,
+-- unrolled for a quadrilateral, an axis-parallel rectangle's faces from the boxes. One function,
+-- not split into steps: it runs for every pair of parts a push tests, where PUC Lua pays for
+-- every call.
+local function pairFacesPuc(p1, n1, turn1, normals1, internal1, p2, n2, turn2, normals2,
+                            internal2, k, spanX, spanY, top, boxes1, a, boxes2, b, rect1, rect2)
+  local separated, highest = false, -huge   -- highest: the largest lo
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+  local foot2, foot2Reach = secondFoot, secondReach
+  local scaled = k ~= 1
+  -- lo < loBound, -lo > 16 eps (spanX + spanY), projectionTolerance's bound for any unit
+  -- normal (|ux|, |uy| <= 1; rounding is monotonic): the edge cannot separate
+  local loBound = -(16 * EPS * (spanX + spanY))
+  -- p1's edges against p2's vertices, then p2's against p1's (one assignment per statement:
+  -- Lua 5.4 moves a multiple assignment through a temporary per value)
+  local edges, ne, turn, normals, internal, other, no, sense =
+    p1, n1, turn1, normals1, internal1, p2, n2, 1.0
+  local ownBoxes, e, otherBoxes, o, rect = boxes1, a, boxes2, b, rect1
+  local otherRect = rect2
+  for side = 1, 2 do
+    if side == 2 then
+      edges = p2
+      ne = n2
+      turn = turn2
+      normals = normals2
+      internal = internal2
+      other = p1
+      no = n1
+      sense = -1.0
+      ownBoxes = boxes2
+      e = b
+      otherBoxes = boxes1
+      o = a
+      rect = rect2
+      otherRect = rect1
+    end
+    local quad = no == 8
+    -- the other part's box (exact: its least and greatest coordinates, as floats)
+    local oxmin, oymin = otherBoxes[o - 3], otherBoxes[o - 2]
+    local oxmax, oymax = otherBoxes[o - 1], otherBoxes[o]
+    -- An axis-parallel rectangle (see rectKind): its faces without reading its vertices or
+    -- normals. Each side's least projection is the axis-parallel edge's below (the same
+    -- number); its edges alternate between vertical and horizontal sides (a vertical one
+    -- first for rect 1), the first vertical one at v1's x, the first horizontal one at v1's y.
+    local vertical, loX, loX2, nx, loY, loY2, ny = rect == 1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    if scaled then
+      rect = 0
+    elseif rect ~= 0 then
+      local exmin, eymin = ownBoxes[e - 3], ownBoxes[e - 2]
+      loX = exmin - oxmax   -- the left side's (outward normal (-1, 0)), then the right's
+      loX2 = oxmin - ownBoxes[e - 1]
+      nx = -1.0
+      if edges[1] + 0.0 ~= exmin then
+        loX2 = loX
+        loX = oxmin - ownBoxes[e - 1]
+        nx = 1.0
       end
-      local quad = no == 8
-      -- the other part's box (exact: its least and greatest coordinates, as floats)
-      local oxmin, oymin = otherBoxes[o - 3], otherBoxes[o - 2]
-      local oxmax, oymax = otherBoxes[o - 1], otherBoxes[o]
-      -- An axis-parallel rectangle (see rectKind): its faces without reading its vertices or
-      -- normals. Each side's least projection is the axis-parallel edge's below (the same
-      -- number); its edges alternate between vertical and horizontal sides (a vertical one
-      -- first for rect 1), the first vertical one at v1's x, the first horizontal one at v1's y.
-      local vertical, loX, loX2, nx, loY, loY2, ny = rect == 1, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-      if scaled then
-        rect = 0
-      elseif rect ~= 0 then
-        local exmin, eymin = ownBoxes[e - 3], ownBoxes[e - 2]
-        loX = exmin - oxmax   -- the left side's (outward normal (-1, 0)), then the right's
-        loX2 = oxmin - ownBoxes[e - 1]
-        nx = -1.0
-        if edges[1] + 0.0 ~= exmin then
-          loX2 = loX
-          loX = oxmin - ownBoxes[e - 1]
-          nx = 1.0
-        end
-        loY = eymin - oymax   -- the top side's (outward normal (0, -1)), then the bottom's
-        loY2 = oymin - ownBoxes[e]
-        ny = -1.0
-        if edges[2] + 0.0 ~= eymin then
-          loY2 = loY
-          loY = oymin - ownBoxes[e]
-          ny = 1.0
-        end
+      loY = eymin - oymax   -- the top side's (outward normal (0, -1)), then the bottom's
+      loY2 = oymin - ownBoxes[e]
+      ny = -1.0
+      if edges[2] + 0.0 ~= eymin then
+        loY2 = loY
+        loY = oymin - ownBoxes[e]
+        ny = 1.0
       end
-      local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
-      for i = 1, ne - 1, 2 do
-        local ux, uy, lo
-        if rect ~= 0 then
-          if vertical then
-            ux = nx
-            uy = 0.0
-            lo = loX
-            nx = -nx   -- the next vertical side is the opposite one
-            loX = loX2
-          else
-            ux = 0.0
-            uy = ny
-            lo = loY
-            ny = -ny
-            loY = loY2
-          end
-          vertical = not vertical
-          -- the side separates exactly when the other part lies beyond it or on its line
-          if lo >= 0 then separated = true end
+    end
+    local ax, ay = edges[ne - 1] + 0.0, edges[ne] + 0.0
+    for i = 1, ne - 1, 2 do
+      local ux, uy, lo
+      if rect ~= 0 then
+        if vertical then
+          ux = nx
+          uy = 0.0
+          lo = loX
+          nx = -nx   -- the next vertical side is the opposite one
+          loX = loX2
         else
-          local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
-          if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
-            ux = normals[i]
-            uy = normals[i + 1]
-            if scaled then   -- the same numbers as unscaled where k is 1
-              lo = huge
-              local kax, kay = ax * k, ay * k
-              for j = 1, no - 1, 2 do
-                local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
-                if s < lo then lo = s end
-              end
-            elseif uy == 0 then
-              -- An axis-parallel edge (a tile's, a box's): its unit normal is exactly (1, 0) or
-              -- (-1, 0) up to the zero's sign (unit's scaling), so each projection is
-              -- +-(vx - ax) up to the sign of a zero, and rounding is monotonic: the least is
-              -- the other part's box side less ax, the same number minProjection gives (a
-              -- zero's sign aside, which nothing after reads: lo only meets sums with lift and
-              -- margin, both > 0, and comparisons), by one subtraction instead of a projection
-              -- a vertex.
-              if ux > 0 then lo = oxmin - ax else lo = ax - oxmax end
-            elseif ux == 0 then   -- the same along y
-              if uy > 0 then lo = oymin - ay else lo = ay - oymax end
-            elseif otherRect ~= 0 then
-              -- The other part is an axis-parallel rectangle: its vertices are its box's
-              -- corners, and rounding is monotonic, so the least of the projections
-              -- fl(fl(ux (x - ax)) + fl(uy (y - ay))) is the corner's whose terms are least, x
-              -- its least for ux >= 0, its greatest else (for ux a zero either term is a zero),
-              -- and y the same: the number minProjection gives, by two products (the crate
-              -- turned 0.5 radian on the floor of bench/compound.lua: 12 VM instructions an
-              -- edge where the quadrilateral's below take 32)
-              local sx = oxmin - ax
-              if ux < 0 then sx = oxmax - ax end
-              local sy = oymin - ay
-              if uy < 0 then sy = oymax - ay end
-              lo = ux * sx + uy * sy
-            elseif quad then
-              -- a quadrilateral: minProjection's loop unrolled, the same numbers (the first s
-              -- is finite, so lo = s is what s < huge gives): constant indices and no loop
-              -- steps, 32 VM instructions where the loop takes 46 (Lua 5.4)
-              lo = ux * (other[1] - ax) + uy * (other[2] - ay)
-              local s = ux * (other[3] - ax) + uy * (other[4] - ay)
-              if s < lo then lo = s end
-              s = ux * (other[5] - ax) + uy * (other[6] - ay)
-              if s < lo then lo = s end
-              s = ux * (other[7] - ax) + uy * (other[8] - ay)
-              if s < lo then lo = s end
-            else   -- minProjection's loop, without the call's instructions
-              lo = huge
-              for j = 1, no - 1, 2 do
-                local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
-                if s < lo then lo = s end
-              end
-            end
-            if not separated and lo >= loBound then
-              separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
-            end
-          end
-          ax = bx
-          ay = by
+          ux = 0.0
+          uy = ny
+          lo = loY
+          ny = -ny
+          loY = loY2
         end
-        if lo then
-          if lo > highest then highest = lo end
-          top = top + 1
-          fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
-          local flag, d = internal[i], lift - lo
-          if d < 0 then d = -d end   -- a comparison, not abs's call
-          seam[top], reach[top] = flag, d
-          if flag ~= 0 then
-            if d < seamReach then seamReach = d end
-          elseif d < footReach then
-            foot, footReach, foot2, foot2Reach = top, d, foot, footReach
-          elseif d < foot2Reach then
-            foot2, foot2Reach = top, d
+        vertical = not vertical
+        -- the side separates exactly when the other part lies beyond it or on its line
+        if lo >= 0 then separated = true end
+      else
+        local bx, by = edges[i] + 0.0, edges[i + 1] + 0.0
+        if bx ~= ax or by ~= ay then   -- a repeated vertex gives no edge
+          ux = normals[i]
+          uy = normals[i + 1]
+          if scaled then   -- the same numbers as unscaled where k is 1
+            lo = huge
+            local kax, kay = ax * k, ay * k
+            for j = 1, no - 1, 2 do
+              local s = ux * (other[j] * k - kax) + uy * (other[j + 1] * k - kay)
+              if s < lo then lo = s end
+            end
+          elseif uy == 0 then
+            -- An axis-parallel edge (a tile's, a box's): its unit normal is exactly (1, 0) or
+            -- (-1, 0) up to the zero's sign (unit's scaling), so each projection is
+            -- +-(vx - ax) up to the sign of a zero, and rounding is monotonic: the least is
+            -- the other part's box side less ax, the same number minProjection gives (a
+            -- zero's sign aside, which nothing after reads: lo only meets sums with lift and
+            -- margin, both > 0, and comparisons), by one subtraction instead of a projection
+            -- a vertex.
+            if ux > 0 then lo = oxmin - ax else lo = ax - oxmax end
+          elseif ux == 0 then   -- the same along y
+            if uy > 0 then lo = oymin - ay else lo = ay - oymax end
+          elseif otherRect ~= 0 then
+            -- The other part is an axis-parallel rectangle: its vertices are its box's
+            -- corners, and rounding is monotonic, so the least of the projections
+            -- fl(fl(ux (x - ax)) + fl(uy (y - ay))) is the corner's whose terms are least, x
+            -- its least for ux >= 0, its greatest else (for ux a zero either term is a zero),
+            -- and y the same: the number minProjection gives, by two products where the
+            -- quadrilateral's below take eight
+            local sx = oxmin - ax
+            if ux < 0 then sx = oxmax - ax end
+            local sy = oymin - ay
+            if uy < 0 then sy = oymax - ay end
+            lo = ux * sx + uy * sy
+          elseif quad then
+            -- a quadrilateral: minProjection's loop unrolled, the same numbers (the first s
+            -- is finite, so lo = s is what s < huge gives): constant indices and no loop
+            -- steps
+            lo = ux * (other[1] - ax) + uy * (other[2] - ay)
+            local s = ux * (other[3] - ax) + uy * (other[4] - ay)
+            if s < lo then lo = s end
+            s = ux * (other[5] - ax) + uy * (other[6] - ay)
+            if s < lo then lo = s end
+            s = ux * (other[7] - ax) + uy * (other[8] - ay)
+            if s < lo then lo = s end
+          else   -- minProjection's loop, without the call's instructions
+            lo = huge
+            for j = 1, no - 1, 2 do
+              local s = ux * (other[j] - ax) + uy * (other[j + 1] - ay)
+              if s < lo then lo = s end
+            end
           end
+          if not separated and lo >= loBound then
+            separated = edgeSeparates(lo, ax, ay, bx, by, turn, ux, uy, other, no, spanX, spanY)
+          end
+        end
+        ax = bx
+        ay = by
+      end
+      if lo then
+        if lo > highest then highest = lo end
+        top = top + 1
+        fx[top], fy[top], fc[top] = ux * sense, uy * sense, -lo
+        local flag, d = internal[i], lift - lo
+        if d < 0 then d = -d end   -- a comparison, not abs's call
+        seam[top], reach[top] = flag, d
+        if flag ~= 0 then
+          if d < seamReach then seamReach = d end
+        elseif d < footReach then
+          foot, footReach, foot2, foot2Reach = top, d, foot, footReach
+        elseif d < foot2Reach then
+          foot2, foot2Reach = top, d
         end
       end
     end
-    nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
-    if separated then return top, 0, highest end
-    return top, 1, highest
   end
+  nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+  if separated then return top, 0, highest end
+  return top, 1, highest
 end
 
+local pairFaces = JIT and pairFacesJit or pairFacesPuc
+
 -- Two axis-parallel rectangles (rectKind, unscaled), part i of view1 (p1) and part j of view2
--- (p2), as pair p: the faces pairFaces gives, less those that change nothing. D is then a box:
+-- (p2), as pair p: the faces pairFacesPuc gives, less those that change nothing. D is then a box:
 -- each side of p2 gives the line of the opposite side of p1, the same numbers (lo of p1's right
 -- side, oxmin - exmax, is lo of p2's left side, ax - oxmax, with the same roles). A later face
 -- equal to an earlier one, line and flag (seam or outer), decides nothing: pushFree's test is
@@ -462,96 +452,128 @@ end
 -- flag differs from that of p1's side on its line (a seam of the list against the flat shape's
 -- outer edge, whose foot is tried). The views' sides give the sides in edge order (see
 -- rectSides). Returns the last face's index and 1 when the rectangles overlap (exactly: no side
--- has the other rectangle beyond it or on its line), else 0.
+-- has the other rectangle beyond it or on its line), else 0. Two bodies, the same faces and
+-- answers (spec/bodies_faces_spec.lua compares them).
 local sideConstant, sideFlag = { 0.0, 0.0, 0.0, 0.0 }, { 0, 0, 0, 0 }
-local rectPairFaces
-if JIT then
-  -- LuaJIT's: PUC Lua's faces, without a branch: each of p2's sides is written after p1's
-  -- and kept (top moves on) when its flag differs from that of p1's side on its line, by the
-  -- difference's abs, 1 or 0 (all eight kept, the feet sought over them all: 6,614 against
-  -- 6,489 machine instructions a push of bench/compound.lua's crate by callgrind, medians
-  -- over five seeds of LuaJIT's random trace penalties); the
-  -- nearest feet kept later by keepFeet, as for addFaces' faces; without a loop (a loop of
-  -- four steps was a trace of its own, entered and left twice a pair).
-  local function putSide(line, flag, top)
-    local c = sideConstant[line]
-    faceX[top], faceY[top], faceC[top], faceSeam[top], faceReach[top] = SIDE_X[line],
-      SIDE_Y[line], c, flag, abs(faceLift + c)
+
+-- The face of the side `line` (rectSides' numbers, constant sideConstant[line]), flag its seam
+-- flag, written at index top (rectPairFacesJit's).
+local function putSide(line, flag, top)
+  local c = sideConstant[line]
+  faceX[top], faceY[top], faceC[top], faceSeam[top], faceReach[top] = SIDE_X[line],
+    SIDE_Y[line], c, flag, abs(faceLift + c)
+end
+
+-- LuaJIT's: rectPairFacesPuc's faces, without a branch: each of p2's sides is written after
+-- p1's and kept (top moves on) when its flag differs from that of p1's side on its line, by the
+-- difference's abs, 1 or 0; the nearest feet kept later by keepFeet, as for addFaces' faces;
+-- without a loop (a loop of four steps is a trace of its own, entered and left twice a pair).
+local function rectPairFacesJit(view1, i, view2, j, top, p)
+  local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
+  local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
+  local sideC, flags = sideConstant, sideFlag
+  local cLeft, cTop = boxes2[b - 1] - boxes1[a - 3], boxes2[b] - boxes1[a - 2]
+  local cRight, cBottom = boxes1[a - 1] - boxes2[b - 3], boxes1[a] - boxes2[b - 2]
+  sideC[1], sideC[2], sideC[3], sideC[4] = cLeft, cTop, cRight, cBottom
+  local rects, r = pairRects, 8 * p   -- for pushFree
+  pairBox[p] = 1
+  rects[r - 7], rects[r - 6], rects[r - 5], rects[r - 4] = boxes1[a - 3], boxes1[a - 2],
+    boxes1[a - 1], boxes1[a]
+  rects[r - 3], rects[r - 2], rects[r - 1], rects[r] = boxes2[b - 3], boxes2[b - 2],
+    boxes2[b - 1], boxes2[b]
+  local line1, line2, line3, line4 = sides1[1], sides1[3], sides1[5], sides1[7]
+  local flag1, flag2, flag3, flag4 = internal1[1], internal1[3], internal1[5], internal1[7]
+  flags[line1], flags[line2], flags[line3], flags[line4] = flag1, flag2, flag3, flag4
+  putSide(line1, flag1, top + 1)
+  putSide(line2, flag2, top + 2)
+  putSide(line3, flag3, top + 3)
+  putSide(line4, flag4, top + 4)
+  top = top + 4
+  local line, flag = sides2[2], internal2[1]
+  putSide(line, flag, top + 1)
+  top = top + abs(flag - flags[line])
+  line, flag = sides2[4], internal2[3]
+  putSide(line, flag, top + 1)
+  top = top + abs(flag - flags[line])
+  line, flag = sides2[6], internal2[5]
+  putSide(line, flag, top + 1)
+  top = top + abs(flag - flags[line])
+  line, flag = sides2[8], internal2[7]
+  putSide(line, flag, top + 1)
+  top = top + abs(flag - flags[line])
+  local least = min(cLeft, cTop, cRight, cBottom)
+  leastFree = max(leastFree, faceLift + least)
+  return top, isAbove(least)
+end
+
+-- PUC Lua's: the nearest feet and seams kept as the faces are written. One function, not split
+-- into steps: it runs for every pair of rectangles a push tests, where PUC Lua pays for every
+-- call.
+local function rectPairFacesPuc(view1, i, view2, j, top, p)
+  local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
+  local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
+  local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
+  local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
+  local lift, foot, footReach = faceLift, nearestFoot, nearestReach
+  local foot2, foot2Reach, nearX, nearY = secondFoot, secondReach, seamX, seamY
+  -- p1's sides' faceC, -lo of the axis-parallel edges in pairFacesPuc (fl(b - a) = -fl(a - b))
+  local cLeft = boxes2[b - 1] - boxes1[a - 3]
+  local cTop = boxes2[b] - boxes1[a - 2]
+  local cRight = boxes1[a - 1] - boxes2[b - 3]
+  local cBottom = boxes1[a] - boxes2[b - 2]
+  sideC[1] = cLeft
+  sideC[2] = cTop
+  sideC[3] = cRight
+  sideC[4] = cBottom
+  local rects, r = pairRects, 8 * p   -- for pushFree
+  pairBox[p] = 1
+  rects[r - 7] = boxes1[a - 3]
+  rects[r - 6] = boxes1[a - 2]
+  rects[r - 5] = boxes1[a - 1]
+  rects[r - 4] = boxes1[a]
+  rects[r - 3] = boxes2[b - 3]
+  rects[r - 2] = boxes2[b - 2]
+  rects[r - 1] = boxes2[b - 1]
+  rects[r] = boxes2[b]
+  -- p1's sides in the order of its edges, then those of p2 whose flags differ: two loops, the
+  -- face's code in both (one loop over the eight edges would tell the two apart at every edge;
+  -- one assignment per statement, as in pairFacesPuc). The reach lift + c is
+  -- pairFacesPuc's lift - lo.
+  for e = 1, 7, 2 do
+    local line, flag = sides1[e], internal1[e]
+    flags[line] = flag
+    local c = sideC[line]
+    local d = lift + c
+    if d < 0 then d = -d end   -- a comparison, not abs's call
+    top = top + 1
+    local ux = sideX[line]
+    fx[top] = ux
+    fy[top] = sideY[line]
+    fc[top] = c
+    seam[top] = flag
+    reach[top] = d
+    if flag ~= 0 then
+      if ux ~= 0 then
+        if d < nearX then nearX = d end
+      elseif d < nearY then
+        nearY = d
+      end
+    elseif d < footReach then
+      foot2 = foot
+      foot2Reach = footReach
+      foot = top
+      footReach = d
+    elseif d < foot2Reach then
+      foot2 = top
+      foot2Reach = d
+    end
   end
-  rectPairFaces = function(view1, i, view2, j, top, p)
-    local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
-    local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
-    local sideC, flags = sideConstant, sideFlag
-    local cLeft, cTop = boxes2[b - 1] - boxes1[a - 3], boxes2[b] - boxes1[a - 2]
-    local cRight, cBottom = boxes1[a - 1] - boxes2[b - 3], boxes1[a] - boxes2[b - 2]
-    sideC[1], sideC[2], sideC[3], sideC[4] = cLeft, cTop, cRight, cBottom
-    local rects, r = pairRects, 8 * p   -- for pushFree
-    pairBox[p] = 1
-    rects[r - 7], rects[r - 6], rects[r - 5], rects[r - 4] = boxes1[a - 3], boxes1[a - 2],
-      boxes1[a - 1], boxes1[a]
-    rects[r - 3], rects[r - 2], rects[r - 1], rects[r] = boxes2[b - 3], boxes2[b - 2],
-      boxes2[b - 1], boxes2[b]
-    local line1, line2, line3, line4 = sides1[1], sides1[3], sides1[5], sides1[7]
-    local flag1, flag2, flag3, flag4 = internal1[1], internal1[3], internal1[5], internal1[7]
-    flags[line1], flags[line2], flags[line3], flags[line4] = flag1, flag2, flag3, flag4
-    putSide(line1, flag1, top + 1)
-    putSide(line2, flag2, top + 2)
-    putSide(line3, flag3, top + 3)
-    putSide(line4, flag4, top + 4)
-    top = top + 4
-    local line, flag = sides2[2], internal2[1]
-    putSide(line, flag, top + 1)
-    top = top + abs(flag - flags[line])
-    line, flag = sides2[4], internal2[3]
-    putSide(line, flag, top + 1)
-    top = top + abs(flag - flags[line])
-    line, flag = sides2[6], internal2[5]
-    putSide(line, flag, top + 1)
-    top = top + abs(flag - flags[line])
-    line, flag = sides2[8], internal2[7]
-    putSide(line, flag, top + 1)
-    top = top + abs(flag - flags[line])
-    local least = min(cLeft, cTop, cRight, cBottom)
-    leastFree = max(leastFree, faceLift + least)
-    return top, isAbove(least)
-  end
-else
-  rectPairFaces = function(view1, i, view2, j, top, p)
-    local sides1, internal1, boxes1, a = view1.sides[i], view1.internal[i], view1.boxes, 4 * i
-    local sides2, internal2, boxes2, b = view2.sides[j], view2.internal[j], view2.boxes, 4 * j
-    local fx, fy, fc, seam, reach = faceX, faceY, faceC, faceSeam, faceReach
-    local sideX, sideY, sideC, flags = SIDE_X, SIDE_Y, sideConstant, sideFlag
-    local lift, foot, footReach = faceLift, nearestFoot, nearestReach
-    local foot2, foot2Reach, nearX, nearY = secondFoot, secondReach, seamX, seamY
-    -- p1's sides' faceC, -lo of the axis-parallel edges in pairFaces (fl(b - a) = -fl(a - b))
-    local cLeft = boxes2[b - 1] - boxes1[a - 3]
-    local cTop = boxes2[b] - boxes1[a - 2]
-    local cRight = boxes1[a - 1] - boxes2[b - 3]
-    local cBottom = boxes1[a] - boxes2[b - 2]
-    sideC[1] = cLeft
-    sideC[2] = cTop
-    sideC[3] = cRight
-    sideC[4] = cBottom
-    local rects, r = pairRects, 8 * p   -- for pushFree
-    pairBox[p] = 1
-    rects[r - 7] = boxes1[a - 3]
-    rects[r - 6] = boxes1[a - 2]
-    rects[r - 5] = boxes1[a - 1]
-    rects[r - 4] = boxes1[a]
-    rects[r - 3] = boxes2[b - 3]
-    rects[r - 2] = boxes2[b - 2]
-    rects[r - 1] = boxes2[b - 1]
-    rects[r] = boxes2[b]
-    -- p1's sides in the order of its edges, then those of p2 whose flags differ: two loops, the
-    -- face's code in both (one loop over the eight edges took 5 more VM instructions an edge to
-    -- tell the two apart; one assignment per statement, as in pairFaces). The reach lift + c is
-    -- pairFaces' lift - lo.
-    for e = 1, 7, 2 do
-      local line, flag = sides1[e], internal1[e]
-      flags[line] = flag
+  for e = 1, 7, 2 do
+    local line, flag = sides2[e + 1], internal2[e]
+    if flag ~= flags[line] then   -- else as the face of p1's on the same line: nothing to add
       local c = sideC[line]
       local d = lift + c
-      if d < 0 then d = -d end   -- a comparison, not abs's call
+      if d < 0 then d = -d end
       top = top + 1
       local ux = sideX[line]
       fx[top] = ux
@@ -575,48 +597,20 @@ else
         foot2Reach = d
       end
     end
-    for e = 1, 7, 2 do
-      local line, flag = sides2[e + 1], internal2[e]
-      if flag ~= flags[line] then   -- else as the face of p1's on the same line: nothing to add
-        local c = sideC[line]
-        local d = lift + c
-        if d < 0 then d = -d end
-        top = top + 1
-        local ux = sideX[line]
-        fx[top] = ux
-        fy[top] = sideY[line]
-        fc[top] = c
-        seam[top] = flag
-        reach[top] = d
-        if flag ~= 0 then
-          if ux ~= 0 then
-            if d < nearX then nearX = d end
-          elseif d < nearY then
-            nearY = d
-          end
-        elseif d < footReach then
-          foot2 = foot
-          foot2Reach = footReach
-          foot = top
-          footReach = d
-        elseif d < foot2Reach then
-          foot2 = top
-          foot2Reach = d
-        end
-      end
-    end
-    nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
-    seamX, seamY = nearX, nearY
-    local least = cLeft   -- leastFree, as LuaJIT's
-    if cTop < least then least = cTop end
-    if cRight < least then least = cRight end
-    if cBottom < least then least = cBottom end
-    least = lift + least
-    if least > leastFree then leastFree = least end
-    if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
-    return top, 0
   end
+  nearestFoot, nearestReach, secondFoot, secondReach = foot, footReach, foot2, foot2Reach
+  seamX, seamY = nearX, nearY
+  local least = cLeft   -- leastFree, as rectPairFacesJit's
+  if cTop < least then least = cTop end
+  if cRight < least then least = cRight end
+  if cBottom < least then least = cBottom end
+  least = lift + least
+  if least > leastFree then leastFree = least end
+  if cLeft > 0 and cTop > 0 and cRight > 0 and cBottom > 0 then return top, 1 end
+  return top, 0
 end
+
+local rectPairFaces = JIT and rectPairFacesJit or rectPairFacesPuc
 
 -- Whether t lies outside every D of pairs 1 .. np widened by margin. A pair of rectangles
 -- (pairBox) exactly instead: whether the second's box moved by t, each side as the move rounds
@@ -653,6 +647,8 @@ end
 local nearLines = {}   -- scratch for nearestFree: the faces whose lines pass nearer than the best
 
 -- The nearest free candidate among the faces of pairs 1 .. np: its length and vector, or huge.
+-- One function, not split into steps: it runs on every push over lists of parts, where PUC Lua
+-- pays for every call and LuaJIT would leave its trace at each.
 local function nearestFree(np, margin)
   local fx, fy, fc, reach = faceX, faceY, faceC, faceReach   -- locals: PUC Lua reads upvalues slower
   local best, bestX, bestY = huge, 0.0, 0.0
@@ -666,12 +662,10 @@ local function nearestFree(np, margin)
   -- (a unit normal within 4 eps of length 1, |t| within 5 eps of e for a foot or a crossing,
   -- the products and the sum rounded), below that when 0.5 margin > 14 eps L, true as
   -- L <= 1.01 E and margin >= 64 eps E: t lies inside the pair's D widened by margin, for
-  -- every face. (The crate turned 0.5 radian on bench/compound.lua's floor: its
-  -- nearest foot is mostly a face of the crate against the part it barely reaches into, inside
-  -- the other part's D: pushFree 3.62 -> 1.31 calls a push on PUC Lua, 1.84 on LuaJIT, by a
-  -- count in a copy.)
+  -- every face. (A crate turned on a floor: its nearest foot is mostly a face of the crate
+  -- against the part it barely reaches into, inside the other part's D.)
   local low = leastFree - 0.75 * margin
-  if JIT and feetKept < last then   -- (PUC Lua: pairFaces kept them)
+  if JIT and feetKept < last then   -- (PUC Lua: the bodies kept them)
     keepFeet(feetKept + 1, last)
     feetKept = last
   end
@@ -690,8 +684,8 @@ local function nearestFree(np, margin)
     if pushFree(tx, ty, np, margin) then best, bestX, bestY, found = secondReach, tx, ty, 2 end
   end
   if found == 0 then
-    -- feet of the perpendiculars on the outer edges' lines, but the nearest two: not free (the
-    -- crate turned 0.5 radian: 0.29 of 0.67 pushFree calls a push here were those again)
+    -- feet of the perpendiculars on the outer edges' lines, but the nearest two: not free (tried
+    -- above, they would be tried again)
     local foot, foot2 = nearestFoot, secondFoot
     for f = 1, last do
       if faceSeam[f] == 0 and reach[f] < best and reach[f] >= low and f ~= foot and f ~= foot2 then
@@ -730,12 +724,9 @@ local function nearestFree(np, margin)
           if det ~= 0 then
             local tx, ty = (c1 * y2 - c2 * y1) / det, (x1 * c2 - x2 * c1) / det
             local d = sqrt(tx * tx + ty * ty)
-            -- Below low not tried on PUC Lua, as the feet (2,924 -> 2,848 VM instructions a
-            -- push of the turned crate); tried on LuaJIT, where that test's side exits led
-            -- into pushFree in side traces that failed to compile, "NYI: register coalescing
-            -- too complex", about 250 aborts in each of 2 of 11 runs of `luajit -jv
-            -- bench/compound.lua timing 5000` at fixed trace seeds (without it 4 aborts in 7
-            -- of 14 runs, as before this test in 7 of 10)
+            -- Below low not tried on PUC Lua, as the feet; tried on LuaJIT, where that test's
+            -- side exits lead into pushFree in side traces that may fail to compile ("NYI:
+            -- register coalescing too complex")
             if d < best and (JIT or d >= low) and pushFree(tx, ty, np, margin) then
               best, bestX, bestY = d, tx, ty
             end
@@ -820,8 +811,8 @@ end
 -- parts overlap; on LuaJIT, overlap for sure).
 local function addPair(view1, p1, i, view2, p2, j, k, np, top)
   -- preparePair's work inline (PUC Lua pays for every call): checkCopy's level counts from there
-  -- A flat rectangle needs no normals unscaled (flatBox gave its sign): rectPairFaces and PUC
-  -- Lua's pairFaces read none; LuaJIT's addFaces reads them against a part not a rectangle, so
+  -- A flat rectangle needs no normals unscaled (flatBox gave its sign): rectPairFaces and
+  -- pairFacesPuc read none; LuaJIT's addFaces reads them against a part not a rectangle, so
   -- there they wait for such a pair.
   if view1.copies then
     if view1.checked[i] ~= call.stamp then checkCopy(view1, i, p1, 5) end
@@ -973,6 +964,32 @@ local function boxFoot(l, found, margin)
   return pushFree(tx, ty, found, margin), tx, ty
 end
 
+-- The nearest free foot of boxPush's lines 1 .. last whose reach is low or more, after the
+-- nearest two feet, which were not free (foot2 the second, at foot2Reach): the feet in order of
+-- reach, then of rank (boxRank). Its reach and vector, or huge, 0, 0 when none is free. A
+-- function of its own: the nearest two are usually free, so it rarely runs.
+local function laterFreeFoot(info, flat, listFirst, found, margin, low, last, foot2, foot2Reach)
+  local lines = boxLine
+  -- the feet up to here were tried: those before (triedReach, triedRank)
+  local triedReach, triedRank = foot2Reach, boxRank(foot2, info, flat, listFirst)
+  while true do
+    local f, reach, rank = 0, huge, 0
+    for l = 1, last do
+      local r = lines[l]
+      if r >= low and r <= reach and r >= triedReach then
+        local lRank = boxRank(l, info, flat, listFirst)
+        if (r < reach or lRank < rank) and (r > triedReach or lRank > triedRank) then
+          f, reach, rank = l, r, lRank
+        end
+      end
+    end
+    if f == 0 then return huge, 0.0, 0.0 end
+    local free, tx, ty = boxFoot(f, found, margin)
+    if free then return reach, tx, ty end
+    triedReach, triedRank = reach, rank
+  end
+end
+
 -- The push of a flat axis-parallel rectangle out of a list of them, or into it (a crate on a
 -- floor of tiles or boxes), unscaled: every D is a box, and nearestFree's search comes down to
 -- feet and crossings on the four lines of each box. Pair p's D is the open box -cLeft < tx <
@@ -986,9 +1003,9 @@ end
 -- no other near part's box of D comes within near of it (the largest gaps of the scan tell
 -- most calls at once) and it lies within half the window. Returns the push as collideParts
 -- does, or nil when a part is not a rectangle, no candidate is free, or the point does not
--- stand: then collideParts' search decides. (bench/compound.lua's crate on the 20-part floor:
--- 1.21 -> 0.86 of its pair calls' time on LuaJIT, medians over 10 and 16 processes; Lua 5.4
--- 1,613 -> 1,373 VM instructions; bench/NOTES.md, session 13.)
+-- stand: then collideParts' search decides. One function but for laterFreeFoot's rare search:
+-- it runs on every push of a rectangle over rectangles, where PUC Lua pays for every call and
+-- LuaJIT would leave its trace at each.
 local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX, leastGapY,
                        margin, window)
   local least = boxLines(info, list, flat, listFirst, found, margin)
@@ -1022,27 +1039,8 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
     if free then
       best, bestX, bestY = foot2Reach, tx, ty
     elseif foot2Reach < FAR then
-      -- the feet up to here were tried: those before (triedReach, triedRank)
-      local triedReach, triedRank = foot2Reach, boxRank(foot2, info, flat, listFirst)
-      while true do
-        local f, reach, rank = 0, huge, 0
-        for l = 1, last do
-          local r = lines[l]
-          if r >= low and r <= reach and r >= triedReach then
-            local lRank = boxRank(l, info, flat, listFirst)
-            if (r < reach or lRank < rank) and (r > triedReach or lRank > triedRank) then
-              f, reach, rank = l, r, lRank
-            end
-          end
-        end
-        if f == 0 then break end
-        free, tx, ty = boxFoot(f, found, margin)
-        if free then
-          best, bestX, bestY = reach, tx, ty
-          break
-        end
-        triedReach, triedRank = reach, rank
-      end
+      best, bestX, bestY = laterFreeFoot(info, flat, listFirst, found, margin, low, last, foot2,
+        foot2Reach)
     end
   end
   -- crossings of a vertical line and a horizontal one, both nearer than the best, in the order
@@ -1111,5 +1109,23 @@ M.faceY = faceY
 M.faceC = faceC
 M.faceSeam = faceSeam
 M.faceFirst = faceFirst
+
+-- For spec/bodies_faces_spec.lua only: both bodies of each pair, the LuaJIT-only helpers, the
+-- scratch they write, and the search's state as they leave it.
+M.leastProjectionJit = leastProjectionJit
+M.leastProjectionPuc = leastProjectionPuc
+M.pairFacesJit = pairFacesJit
+M.pairFacesPuc = pairFacesPuc
+M.rectPairFacesJit = rectPairFacesJit
+M.rectPairFacesPuc = rectPairFacesPuc
+M.addBoxFaces = addBoxFaces
+M.rectFaces = rectFaces
+M.keepFeet = keepFeet
+M.faceReach = faceReach
+M.pairBox = pairBox
+M.pairRects = pairRects
+function M.searchState()
+  return nearestFoot, nearestReach, secondFoot, secondReach, seamReach, seamX, seamY, leastFree
+end
 
 return M

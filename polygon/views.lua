@@ -16,8 +16,8 @@ local M = {}
 -- of convex parts {part1, part2, ...}: what polygonConvexParts returns, or parts built by hand.
 -- A flat array holds a number at [1], a list of parts a table.
 
--- Whether shape is a list of parts rather than a flat array of coordinates (declared before the
--- public collision functions, which dispatch on it).
+-- Whether shape is a list of parts rather than a flat array of coordinates (the collision
+-- functions dispatch on it).
 local function isParts(shape)
   return type(shape) == "table" and type(shape[1]) == "table"
 end
@@ -95,7 +95,7 @@ end
 -- v1's x, the first horizontal one at v1's y, then their opposites. Eight orders in all, made
 -- once here and shared (read only): RECT_SIDES[4 (rect - 1) + 2 (v1 on the right) + (v1 at
 -- the bottom) + 1]. A view's sides[k] is one of them (a flat rectangle's is picked per call, by
--- PUC Lua's flatBox without a call).
+-- flatBoxPuc without a call).
 local RECT_SIDES = {}
 for pattern = 1, 8 do
   local rect, right, bottom = pattern <= 4 and 1 or 2, (pattern - 1) % 4 >= 2, (pattern - 1) % 2 == 1
@@ -138,7 +138,8 @@ local function partBox(view, k, part, n)
   if rect ~= 0 then
     view.sides[k] = rectSides(part, rect, xmin, ymin)
     -- A rectangle's first and third vertices are opposite corners: their coordinates are the
-    -- four on its box, the ones watched (at constant indices on LuaJIT: see partsOverlapping)
+    -- four on its box, the ones watched (at constant indices on LuaJIT: see compound.lua's
+    -- partsOverlapping)
     local x1, y1 = part[1] + 0.0, part[2] + 0.0
     ixmin, iymin = x1 == xmin and 1 or 5, y1 == ymin and 2 or 6
     record[5], record[6], record[7], record[8] = ixmin, iymin, 6 - ixmin, 8 - iymin
@@ -146,7 +147,7 @@ local function partBox(view, k, part, n)
   end
   -- PUC Lua's scan: 0 for a rectangle whose first vertex is its (xmin, ymin), and so its third
   -- its (xmax, ymax) (a box as games write it), compared with the box's values it loads anyway
-  -- (see partsOverlapping); else the length
+  -- (see compound.lua's partsOverlapping); else the length
   record[16] = rect ~= 0 and ixmin == 1 and iymin == 2 and 0 or n
   return finite == 0
 end
@@ -163,61 +164,62 @@ local function partTurn(view, k, part, n)
 end
 
 -- The area sign and the edge normals of part k (finite coordinates) into view: unit's numbers.
--- On PUC Lua without its calls (PUC Lua pays for each, math.max and abs too), one assignment
--- per statement (Lua 5.4 moves a multiple assignment through a temporary per value).
-local partNormals
-if JIT then
-  partNormals = function(view, k, part, n)
-    local turn = partTurn(view, k, part, n)
-    if turn == 0 then return end   -- never collides: no normal is read
-    local normals = view.normals[k]
-    local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
-    for i = 1, n - 1, 2 do
-      local bx, by = part[i] + 0.0, part[i + 1] + 0.0
-      local ux, uy = 0.0, 0.0   -- a repeated vertex gives no edge
-      if bx ~= ax or by ~= ay then ux, uy = unit((by - ay) * turn, (ax - bx) * turn) end
-      normals[i], normals[i + 1] = ux, uy
-      ax, ay = bx, by
-    end
-  end
-else
-  partNormals = function(view, k, part, n)
-    local turn = partTurn(view, k, part, n)
-    if turn == 0 then return end   -- never collides: no normal is read
-    local normals = view.normals[k]
-    local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
-    for i = 1, n - 1, 2 do
-      local bx, by = part[i] + 0.0, part[i + 1] + 0.0
-      local ux = (by - ay) * turn
-      local uy = (ax - bx) * turn
-      if uy == 0 and ux ~= 0 then
-        -- a vertical edge (a tile's, a box's): what the lines below give, (+-1, uy), uy a
-        -- zero of turn's sign, without their division and square root
-        normals[i] = ux > 0 and 1.0 or -1.0
-        normals[i + 1] = uy
-      elseif ux == 0 and uy ~= 0 then   -- a horizontal one
-        normals[i] = ux
-        normals[i + 1] = uy > 0 and 1.0 or -1.0
-      elseif bx ~= ax or by ~= ay then
-        local m = uy   -- max(|uy|, |ux|)
-        if m < 0 then m = -m end
-        local mx = ux
-        if mx < 0 then mx = -mx end
-        if mx > m then m = mx end
-        ux = ux / m
-        uy = uy / m
-        local len = sqrt(ux * ux + uy * uy)
-        normals[i] = ux / len
-        normals[i + 1] = uy / len
-      else   -- a repeated vertex gives no edge
-        normals[i] = 0.0
-        normals[i + 1] = 0.0
-      end
-      ax = bx
-      ay = by
-    end
+-- Two bodies, the same numbers (spec/bodies_faces_spec.lua compares them).
+-- LuaJIT's: unit's call, which a trace inlines.
+local function partNormalsJit(view, k, part, n)
+  local turn = partTurn(view, k, part, n)
+  if turn == 0 then return end   -- never collides: no normal is read
+  local normals = view.normals[k]
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    local ux, uy = 0.0, 0.0   -- a repeated vertex gives no edge
+    if bx ~= ax or by ~= ay then ux, uy = unit((by - ay) * turn, (ax - bx) * turn) end
+    normals[i], normals[i + 1] = ux, uy
+    ax, ay = bx, by
   end
 end
+
+-- PUC Lua's: unit written out (PUC Lua pays for every call, math.max and abs too), one
+-- assignment per statement (Lua 5.4 moves a multiple assignment through a temporary per value).
+local function partNormalsPuc(view, k, part, n)
+  local turn = partTurn(view, k, part, n)
+  if turn == 0 then return end   -- never collides: no normal is read
+  local normals = view.normals[k]
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    local ux = (by - ay) * turn
+    local uy = (ax - bx) * turn
+    if uy == 0 and ux ~= 0 then
+      -- a vertical edge (a tile's, a box's): what the lines below give, (+-1, uy), uy a
+      -- zero of turn's sign, without their division and square root
+      normals[i] = ux > 0 and 1.0 or -1.0
+      normals[i + 1] = uy
+    elseif ux == 0 and uy ~= 0 then   -- a horizontal one
+      normals[i] = ux
+      normals[i + 1] = uy > 0 and 1.0 or -1.0
+    elseif bx ~= ax or by ~= ay then
+      local m = uy   -- max(|uy|, |ux|)
+      if m < 0 then m = -m end
+      local mx = ux
+      if mx < 0 then mx = -mx end
+      if mx > m then m = mx end
+      ux = ux / m
+      uy = uy / m
+      local len = sqrt(ux * ux + uy * uy)
+      normals[i] = ux / len
+      normals[i + 1] = uy / len
+    else   -- a repeated vertex gives no edge
+      normals[i] = 0.0
+      normals[i + 1] = 0.0
+    end
+    ax = bx
+    ay = by
+  end
+end
+
+local partNormals = JIT and partNormalsJit or partNormalsPuc
 
 -- The box around all parts of view and their largest coordinate magnitude, into view.
 local function shapeBox(view)
@@ -343,8 +345,9 @@ local function checkCopy(view, k, part, level)
   local copy, n = view.copies[k], view.lengths[k]
   if view.rects[k] ~= 0 then
     -- An axis-parallel rectangle: its first and third vertices are the coordinates watched on
-    -- its box (partBox), which every call compares before it reads a part (partsOverlapping,
-    -- listView): equal to their copies. The other two vertices are compared here.
+    -- its box (partBox), which every call compares before it reads a part (compound.lua's
+    -- partsOverlapping, listView): equal to their copies. The other two vertices are compared
+    -- here.
     if part[3] == copy[3] and part[4] == copy[4] and part[7] == copy[7] and part[8] == copy[8] then
       return
     end
@@ -419,153 +422,156 @@ local flatView1, flatView2 = newFlatView(), newFlatView()
 
 -- The box of a flat array (n coordinates) into view as part k = 1, as partBox gives it but
 -- without the record (the extremes' indices, which only a list's parts keep), and whether every
--- coordinate is finite. On LuaJIT min and max four vertices a round, the last round padded with
--- the last vertex (as leastProjection, for the same reason: partBox's branches on every vertex
--- were 9 % of a push's time on the crate and floor of bench/compound.lua by `luajit -jp=f`).
--- On PUC Lua partBox's loop, and shapeBox's numbers for the one part without its calls.
-local flatBox
-if JIT then
-  flatBox = function(view, _, shape, n)
-    local finite = 0.0
-    local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
-    local last = n - 1
-    for i = 1, last, 8 do
-      local i2, i3, i4 = min(i + 2, last), min(i + 4, last), min(i + 6, last)
-      local x1, y1, x2, y2 = shape[i] + 0.0, shape[i + 1] + 0.0, shape[i2] + 0.0, shape[i2 + 1] + 0.0
-      local x3, y3, x4, y4 = shape[i3] + 0.0, shape[i3 + 1] + 0.0, shape[i4] + 0.0, shape[i4 + 1] + 0.0
-      -- stays 0 unless a coordinate is inf or NaN
-      finite = finite + ((x1 * 0 + y1 * 0) + (x2 * 0 + y2 * 0) + (x3 * 0 + y3 * 0) + (x4 * 0 + y4 * 0))
-      xmin, xmax = min(xmin, x1, x2, x3, x4), max(xmax, x1, x2, x3, x4)
-      ymin, ymax = min(ymin, y1, y2, y3, y4), max(ymax, y1, y2, y3, y4)
+-- coordinate is finite; for an axis-parallel rectangle its kind, sides and area sign too.
+-- Two bodies, the same numbers (spec/bodies_faces_spec.lua compares them).
+-- LuaJIT's: min and max four vertices a round, the last round padded with the last vertex (as
+-- leastProjectionJit, for the same reason: a branch on every vertex is a side exit); flatView
+-- then calls shapeBox.
+local function flatBoxJit(view, _, shape, n)
+  local finite = 0.0
+  local xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+  local last = n - 1
+  for i = 1, last, 8 do
+    local i2, i3, i4 = min(i + 2, last), min(i + 4, last), min(i + 6, last)
+    local x1, y1, x2, y2 = shape[i] + 0.0, shape[i + 1] + 0.0, shape[i2] + 0.0, shape[i2 + 1] + 0.0
+    local x3, y3, x4, y4 = shape[i3] + 0.0, shape[i3 + 1] + 0.0, shape[i4] + 0.0, shape[i4 + 1] + 0.0
+    -- stays 0 unless a coordinate is inf or NaN
+    finite = finite + ((x1 * 0 + y1 * 0) + (x2 * 0 + y2 * 0) + (x3 * 0 + y3 * 0) + (x4 * 0 + y4 * 0))
+    xmin, xmax = min(xmin, x1, x2, x3, x4), max(xmax, x1, x2, x3, x4)
+    ymin, ymax = min(ymin, y1, y2, y3, y4), max(ymax, y1, y2, y3, y4)
+  end
+  if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
+  local boxes = view.boxes
+  boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
+  -- an axis-parallel rectangle: its sides and its area sign (see flatBoxPuc)
+  local rect = finite == 0 and rectKind(shape, n, xmin, ymin, xmax, ymax) or 0
+  view.rects[1] = rect
+  if rect ~= 0 then
+    view.sides[1] = rectSides(shape, rect, xmin, ymin)
+    local x1, y1 = shape[1] + 0.0, shape[2] + 0.0
+    if rect == 1 then
+      view.turns[1] = (shape[3] + 0.0 > x1) == (shape[6] + 0.0 > y1) and 1.0 or -1.0
+    else
+      view.turns[1] = (shape[5] + 0.0 > x1) == (shape[4] + 0.0 > y1) and -1.0 or 1.0
+    end
+  end
+  return finite == 0
+end
+
+-- PUC Lua's: partBox's loop, and shapeBox's numbers for the one part, without their calls. One
+-- function, not split into steps: it runs on every call with a flat array, where PUC Lua pays
+-- for every call.
+local function flatBoxPuc(view, _, shape, n)
+  local finite, rect = 0.0, 0
+  local xmin, ymin, xmax, ymax
+  if n == 8 then
+    -- A quadrilateral (a crate, a tile) unrolled: the loop's numbers (the least of equals is
+    -- the first, as there), and whether it is an axis-parallel rectangle, what rectKind and
+    -- rectSides give, from the same locals. An axis-parallel rectangle first: its x are v1's
+    -- and the opposite corner's (each equal to one of them, NaN never is), its y too, so two
+    -- comparisons give its box, and it is finite when its box is; the other shapes (and a
+    -- rectangle of no width or height, or with an infinite side) by eight coordinates' sums
+    -- and twelve comparisons (a crate, the common case, takes far fewer instructions so than
+    -- with those first: bench/NOTES.md). Its area sign from comparisons: twice its
+    -- area is 2 (x2 - x1) (y3 - y1) for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2, each
+    -- factor's sign flipped when the opposite corner lies left of or above v1 (flatView then
+    -- computes no area sign).
+    local x1, y1, x2, y2 = shape[1] + 0.0, shape[2] + 0.0, shape[3] + 0.0, shape[4] + 0.0
+    local x3, y3, x4, y4 = shape[5] + 0.0, shape[6] + 0.0, shape[7] + 0.0, shape[8] + 0.0
+    if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then
+      rect = 1
+    elseif y4 == y1 and x1 == x2 and y2 == y3 and x3 == x4 then
+      rect = 2
+    end
+    if rect ~= 0 then
+      local xa, ya, turn = x2, y3, 1.0   -- the corner opposite v1
+      if rect == 2 then
+        xa = x3
+        ya = y2
+        turn = -1.0
+      end
+      local pattern = 4 * rect - 3   -- as rectSides
+      xmin = x1
+      xmax = xa
+      if xa < x1 then
+        xmin = xa
+        xmax = x1
+        pattern = pattern + 2
+        turn = -turn
+      end
+      ymin = y1
+      ymax = ya
+      if ya < y1 then
+        ymin = ya
+        ymax = y1
+        pattern = pattern + 1
+        turn = -turn
+      end
+      local big = huge
+      if xmin < xmax and ymin < ymax and -big < xmin and xmax < big and -big < ymin and ymax < big then
+        view.turns[1] = turn
+        view.sides[1] = RECT_SIDES[pattern]
+      else
+        rect = 0
+      end
+    end
+    if rect == 0 then
+      -- 0 unless a coordinate is inf or NaN (x - x is NaN then)
+      finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3)
+        + (x4 - x4) + (y4 - y4)
+      xmin = x1
+      xmax = x1
+      if x2 < xmin then xmin = x2 end
+      if x2 > xmax then xmax = x2 end
+      if x3 < xmin then xmin = x3 end
+      if x3 > xmax then xmax = x3 end
+      if x4 < xmin then xmin = x4 end
+      if x4 > xmax then xmax = x4 end
+      ymin = y1
+      ymax = y1
+      if y2 < ymin then ymin = y2 end
+      if y2 > ymax then ymax = y2 end
+      if y3 < ymin then ymin = y3 end
+      if y3 > ymax then ymax = y3 end
+      if y4 < ymin then ymin = y4 end
+      if y4 > ymax then ymax = y4 end
+    end
+  else
+    xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
+    for i = 1, n - 1, 2 do
+      local x, y = shape[i] + 0.0, shape[i + 1] + 0.0
+      finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
+      if x < xmin then xmin = x end
+      if x > xmax then xmax = x end
+      if y < ymin then ymin = y end
+      if y > ymax then ymax = y end
     end
     if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
-    local boxes = view.boxes
-    boxes[1], boxes[2], boxes[3], boxes[4] = xmin, ymin, xmax, ymax
-    -- an axis-parallel rectangle: its sides and its area sign (see PUC Lua's flatBox)
-    local rect = finite == 0 and rectKind(shape, n, xmin, ymin, xmax, ymax) or 0
-    view.rects[1] = rect
-    if rect ~= 0 then
-      view.sides[1] = rectSides(shape, rect, xmin, ymin)
-      local x1, y1 = shape[1] + 0.0, shape[2] + 0.0
-      if rect == 1 then
-        view.turns[1] = (shape[3] + 0.0 > x1) == (shape[6] + 0.0 > y1) and 1.0 or -1.0
-      else
-        view.turns[1] = (shape[5] + 0.0 > x1) == (shape[4] + 0.0 > y1) and -1.0 or 1.0
-      end
-    end
-    return finite == 0
   end
-else
-  flatBox = function(view, _, shape, n)
-    local finite, rect = 0.0, 0
-    local xmin, ymin, xmax, ymax
-    if n == 8 then
-      -- A quadrilateral (a crate, a tile) unrolled: the loop's numbers (the least of equals is
-      -- the first, as there), and whether it is an axis-parallel rectangle, what rectKind and
-      -- rectSides give, from the same locals. An axis-parallel rectangle first: its x are v1's
-      -- and the opposite corner's (each equal to one of them, NaN never is), its y too, so two
-      -- comparisons give its box, and it is finite when its box is; the other shapes (and a
-      -- rectangle of no width or height, or with an infinite side) by eight coordinates' sums
-      -- and twelve comparisons (flatBox took 81 VM instructions for the crate of
-      -- bench/compound.lua, 118 with those first). Its area sign from comparisons: twice its
-      -- area is 2 (x2 - x1) (y3 - y1) for kind 1, -2 (x3 - x1) (y2 - y1) for kind 2, each
-      -- factor's sign flipped when the opposite corner lies left of or above v1 (flatView then
-      -- computes no area sign).
-      local x1, y1, x2, y2 = shape[1] + 0.0, shape[2] + 0.0, shape[3] + 0.0, shape[4] + 0.0
-      local x3, y3, x4, y4 = shape[5] + 0.0, shape[6] + 0.0, shape[7] + 0.0, shape[8] + 0.0
-      if x4 == x1 and y1 == y2 and x2 == x3 and y3 == y4 then
-        rect = 1
-      elseif y4 == y1 and x1 == x2 and y2 == y3 and x3 == x4 then
-        rect = 2
-      end
-      if rect ~= 0 then
-        local xa, ya, turn = x2, y3, 1.0   -- the corner opposite v1
-        if rect == 2 then
-          xa = x3
-          ya = y2
-          turn = -1.0
-        end
-        local pattern = 4 * rect - 3   -- as rectSides
-        xmin = x1
-        xmax = xa
-        if xa < x1 then
-          xmin = xa
-          xmax = x1
-          pattern = pattern + 2
-          turn = -turn
-        end
-        ymin = y1
-        ymax = ya
-        if ya < y1 then
-          ymin = ya
-          ymax = y1
-          pattern = pattern + 1
-          turn = -turn
-        end
-        local big = huge
-        if xmin < xmax and ymin < ymax and -big < xmin and xmax < big and -big < ymin and ymax < big then
-          view.turns[1] = turn
-          view.sides[1] = RECT_SIDES[pattern]
-        else
-          rect = 0
-        end
-      end
-      if rect == 0 then
-        -- 0 unless a coordinate is inf or NaN (x - x is NaN then)
-        finite = (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) + (x3 - x3) + (y3 - y3)
-          + (x4 - x4) + (y4 - y4)
-        xmin = x1
-        xmax = x1
-        if x2 < xmin then xmin = x2 end
-        if x2 > xmax then xmax = x2 end
-        if x3 < xmin then xmin = x3 end
-        if x3 > xmax then xmax = x3 end
-        if x4 < xmin then xmin = x4 end
-        if x4 > xmax then xmax = x4 end
-        ymin = y1
-        ymax = y1
-        if y2 < ymin then ymin = y2 end
-        if y2 > ymax then ymax = y2 end
-        if y3 < ymin then ymin = y3 end
-        if y3 > ymax then ymax = y3 end
-        if y4 < ymin then ymin = y4 end
-        if y4 > ymax then ymax = y4 end
-      end
-    else
-      xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
-      for i = 1, n - 1, 2 do
-        local x, y = shape[i] + 0.0, shape[i + 1] + 0.0
-        finite = finite + (x * 0 + y * 0)   -- stays 0 unless a coordinate is inf or NaN
-        if x < xmin then xmin = x end
-        if x > xmax then xmax = x end
-        if y < ymin then ymin = y end
-        if y > ymax then ymax = y end
-      end
-      if n < 6 then xmin, xmax = huge, -huge end   -- fewer than 3 points: never collides
-    end
-    view.rects[1] = rect
-    local boxes = view.boxes   -- one assignment per statement: see partNormals
-    boxes[1] = xmin
-    boxes[2] = ymin
-    boxes[3] = xmax
-    boxes[4] = ymax
-    local magnitude = 0.0
-    if xmin <= xmax then   -- as shapeBox: max(0, -xmin, xmax, -ymin, ymax), the first of equals
-      if -xmin > magnitude then magnitude = -xmin end
-      if xmax > magnitude then magnitude = xmax end
-      if -ymin > magnitude then magnitude = -ymin end
-      if ymax > magnitude then magnitude = ymax end
-    else
-      xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
-    end
-    view.magnitude = magnitude
-    view.left = xmin
-    view.top = ymin
-    view.right = xmax
-    view.bottom = ymax
-    return finite == 0
+  view.rects[1] = rect
+  local boxes = view.boxes   -- one assignment per statement: see partNormalsPuc
+  boxes[1] = xmin
+  boxes[2] = ymin
+  boxes[3] = xmax
+  boxes[4] = ymax
+  local magnitude = 0.0
+  if xmin <= xmax then   -- as shapeBox: max(0, -xmin, xmax, -ymin, ymax), the first of equals
+    if -xmin > magnitude then magnitude = -xmin end
+    if xmax > magnitude then magnitude = xmax end
+    if -ymin > magnitude then magnitude = -ymin end
+    if ymax > magnitude then magnitude = ymax end
+  else
+    xmin, ymin, xmax, ymax = huge, huge, -huge, -huge
   end
+  view.magnitude = magnitude
+  view.left = xmin
+  view.top = ymin
+  view.right = xmax
+  view.bottom = ymax
+  return finite == 0
 end
+
+local flatBox = JIT and flatBoxJit or flatBoxPuc
 
 -- Fills `view` for the flat array shape and returns it; or nil and the argument error's message
 -- (the caller raises it: after a list's errors, when the list is the first argument).
@@ -586,7 +592,7 @@ local function flatView(fname, argname, shape, view)
     view.edgeRoom = n
   end
   view.lengths[1], view.pending, view.turnPending = n, true, view.rects[1] == 0
-  if JIT then shapeBox(view) end   -- PUC Lua: flatBox did
+  if JIT then shapeBox(view) end   -- PUC Lua: flatBoxPuc did
   return view
 end
 
@@ -595,6 +601,13 @@ M.checkCopy = checkCopy
 M.partTurn = partTurn
 M.partNormals = partNormals
 M.flatView = flatView
+-- both bodies of each pair, for spec/bodies_faces_spec.lua only (and shapeBox, which follows
+-- flatBoxJit in flatView)
+M.flatBoxJit = flatBoxJit
+M.flatBoxPuc = flatBoxPuc
+M.partNormalsJit = partNormalsJit
+M.partNormalsPuc = partNormalsPuc
+M.shapeBox = shapeBox
 M.flatView2 = flatView2
 M.flatView1 = flatView1
 M.preparedParts = preparedParts
