@@ -1,12 +1,14 @@
 # polygon.lua: `make test` runs every check, `make demo` the example scene, `make bench` the
-# benchmark. Missing Debian packages are installed first (apt-get, as root or through sudo).
+# benchmark, `make docs` the API reference (docs/api/index.html). Missing Debian packages are
+# installed first (apt-get, as root or through sudo).
 
 LUAS     ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 LUA      ?= lua5.4
-PACKAGES  = lua5.1 lua5.2 lua5.3 lua5.4 luajit lua-busted lua-check luarocks
+# lua-discount is LDoc's Markdown: Debian's lua-ldoc ships none of its own
+PACKAGES  = lua5.1 lua5.2 lua5.3 lua5.4 luajit lua-busted lua-check luarocks lua-ldoc lua-discount
 SUDO     := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all setup setup-love test lint demo bench bench-quick screenshots
+.PHONY: all setup setup-love test lint docs demo bench bench-quick screenshots
 
 all: test
 
@@ -35,6 +37,11 @@ test: setup
 
 lint: setup
 	luacheck .
+
+# The API reference from the doc comments of the front (docs/config.ld says which file); fails on
+# any LDoc warning, as make test's check does.
+docs: setup
+	ldoc --fatalwarnings -c docs/config.ld .
 
 demo: setup
 	$(LUA) examples/scene.lua

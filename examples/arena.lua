@@ -1,5 +1,6 @@
 -- A box arena of about 250 shapes falling under gravity and resolved with polygon.lua's V
--- functions, in plain Lua (no LÖVE). From the repository root:
+-- functions, in plain Lua (no LÖVE). It needs only polygon.lua (and its polygon/ folder, if any),
+-- found beside this file or in the current directory. From the repository root:
 --   luajit examples/arena.lua [frames]        (or lua5.1 .. lua5.4; 300 frames by default)
 --   luajit examples/arena.lua 300 default     (LuaJIT with its default trace limits, see below)
 -- It prints the time per frame, the garbage per frame of the module's calls, the largest overlap
@@ -11,10 +12,12 @@
 -- and the dispatch on shape kinds (resolvePair).
 local requiredAs = ...
 if not (type(requiredAs) == "string" and requiredAs:match("arena$")) then
-  package.path = "./?.lua;" .. package.path   -- run as a script from the repository root
+  -- run as a script: polygon.lua beside this file (copied into a game's folder), else in the
+  -- current directory (the repository root)
+  local here = type(arg) == "table" and type(arg[0]) == "string" and arg[0]:match("^(.*[/\\])")
+  package.path = (here and here .. "?.lua;" or "") .. "./?.lua;" .. package.path
 end
 local polygon = require "polygon"
-local prng = require "spec.support.prng"
 
 local floor = math.floor
 
@@ -25,6 +28,42 @@ local GRAVITY = 600                  -- px / s^2, down: GRAVITY * DT^2 = 1/6 px 
 local DAMPING = 0.99                 -- keeps 99% of last frame's velocity (air drag, calms piles)
 local ITERATIONS = 6                 -- resolution passes per frame over the candidate pairs
 local WALL = 200                     -- wall thickness: far more than a frame's motion, no tunnelling
+
+--------------------------------------------------------------------------------------------------
+-- A random generator of the file's own, so that the arena needs nothing but polygon.lua.
+-- math.random draws different numbers on 5.1, 5.4 and LuaJIT; this one draws the same on all
+-- five: Park and Miller's minimal standard, state <- state * 48271 mod (2^31 - 1), whose products
+-- stay below 2^47, exact as doubles and as integers. It is the specs' generator
+-- (spec/support/prng.lua), and spec/arena_spec.lua checks that both draw the same numbers.
+--------------------------------------------------------------------------------------------------
+local MODULUS, MULTIPLIER = 2147483647, 48271   -- 2^31 - 1; a multiplier below 2^16
+local TWO26, TWO27, TWO53 = 67108864, 134217728, 9007199254740992
+
+local Random = {}
+Random.__index = Random
+
+-- A generator from an integer seed (taken mod 2^31 - 1; 0, which would stay 0, becomes 1).
+function Random.new(seed)
+  seed = seed % MODULUS
+  return setmetatable({ state = seed == 0 and 1 or seed }, Random)
+end
+
+-- The next state, an integer in 1 .. 2^31 - 2.
+function Random:next()
+  self.state = self.state * MULTIPLIER % MODULUS
+  return self.state
+end
+
+-- An integer in lo .. hi, both inclusive.
+function Random:int(lo, hi)
+  return lo + self:next() % (hi - lo + 1)
+end
+
+-- A number in [lo, hi): 53 random bits (26 from one draw, 27 from the next) over 2^53, exactly.
+function Random:range(lo, hi)
+  local high, low = self:next() % TWO26, self:next() % TWO27
+  return lo + (hi - lo) * ((high * TWO27 + low) / TWO53)
+end
 
 --------------------------------------------------------------------------------------------------
 -- Uniform grid broadphase, fed by polygonBounds. Allocates only while its tables first grow.
@@ -208,7 +247,7 @@ end
 -- spinning) and 50 circles, laid out on a lattice of 13 rows from just above the floor up, with
 -- small random offsets and velocities: the pile is in contact from the first frames.
 local function newWorld(seed)
-  local rng = prng.new(seed or 12345)
+  local rng = Random.new(seed or 12345)
   local bodies = {
     newStatic({ -WALL, -WALL, 0, -WALL, 0, HEIGHT + WALL, -WALL, HEIGHT + WALL }),                -- left
     newStatic({ WIDTH, -WALL, WIDTH + WALL, -WALL, WIDTH + WALL, HEIGHT + WALL, WIDTH, HEIGHT + WALL }),
@@ -340,7 +379,8 @@ local function escape(world)
   return worst
 end
 
-local arena = { WIDTH = WIDTH, HEIGHT = HEIGHT, Grid = Grid, newWorld = newWorld, step = step }
+local arena = { WIDTH = WIDTH, HEIGHT = HEIGHT, Random = Random, Grid = Grid, newWorld = newWorld,
+  step = step }
 
 -- The module's calls counted: a table with the same functions, each adding the heap growth
 -- during its calls to moduleGarbage (the collector stopped). Built once, outside the frames.

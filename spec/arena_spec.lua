@@ -4,13 +4,39 @@
 local arena = require "examples.arena"
 local polygon = require "polygon"
 local prng = require "prng"
+local interpreter = require "interpreter"
 
 local FRAMES = 60
--- Recorded once from a real run, `lua5.4 examples/arena.lua 60` ("checksum 24115748.062509734",
--- again when the polygon push's first length gained its margin), and printed identically by
--- lua5.1, lua5.2, lua5.3 and luajit: this spec runs on all five, so its passing everywhere is the
--- cross-interpreter determinism of the whole simulation.
+-- Recorded from a real run: the line "checksum 24115748.062509734" that
+-- `lua5.4 examples/arena.lua 60` prints, printed alike by `lua5.1`, `lua5.2`, `lua5.3` and
+-- `luajit examples/arena.lua 60` (recorded again, unchanged, when the arena got its own copy of
+-- the specs' generator: the same draws give the same world). This spec runs on all five, so its
+-- passing everywhere is the cross-interpreter determinism of the whole simulation.
 local CHECKSUM = "24115748.062509734"
+
+-- Copies polygon.lua (and its polygon/ folder, when there is one) and examples/arena.lua into a
+-- new empty directory and runs the script there for `frames` frames, with no LUA_PATH or LUA_INIT
+-- of the caller's: what a game that copies the two files gets. Returns its output and exit status.
+local function runCopied(frames)
+  local lua = assert(interpreter())
+  local mk = assert(io.popen("mktemp -d"))
+  local dir = mk:read("*l")
+  mk:close()
+  assert(dir and dir:match("^[%w%./_%-]+$"), "mktemp -d gave " .. tostring(dir))
+  local script = table.concat({
+    "cp polygon.lua examples/arena.lua " .. dir,
+    "if [ -d polygon ]; then cp -R polygon " .. dir .. "/; fi",
+    "cd " .. dir,
+    "unset LUA_PATH LUA_PATH_5_2 LUA_PATH_5_3 LUA_PATH_5_4 LUA_INIT LUA_INIT_5_2 LUA_INIT_5_3 LUA_INIT_5_4",
+    lua .. " arena.lua " .. frames .. " 2>&1",
+    "echo \"@@exit status: $?\"",
+  }, "\n")
+  local pipe = assert(io.popen("(" .. script .. ")"))
+  local out = pipe:read("*a")
+  pipe:close()
+  os.execute("rm -rf " .. dir)
+  return out, tonumber(out:match("@@exit status: (%d+)"))
+end
 
 -- The thinnest shape's width: for a polygon the least extent over its edge normals (the width
 -- of a convex polygon is attained on an edge normal), for a circle its diameter.
@@ -73,6 +99,32 @@ describe("examples/arena.lua", function()
     local half = thinnestWidth(arena.newWorld().bodies) / 2
     assert.is_true(half > 1, tostring(half))
     assert.is_true(stats.maxOverlap < half, ("%.4f >= %.4f"):format(stats.maxOverlap, half))
+  end)
+end)
+
+describe("examples/arena.lua copied beside polygon.lua into an empty directory", function()
+  it("runs there and prints the same checksum for " .. FRAMES .. " frames", function()
+    local out, status = runCopied(FRAMES)
+    assert.are.equal(0, status, out)
+    assert.is_truthy(out:find("\n  checksum%s+" .. CHECKSUM:gsub("%.", "%%.") .. "\n"), out)
+  end)
+end)
+
+describe("the arena's random generator", function()
+  -- the arena keeps its own copy so that it needs only polygon.lua; it must stay the specs' one
+  it("draws the same integers and numbers as spec/support/prng.lua, from the same seeds", function()
+    for _, seed in ipairs({ 12345, 99, 1, 2147483646 }) do
+      local ours, specs = arena.Random.new(seed), prng.new(seed)
+      for _ = 1, 200 do
+        assert.are.equal(specs:int(3, 8), ours:int(3, 8))
+        assert.are.equal(specs:range(-3, 3), ours:range(-3, 3))
+      end
+    end
+  end)
+
+  it("starts from 1 when the seed is a multiple of 2^31 - 1, not from 0 (where it would stay)", function()
+    assert.are.equal(48271, arena.Random.new(0):next())
+    assert.are.equal(48271, arena.Random.new(2147483647):next())
   end)
 end)
 

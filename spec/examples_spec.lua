@@ -2,16 +2,7 @@
 -- with status 0 and prints the measures, point queries and collisions checked below by hand.
 local EXIT_MARK = "@@exit status: "
 
--- the command that started this very interpreter: busted's arg[-1] ("lua5.4" under
--- `lua5.4 /usr/bin/busted`, "luajit" under `luajit /usr/bin/busted`, "lua" when busted runs
--- through its own #!/usr/bin/env lua line)
-local function interpreter()
-  local cmd = type(arg) == "table" and arg[-1]
-  if type(cmd) ~= "string" or not cmd:match("^[%w%./_%-]+$") then
-    return nil, "arg[-1] does not name the interpreter: " .. tostring(cmd)
-  end
-  return cmd
-end
+local interpreter = require "interpreter"
 
 -- runs examples/scene.lua from the repository root; returns its output lines and exit status
 local function runScene()
