@@ -1,3 +1,4 @@
+-- polygon.lua, the front door: its metadata, then every public function in the order of the README.
 local polygon = {
   _VERSION     = "polygon 0.7.0",
   _DESCRIPTION = "Polygon geometry for games: winding, area, convexity, centre, point in polygon, "
@@ -25,37 +26,321 @@ local polygon = {
   ]],
 }
 
-local _PACKAGE = ... .. "."
-local measures = require(_PACKAGE .. "measures")
-local contains = require(_PACKAGE .. "contains")
-local sat = require(_PACKAGE .. "sat")
-local circle = require(_PACKAGE .. "circle")
-local collide = require(_PACKAGE .. "collide")
-local triangulate = require(_PACKAGE .. "triangulate")
-local transform = require(_PACKAGE .. "transform")
-local object = require(_PACKAGE .. "object")
+--- Polygon geometry for games, in pure Lua (5.1 to 5.4, LuaJIT, LÖVE).
+--
+-- Points are flat arrays `{x1, y1, x2, y2, ...}` in screen coordinates: y grows downwards, as in
+-- LÖVE, so "cw" is clockwise as seen on screen. No function modifies `points` unless it is also
+-- passed as `out`. The collision functions take convex polygons of either winding, or lists of
+-- convex parts (from @{polygonConvexParts}) where they say so. Touching is not colliding.
+--
+-- An argument error names the function, the argument and what it got, at the caller's line:
+-- `polygonArea: points must be a table, got nil`. Below, eps is 2^-53 and M the largest
+-- coordinate magnitude involved. The error analysis behind each bound is in docs/accuracy.md.
+--
+-- This file is the front: the implementations live in `polygon/`, one concept a file, and each
+-- export below names the file that holds its function.
+-- @module polygon
 
+local _PACKAGE = ... .. "."   -- "polygon." or, from a game's lib folder, "lib.polygon."
+local measures    = require(_PACKAGE .. "measures")
+local contains    = require(_PACKAGE .. "contains")
+local sat         = require(_PACKAGE .. "sat")
+local collide     = require(_PACKAGE .. "collide")
+local circle      = require(_PACKAGE .. "circle")
+local triangulate = require(_PACKAGE .. "triangulate")
+local transform   = require(_PACKAGE .. "transform")
+local object      = require(_PACKAGE .. "object")
+
+--- Measures
+-- @section measures
+
+--- The winding order as seen on screen (y down): `{0,0, 10,0, 10,10, 0,10}` is `"cw"`. Exact.
+-- @function polygonWindingOrder
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`
+-- @treturn ?string `"cw"` or `"ccw"`; nil for fewer than 3 points or a signed area of exactly 0
+-- @raise when points is not a table of an even number of coordinates, or holds NaN or an infinity
 polygon.polygonWindingOrder = measures.polygonWindingOrder
+
+--- The area by the shoelace formula relative to the first vertex: a few ulps off wherever the
+-- polygon lies. A self-intersecting polygon's lobes count with their winding's sign; an area
+-- beyond the largest double is `inf`.
+-- @function polygonArea
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`
+-- @treturn ?number the area, not negative; nil for fewer than 3 points
+-- @raise as @{polygonWindingOrder}
 polygon.polygonArea = measures.polygonArea
+
+--- The exact area of the given doubles, rounded to within one ulp. Slower than @{polygonArea}:
+-- an error-free split first, a compensated sum where its test fails, an exact sum where that
+-- cannot vouch for the result.
+-- @function polygonAreaAccurate
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`
+-- @treturn ?number the area, not negative; nil for fewer than 3 points
+-- @raise as @{polygonWindingOrder}
 polygon.polygonAreaAccurate = measures.polygonAreaAccurate
+
+--- Whether the polygon is convex, checking every vertex. Repeated vertices and collinear ones
+-- that go on forward keep it convex; a spike that doubles back, a self-intersection or winding
+-- round more than once make it concave. Exact.
+-- @function polygonType
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`
+-- @treturn ?string `"convex"` or `"concave"`; nil for fewer than 3 points or all on one line
+-- @raise as @{polygonWindingOrder}, once a non-finite coordinate is read (two certain turns of
+-- opposite sign before it answer `"concave"`)
 polygon.polygonType = measures.polygonType
+
+--- The centre as the tutorial defines it: the mean of the vertices, within an ulp or two of
+-- exact wherever the polygon lies and whatever its size.
+-- @function polygonCenter
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`
+-- @treturn ?number cx; nil for fewer than 3 points
+-- @treturn number cy
+-- @raise as @{polygonWindingOrder}
 polygon.polygonCenter = measures.polygonCenter
+
+--- The area centroid, the point a physics step turns a uniform body about: within a few ulps of
+-- M of the exact centroid, slivers and nearly degenerate polygons included.
+-- @function polygonCentroid
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`
+-- @treturn ?number cx; nil for fewer than 3 points or an area of exactly 0
+-- @treturn number cy
+-- @raise as @{polygonWindingOrder}
 polygon.polygonCentroid = measures.polygonCentroid
+
+--- Point in polygon
+-- @section contains
+
+--- Whether (x, y) lies inside, by the tutorial's crossing rule (a ray to the right). Works for
+-- concave and self-intersecting polygons (even-odd). Exact. The boundary is half-open: of two
+-- polygons sharing an edge, at most one contains a point of it.
+-- @function polygonContains
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`, not scanned (see @{validate})
+-- @number x
+-- @number y
+-- @treturn boolean false also for fewer than 3 points
+-- @raise when points is not a table of an even number of coordinates, or x or y is not a finite
+-- number
 polygon.polygonContains = contains.polygonContains
+
+--- Separating axes
+-- @section sat
+
+--- The range of the polygon projected on the axis (nx, ny), relative to the point (x, y).
+-- @function projectPolygon
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`
+-- @number x
+-- @number y
+-- @number nx
+-- @number ny
+-- @treturn ?number min of `(px - x) * nx + (py - y) * ny` over the vertices; nil for no points
+-- @treturn number max
+-- @raise when points is not a table of an even number of coordinates, or x, y, nx or ny is not
+-- a number
 polygon.projectPolygon = sat.projectPolygon
+
+--- Whether no edge normal of `points1` separates two convex polygons (the tutorial's one-sided
+-- test). Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+-- Convex polygons only, no lists of parts.
+-- @function polygonCollidesWith
+-- @tparam table points1 flat array `{x1, y1, x2, y2, ...}`
+-- @tparam table points2 flat array
+-- @treturn boolean
+-- @raise when either is not a table of an even number of coordinates, or holds NaN or an
+-- infinity
 polygon.polygonCollidesWith = collide.polygonCollidesWith
+
+--- Whether two convex polygons overlap, by the separating axis theorem. Touching is not
+-- colliding; fewer than 3 points or zero area never collides. Exact.
+-- @function polygonsCollide
+-- @tparam table points1 flat array, or a list of convex parts (colliding when any part does)
+-- @tparam table points2 the same
+-- @treturn boolean
+-- @raise as @{polygonCollidesWith}, naming the part of a list
 polygon.polygonsCollide = collide.polygonsCollide
+
+--- As @{polygonsCollideV}, over the axes of `points1` only: after the push,
+-- `polygonCollidesWith(points1, moved)` is false. Convex polygons only.
+-- @function polygonCollidesWithV
+-- @tparam table points1 flat array `{x1, y1, x2, y2, ...}`
+-- @tparam table points2 flat array, the polygon the push moves
+-- @treturn number|boolean overlap, or false when they do not collide
+-- @treturn number dx
+-- @treturn number dy
+-- @raise as @{polygonCollidesWith}
 polygon.polygonCollidesWithV = collide.polygonCollidesWithV
+
+--- As @{polygonsCollide}, with the minimum translation vector: (dx, dy) moves `points2` out of
+-- `points1` (subtract it from `points1` to move that one instead), right in either argument
+-- order and when the centres coincide. One push separates: after adding it to every vertex of
+-- `points2`, rounded as a game adds it, @{polygonsCollide} says false. The push is at most 8 eps M
+-- longer than the exact depth (lists of parts: see the README).
+-- @function polygonsCollideV
+-- @tparam table points1 flat array, or a list of convex parts
+-- @tparam table points2 the same, the shape the push moves (never along a seam between parts)
+-- @treturn number|boolean overlap, the push's length; or false, exactly where @{polygonsCollide}
+-- gives false
+-- @treturn number dx
+-- @treturn number dy
+-- @raise as @{polygonsCollide}
 polygon.polygonsCollideV = collide.polygonsCollideV
+
+--- Circles
+-- @section circle
+
+--- The range of a circle projected on the axis (nx, ny) of unit length, relative to (x, y).
+-- @function projectCircle
+-- @number cx
+-- @number cy
+-- @number radius
+-- @number x
+-- @number y
+-- @number nx
+-- @number ny
+-- @treturn number min, the centre's projection minus radius
+-- @treturn number max, plus radius
+-- @raise when an argument is not a number or the radius is negative
 polygon.projectCircle = circle.projectCircle
+
+--- Whether two circles overlap, with the push that separates them, moving the second circle.
+-- Exact: they collide when `(x2 - x1)^2 + (y2 - y1)^2 < (r1 + r2)^2` for the given doubles, so
+-- touching is not colliding and a circle of radius 0 collides only strictly inside the other.
+-- After `x2 + dx, y2 + dy` (rounded) they no longer collide; the push is at most 8 eps M longer
+-- than the overlap (M the centres before and after). Equal centres are pushed along +x.
+-- Allocates nothing.
+-- @function circlesCollideV
+-- @number x1
+-- @number y1
+-- @number r1
+-- @number x2
+-- @number y2
+-- @number r2
+-- @treturn number|boolean overlap = r1 + r2 - distance, or false
+-- @treturn number dx
+-- @treturn number dy
+-- @raise when an argument is not a finite number or a radius is negative
 polygon.circlesCollideV = circle.circlesCollideV
+
+--- The push of a circle out of a convex polygon (either winding) or a list of convex parts.
+-- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
+-- a radius of 0, fewer than 3 points or zero area never collide. The overlap is the full
+-- penetration, so a circle deep inside leaves in one step; after `cx + dx, cy + dy` (rounded) it
+-- no longer collides, and the push is at most 8 eps M longer than the exact depth (M over the
+-- polygon, the centre and the moved centre, not the radius).
+-- @function polygonCircleCollideV
+-- @tparam table points flat array, or a list of convex parts
+-- @number cx
+-- @number cy
+-- @number radius
+-- @treturn number|boolean overlap, or false
+-- @treturn number dx, moving the circle (subtract it from the polygon to move that instead)
+-- @treturn number dy
+-- @raise when points is not a table of an even number of coordinates or holds NaN or an
+-- infinity, or cx, cy or radius is not a finite number, or the radius is negative
 polygon.polygonCircleCollideV = collide.polygonCircleCollideV
+
+--- Concave shapes
+-- @section triangulate
+
+--- Splits a polygon, optionally with holes, into triangles. Builds new tables: for load time, not
+-- for every frame. Weakly simple outlines work (repeated vertices, straight runs, an outline
+-- touching itself at a vertex); every decision is an exact sign.
+-- @function polygonTriangulate
+-- @tparam table points flat array, either winding
+-- @tparam[opt] {table,...} holes flat arrays inside the polygon, either winding; a hole may
+-- touch the outline or another hole at a vertex
+-- @treturn[1] {table,...} triangles `{x1, y1, x2, y2, x3, y3}`, copies of input vertices, each
+-- wound like `points`, none of zero area
+-- @return[2] nil
+-- @treturn[2] string why: fewer than 3 points, zero area, crossing edges, a hole outside the
+-- polygon or inside another hole
+-- @raise when points or a hole is not an array of finite numbers
 polygon.polygonTriangulate = triangulate.polygonTriangulate
+
+--- Splits a polygon, optionally with holes, into convex parts: the triangulation merged
+-- greedily (Hertel and Mehlhorn, at most four times the fewest parts). Builds new tables: for
+-- load time. The list goes wherever @{polygonsCollide}, @{polygonsCollideV} and
+-- @{polygonCircleCollideV} take a polygon.
+-- @function polygonConvexParts
+-- @tparam table points flat array, either winding
+-- @tparam[opt] {table,...} holes as in @{polygonTriangulate}
+-- @treturn[1] {table,...} convex flat arrays of input vertices wound like `points`, their
+-- interiors disjoint, their union the polygon; one part for a convex polygon
+-- @return[2] nil
+-- @treturn[2] string why, as in @{polygonTriangulate}
+-- @raise as @{polygonTriangulate}
 polygon.polygonConvexParts = triangulate.polygonConvexParts
+
+--- Moving shapes
+-- @section transform
+
+--- The axis-aligned bounding box, what a broadphase sorts shapes by. Allocates nothing.
+-- Coordinates are taken as finite (@{validate} checks them): a NaN is skipped.
+-- @function polygonBounds
+-- @tparam table points flat array, or a list of convex parts (then the box of them all)
+-- @treturn ?number minx; nil for no points
+-- @treturn number miny
+-- @treturn number maxx
+-- @treturn number maxy
+-- @raise when points (or a part) is not a table of an even number of coordinates
 polygon.polygonBounds = transform.polygonBounds
+
+--- The shape moved by (dx, dy), each coordinate rounded once (`x + dx`).
+-- @function polygonTranslate
+-- @tparam table points flat array, or a list of convex parts
+-- @number dx
+-- @number dy
+-- @tparam[opt] table out the table to write into, reused each frame so that nothing is
+-- allocated; may be `points` itself. Without it the result is a new table (for a list, a new
+-- list of new parts): fine once, garbage every frame.
+-- @treturn table out
+-- @raise when points is not a flat array or a list of parts, dx or dy is not a finite number, or
+-- out is given and is not a table
 polygon.polygonTranslate = transform.polygonTranslate
+
+--- The shape turned by `angle` radians about (ox, oy). On screen (y down) a positive angle turns
+-- clockwise: (1, 0) about (0, 0) by pi / 2 goes to (0, 1). A vertex at distance r from the pivot
+-- lands within 4 eps (r + |x'|) of the exact rotation by the rounded cosine and sine; `angle` 0
+-- copies the points bit for bit. A convex polygon's vertex within rounding of its neighbours'
+-- line may come out on either side (rotate a base shape by the total angle each frame).
+-- @function polygonRotate
+-- @tparam table points flat array, or a list of convex parts
+-- @number angle
+-- @number[opt] ox the pivot, both or neither; by default the area centroid (of a list, the
+-- parts' centroids weighted by area; the vertex mean when there is no area)
+-- @number[opt] oy
+-- @tparam[opt] table out as in @{polygonTranslate}; it may also come third: (points, angle, out)
+-- @treturn table out
+-- @raise when points is not a flat array or a list of parts, angle (or a pivot given) is not a
+-- finite number, or out is given and is not a table
 polygon.polygonRotate = transform.polygonRotate
+
+--- Checking
+-- @section validate
+
+--- Checks everything about a polygon in O(n), which the per-frame functions leave out: a table,
+-- an even number of coordinates, at least 3 points, every coordinate a finite number.
+-- @function validate
+-- @param points anything
+-- @treturn[1] boolean true
+-- @return[2] nil
+-- @treturn[2] string what is wrong, as `points[3] must be a finite number, got nan`
 polygon.validate = object.validate
+
+--- A polygon object wrapping a validated points table (not a copy).
+-- @type Polygon
+
+--- A new Polygon; `Polygon(points)` is the same.
+-- @function Polygon.new
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`, kept as the object's `points` field
+-- @treturn Polygon
+-- @raise @{validate}'s message, as `Polygon.new: points must hold at least 3 points, got 2`
+
+--- Whether (x, y) lies inside, as `polygonContains(self.points, x, y)`.
+-- @function Polygon:contains
+-- @number x
+-- @number y
+-- @treturn boolean
+-- @raise as @{polygonContains}, naming `Polygon:contains`
 polygon.Polygon = object.Polygon
 
 return polygon
