@@ -192,8 +192,8 @@ local function discMeetsExact(points, n, sign, cx, cy, r)
   return inside
 end
 
---- The range of a circle projected on the axis (nx, ny) (unit length), relative to (x, y).
--- @return min, max
+-- The range of a circle projected on the axis (nx, ny) (unit length), relative to (x, y).
+-- Returns min, max
 function M.projectCircle(cx, cy, radius, x, y, nx, ny)
   local fname = "projectCircle"
   checkNumber(cx, fname, "cx")
@@ -213,13 +213,13 @@ local function circlesCollide(x1, y1, r1, x2, y2, r2)
   return reaches(x1, y1, x2, y2, twoDiff(r1, -r2)) > 0
 end
 
---- Whether two circles overlap, with the push that separates them.
+-- Whether two circles overlap, with the push that separates them.
 -- Touching is not colliding; decided exactly ((x2 - x1)^2 + (y2 - y1)^2 < (r1 + r2)^2), so a
 -- circle of radius 0 is a point, colliding only strictly inside the other circle.
 -- (dx, dy) moves the second circle: after x2 + dx, y2 + dy (rounded as a game adds them) the
 -- circles no longer collide. Its length exceeds overlap by a few ulps of the coordinates at
 -- most. Circles with the same centre are pushed along +x.
--- @return overlap, dx, dy (overlap = r1 + r2 - distance) or false
+-- Returns overlap, dx, dy (overlap = r1 + r2 - distance) or false
 function M.circlesCollideV(x1, y1, r1, x2, y2, r2)
   local fname = "circlesCollideV"
   checkFiniteNumber(x1, fname, "x1")

@@ -35,20 +35,20 @@ local function collides(fname, points1, points2, both, kind1, kind2)
 end
 
 
---- Whether the edge normals of points1 show no separating axis between two convex polygons.
+-- Whether the edge normals of points1 show no separating axis between two convex polygons.
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
 -- Raises an error for a non-finite coordinate.
--- @return true or false
+-- Returns true or false
 function M.polygonCollidesWith(points1, points2)
   local collided = collides("polygonCollidesWith", points1, points2, false)
   return collided
 end
 
---- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
+-- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
 -- Either may be a list of convex parts instead (see polygon/compound.lua).
 -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
 -- Raises an error for a non-finite coordinate.
--- @return true or false
+-- Returns true or false
 function M.polygonsCollide(points1, points2)
   -- isParts inlined, the kinds handed on to the checks (two calls and two type calls fewer)
   local kind1 = type(points1) == "table" and type(points1[1])
@@ -88,22 +88,22 @@ local function pushOut(fname, points1, points2, both, kind1, kind2)
   return push, dx, dy
 end
 
---- As polygonCollidesWith, with the minimum translation vector over the axes of points1.
--- @return overlap, dx, dy or false: after adding (dx, dy) to every vertex of points2,
+-- As polygonCollidesWith, with the minimum translation vector over the axes of points1.
+-- Returns overlap, dx, dy or false: after adding (dx, dy) to every vertex of points2,
 -- polygonCollidesWith(points1, moved) is false (see polygonsCollideV)
 function M.polygonCollidesWithV(points1, points2)
   local push, dx, dy = pushOut("polygonCollidesWithV", points1, points2, false)
   return push, dx, dy
 end
 
---- As polygonsCollide, with the minimum translation vector (lists of parts: see polygon/compound.lua).
+-- As polygonsCollide, with the minimum translation vector (lists of parts: see polygon/compound.lua).
 -- overlap is the penetration depth along the axis of least penetration, right also when one
 -- polygon contains the other; (dx, dy) moves points2 out of points1 (add it to every vertex of
 -- points2), pointing the right way in either argument order and when the centres coincide.
 -- One push separates: after p[i] = p[i] + dx (and + dy) on points2, rounded,
 -- polygonsCollide(points1, moved) is false, and the push is at most a few ulps of the
 -- coordinates longer than the exact depth. Raises an error for a non-finite coordinate.
--- @return overlap, dx, dy or false
+-- Returns overlap, dx, dy or false
 function M.polygonsCollideV(points1, points2)
   -- isParts inlined, the kinds handed on to the checks (as in polygonsCollide)
   local kind1 = type(points1) == "table" and type(points1[1])
@@ -116,7 +116,7 @@ function M.polygonsCollideV(points1, points2)
   local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true, kind1, kind2)
   return push, dx, dy
 end
---- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
+-- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
 -- a list of convex parts (see polygon/compound.lua).
 -- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
 -- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
@@ -125,7 +125,7 @@ end
 -- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than the exact
 -- depth by at most 8 eps M, eps = 2^-53 and M the largest coordinate magnitude involved (the
 -- polygon's, the centre's and the moved centre's; see circlePush for the bound, 7.1 eps M).
--- @return overlap, dx, dy (move the circle by dx, dy) or false
+-- Returns overlap, dx, dy (move the circle by dx, dy) or false
 function M.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"
   if isParts(points) then

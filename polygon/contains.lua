@@ -202,10 +202,10 @@ local function checkQuery(fname, points, x, y, level)
   return n
 end
 
---- Whether (x, y) lies inside the polygon, by the crossing rule with the tutorial's half-open
+-- Whether (x, y) lies inside the polygon, by the crossing rule with the tutorial's half-open
 -- boundary. Works for concave and self-intersecting polygons (even-odd). Exact. x and y must be
 -- finite (an error otherwise); the polygon's coordinates are not checked (validate does that).
--- @return true or false; false for fewer than 3 points.
+-- Returns true or false; false for fewer than 3 points.
 local function polygonContains(points, x, y)
   -- the checks written out where they pass (a Lua call costs more than them)
   local n = type(points) == "table" and #points or -1

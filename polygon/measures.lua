@@ -20,9 +20,9 @@ local M = {}
 -- 2, room for the rounding of the sum of squares and of the squares.
 local TURN_BOUND_SQ = 2 * CROSS_BOUND * CROSS_BOUND
 
---- The winding order as seen on screen (y down).
--- @param points flat array {x1, y1, ...}
--- @return "cw" or "ccw"; nil for fewer than 3 points or zero signed area. Exact. A non-finite
+-- The winding order as seen on screen (y down).
+-- points: flat array {x1, y1, ...}
+-- Returns "cw" or "ccw"; nil for fewer than 3 points or zero signed area. Exact. A non-finite
 -- coordinate raises an error (it makes the sum NaN or infinite, which takes the exact path).
 function M.polygonWindingOrder(points)
   -- The checks written out where they pass, and shoelace's loop copied here, unrolled by two
@@ -84,8 +84,8 @@ local function twiceAreaExact(points, n, fname)
   return expCompress() / s / s
 end
 
---- The area (non-negative) by the shoelace formula, relative to the first vertex.
--- @return area; nil for fewer than 3 points. Off by a few ulps for ordinary polygons at any
+-- The area (non-negative) by the shoelace formula, relative to the first vertex.
+-- Returns area; nil for fewer than 3 points. Off by a few ulps for ordinary polygons at any
 -- offset; a self-intersecting polygon's lobes count with their winding's sign. An area that
 -- overflows is infinite; a non-finite coordinate raises an error.
 function M.polygonArea(points)
@@ -119,7 +119,7 @@ function M.polygonArea(points)
   return (sum < 0 and -sum or sum) * 0.5
 end
 
---- The exact area of the given doubles, rounded to within one ulp.
+-- The exact area of the given doubles, rounded to within one ulp.
 -- From 65 to 4,096 vertices first a split in two passes (below); up to 64 vertices a split in one
 -- pass, over the vertices on LuaJIT, over the edges on PUC Lua (below that); where their tests
 -- after the loop fail: a compensated sum (Ogita, Rump and Oishi's Dot2) of 2A = sum over vertices
@@ -134,7 +134,7 @@ end
 -- bench/workloads.lua's ordinary polygons).
 -- It stays one function (about 340 lines, half of them the proofs of its tests): each split is
 -- the per-call hot path of its size, and a call per path costs PUC Lua more than the test.
--- @return area; nil for fewer than 3 points. A non-finite coordinate raises an error.
+-- Returns area; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function M.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
   local n = #points
@@ -729,14 +729,14 @@ end
 
 local polygonType = JIT and polygonTypeJit or polygonTypePuc
 
---- Whether the polygon is convex.
+-- Whether the polygon is convex.
 -- Checks every vertex (the tutorial skips the last one). Repeated consecutive vertices and
 -- collinear vertices that go on forward are allowed; a zero turn that doubles back (a spike) is
 -- concave, and so is a polygon whose turns all agree but which winds around more than once
 -- (a pentagram): its edges' x directions change sign more than twice.
 -- A non-finite coordinate raises an error once read (every NaN or infinity sends the filter
 -- to the careful walk, which checks); a polygon found concave before one is read is concave.
--- @return "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
+-- Returns "convex", "concave", or nil for fewer than 3 points or all points on one line. Exact.
 M.polygonType = polygonType
 M.polygonTypeJit = polygonTypeJit
 M.polygonTypePuc = polygonTypePuc
@@ -759,10 +759,10 @@ local function vertexSums(points, n, scale)
   return sumX + errX, sumY + errY
 end
 
---- The centre as the tutorial defines it: the mean of the vertices.
+-- The centre as the tutorial defines it: the mean of the vertices.
 -- Within an ulp or two of exact wherever the polygon is and whatever its size (compensated
 -- sums; sums that overflow are redone on coordinates scaled down by a power of two).
--- @return cx, cy; nil for fewer than 3 points. A non-finite coordinate raises an error.
+-- Returns cx, cy; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function M.polygonCenter(points)
   local n = checkPoints(points, "polygonCenter")
   if n < 6 then return nil end
@@ -820,11 +820,11 @@ end
 -- times twice its area, a sliver's (or a cancelling, self-intersecting one's) to far more.
 local CANCELLATION_LIMIT = 64
 
---- The area centroid, the point a physics step rotates a uniform polygon about.
+-- The area centroid, the point a physics step rotates a uniform polygon about.
 -- Float sums relative to vertex 1 for ordinary polygons; where they cancel (slivers, nearly
 -- degenerate or self-cancelling polygons) exact sums instead: within a few ulps of the
 -- coordinates' magnitude of the exact centroid either way.
--- @return cx, cy; nil for fewer than 3 points or zero (exact) signed area. A non-finite
+-- Returns cx, cy; nil for fewer than 3 points or zero (exact) signed area. A non-finite
 -- coordinate raises an error.
 function M.polygonCentroid(points)
   local n = checkPoints(points, "polygonCentroid")

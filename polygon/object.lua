@@ -10,9 +10,9 @@ local checkQuery, polygonContains = contains.checkQuery, contains.polygonContain
 local M = {}
 
 
---- Checks everything about a polygon: a table, an even count, at least 3 points, every
+-- Checks everything about a polygon: a table, an even count, at least 3 points, every
 -- coordinate a finite number. O(n), so the per-frame functions keep to O(1) checks.
--- @return true, or nil and a message
+-- Returns true, or nil and a message
 function M.validate(points)
   if type(points) ~= "table" then
     return nil, "points must be a table, got " .. type(points)
@@ -35,7 +35,7 @@ end
 
 local validate = M.validate
 
---- A polygon object holding the caller's points table (not a copy).
+-- A polygon object holding the caller's points table (not a copy).
 local Polygon = {}
 Polygon.__index = Polygon
 
@@ -49,13 +49,13 @@ local function newPolygon(points, level)
   return p
 end
 
---- Polygon.new(points), also Polygon(points): validates, then wraps points.
+-- Polygon.new(points), also Polygon(points): validates, then wraps points.
 function Polygon.new(points)
   local p = newPolygon(points, 2)   -- not a tail call, so the error level is the same everywhere
   return p
 end
 
---- Whether (x, y) lies inside, as polygonContains.
+-- Whether (x, y) lies inside, as polygonContains.
 function Polygon:contains(x, y)
   local points = self.points
   -- polygonContains' checks, naming this method (there they pass again)

@@ -16,8 +16,8 @@ local powerScale, largestMagnitude = kernel.powerScale, kernel.largestMagnitude
 local M = {}
 
 
---- The range of the polygon projected on the axis (nx, ny), relative to the point (x, y).
--- @return min, max of (px - x) * nx + (py - y) * ny over the vertices; nil for no points.
+-- The range of the polygon projected on the axis (nx, ny), relative to the point (x, y).
+-- Returns min, max of (px - x) * nx + (py - y) * ny over the vertices; nil for no points.
 function M.projectPolygon(points, x, y, nx, ny)
   local n = checkPoints(points, "projectPolygon")
   checkNumber(x, "projectPolygon", "x")
@@ -772,7 +772,7 @@ local unit = JIT and unitJit or unitPuc
 -- cannot overflow; from 2^400 up the scaled copies keep 64 binades of headroom below it.
 local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 
---- THE SAT ENGINE. convexPenetration(p1, n1, p2, n2, both) decides exactly whether the
+-- THE SAT ENGINE. convexPenetration(p1, n1, p2, n2, both) decides exactly whether the
 -- convex polygons p1[1..n1] and p2[1..n2] (flat arrays, either winding) overlap: touching is not
 -- overlapping; fewer than 3 points or zero area never overlaps. both: the axes of both
 -- polygons (polygonsCollide); false: the axes of p1 only, both ends of each range
@@ -970,7 +970,7 @@ end
 -- doubles each round, and 64 doublings of eps |x| outgrow any coordinate.
 local PUSH_ROUNDS = 64
 
---- The push that separates, from convexPenetration's least penetration: a push of length >=
+-- The push that separates, from convexPenetration's least penetration: a push of length >=
 -- depth along (ux, uy) after which, with p2's coordinates moved by (dx, dy) and rounded the way
 -- a game moves them (p[i] = p[i] + dx), the chosen line separates the polygons for sure. A
 -- rounded move falls short of the exact depth by the rounding of the moved coordinates (eps

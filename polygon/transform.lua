@@ -72,9 +72,9 @@ local function boundsOf(points, n, minx, miny, maxx, maxy)
   return minx, miny, maxx, maxy
 end
 
---- The axis-aligned bounding box, the box a broadphase sorts shapes by. Allocates nothing.
--- @param points flat array {x1, y1, ...}, or a list of convex parts {part1, part2, ...}
--- @return minx, miny, maxx, maxy (the box of all parts for a list); nil for no points.
+-- The axis-aligned bounding box, the box a broadphase sorts shapes by. Allocates nothing.
+-- points: flat array {x1, y1, ...}, or a list of convex parts {part1, part2, ...}
+-- Returns minx, miny, maxx, maxy (the box of all parts for a list); nil for no points.
 -- Coordinates are taken as finite (validate checks that): a NaN coordinate is skipped.
 function M.polygonBounds(points)
   local fname = "polygonBounds"
@@ -102,13 +102,13 @@ local function translateInto(points, n, dx, dy, out)
   trim(out, n)
 end
 
---- The polygon moved by (dx, dy).
--- @param points flat array, or a list of convex parts
--- @param out optional: the table to write the result into, reused from frame to frame so that a
+-- The polygon moved by (dx, dy).
+-- points: flat array, or a list of convex parts
+-- out: optional: the table to write the result into, reused from frame to frame so that a
 --   call allocates nothing; it may be points itself (moves in place). For a list of parts, out is
 --   a list of part tables (missing ones are created, the first time only). Without out the
 --   result is a NEW table (a new list of new parts): fine once, garbage every frame.
--- @return out. Each coordinate is rounded once (x + dx).
+-- Returns out. Each coordinate is rounded once (x + dx).
 function M.polygonTranslate(points, dx, dy, out)
   local fname = "polygonTranslate"
   if isParts(points) then
@@ -175,7 +175,7 @@ local function rotateInto(points, n, c, s, ox, oy, out)
   trim(out, n)
 end
 
---- The polygon turned by angle (radians) about (ox, oy), by default its area centroid (for a list
+-- The polygon turned by angle (radians) about (ox, oy), by default its area centroid (for a list
 -- of parts, the parts' centroids weighted by their areas; the vertex mean when the area is 0).
 -- In screen coordinates (y down) a positive angle turns CLOCKWISE on screen: (1, 0) about (0, 0)
 -- by pi / 2 goes to (0, 1), straight down.
@@ -187,11 +187,11 @@ end
 -- polygon keeps it convex only up to that rounding: a vertex (nearly) on the line through its
 -- neighbours, within a few ulps of it, may land on either side, so polygonType (exact) can call
 -- the result concave; a vertex that turns by more than the rounding keeps its turn.
--- @param points flat array, or a list of convex parts
--- @param ox, oy optional pivot (both or neither)
--- @param out optional table to write into, as in polygonTranslate (reused: no allocation; may
+-- points: flat array, or a list of convex parts
+-- ox, oy: optional pivot (both or neither)
+-- out: optional table to write into, as in polygonTranslate (reused: no allocation; may
 --   be points itself; without it the result is a NEW table). May come third: (points, angle, out).
--- @return out
+-- Returns out
 function M.polygonRotate(points, angle, ox, oy, out)
   local fname = "polygonRotate"
   if type(ox) == "table" and oy == nil and out == nil then ox, out = nil, ox end
