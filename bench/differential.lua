@@ -76,8 +76,8 @@ local function moduleFrom(source, what)
 end
 
 -- Three instances of the library (OLD, NEW and the helper below) need about three times the
--- traces one game does: raised as the README tells a game to, and further. Without it LuaJIT
--- flushed all its traces a few times a second here (the triangulation ran 50 times slower).
+-- traces one game does: the limits raised as the README tells a game to, and further. Without it
+-- LuaJIT flushed all its traces over and over here, and the triangulation crawled (bench/NOTES.md).
 local JIT = rawget(_G, "jit")
 if JIT then JIT.opt.start("maxtrace=30000", "maxmcode=65536", "sizemcode=1024") end
 
@@ -603,30 +603,29 @@ local function concaveOutline(rng)
   return shapes.star(rng, rng:int(4, 16), rng:range(-200, 200), rng:range(-200, 200), rng:range(20, 200))
 end
 
+-- Adds a list to the bank; a split that failed (nil) adds nothing.
+local function deposit(list)
+  if list then bank[#bank + 1] = list end
+end
+
 local function fillBank(seed)
   local rng = streamFor(seed, "bank")
   for _ = 1, 12 do
     local set = tiles.random(rng, rng:int(2, 5), rng:int(2, 5), 0.6)
     for _, shape in ipairs(tiles.shapes(set, rng:int(1, 40), rng:int(-100, 100), rng:int(-100, 100))) do
       tileShapes[#tileShapes + 1] = shape
-      bank[#bank + 1] = HELPER.polygonConvexParts(shape[1], shape[2])
+      deposit(HELPER.polygonConvexParts(shape[1], shape[2]))
     end
   end
-  for _ = 1, 32 do bank[#bank + 1] = HELPER.polygonConvexParts(concaveOutline(rng)) end
-  for _ = 1, 8 do bank[#bank + 1] = HELPER.polygonTriangulate(concaveOutline(rng)) end
-  for _ = 1, 8 do bank[#bank + 1] = scenes.cluster(rng, rng:int(1, 6), 60, 30) end
-  for _ = 1, 8 do bank[#bank + 1] = (scenes.terrain(rng, rng:int(2, 12))) end
-  -- a failed split gives nil: close the gaps
-  local kept = {}
-  for i = 1, #bank do
-    if bank[i] then kept[#kept + 1] = bank[i] end
-  end
-  bank = kept
+  for _ = 1, 32 do deposit(HELPER.polygonConvexParts(concaveOutline(rng))) end
+  for _ = 1, 8 do deposit(HELPER.polygonTriangulate(concaveOutline(rng))) end
+  for _ = 1, 8 do deposit(scenes.cluster(rng, rng:int(1, 6), 60, 30)) end
+  for _ = 1, 8 do deposit((scenes.terrain(rng, rng:int(2, 12)))) end
 end
 
--- The most parts a list gets, and the most pairs of parts two lists of one call make. A push
--- between lists costs time that grows as a high power of the parts that overlap (4 by 3 tiles
--- against a copy moved by 7: 1.6 s on Lua 5.4; 4 by 4: 4.5 s).
+-- The most parts a list gets, and the most pairs of parts two lists of one call make: a push
+-- between lists costs time that grows as a high power of the parts that overlap, and a few large
+-- overlapping lists would take most of a run (bench/NOTES.md).
 local MAX_PARTS, PAIR_BUDGET = 12, 36
 
 -- A grid of axis-parallel rectangles with tiles missing: tile seams, edges shared by neighbours.
@@ -1002,7 +1001,7 @@ local function triangulationArgs(rng)
   local place = drawPlacement(rng)
   outline = placeShape(place, rng, outline)
   if type(holes) == "table" then holes = placeShape(place, rng, holes) end
-  if chance(rng, 16) then outline = spoil(rng, shapes.translate(outline, 0, 0)) end
+  if chance(rng, 16) then outline = spoil(rng, outline) end   -- a new table: made above
   if holes == nil and chance(rng, 8) then return { outline }, 1 end
   return { outline, holes }, 2
 end
@@ -1304,6 +1303,7 @@ local function report(name, seed, call, args, argsNew, n, old, new, where)
   if argsNew ~= args then print("  arguments (new side): " .. showList(argsNew, 1, n)) end
   print("  old: " .. outcome(old))
   print("  new: " .. outcome(new))
+  io.stdout:flush()
 end
 
 -- One call of a case on both sides; the first difference, described, or nil; both results.
@@ -1349,6 +1349,7 @@ local function runCase(name, make, calls, seed)
   end
   totalCalls = totalCalls + made
   print(("%-22s %9d calls %6d differences %9.1f s"):format(name, made, differences, os.clock() - started))
+  io.stdout:flush()   -- a line per function as it ends, also into a file or a CI log
 end
 
 --------------------------------------------------------------------------------------------------
