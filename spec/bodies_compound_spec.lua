@@ -18,7 +18,8 @@ local tiles = require "tiles"
 local huge = math.huge
 
 -- Whether two values are the same bit for bit, as far as Lua can tell: equal, with zeros of one
--- sign, or both NaN.
+-- sign, or both NaN. Not spec/support/bitwise.lua's same: on Lua 5.3+ edgeWalkJit returns its
+-- vertex index as a float (1.0) where edgeWalkPuc returns an integer, which callers only index with.
 local function same(a, b)
   if type(a) ~= type(b) then return false end
   if type(a) ~= "number" then return a == b end

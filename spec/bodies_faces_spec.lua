@@ -40,6 +40,7 @@
 --   pairRects, and after keepFeet the nearest feet, seamReach, seamX, seamY and leastFree, all
 --   bit for bit.
 local prng = require "prng"
+local bitwise = require "bitwise"
 local shapes = require "shapes"
 local parts = require "parts"
 local tiles = require "tiles"
@@ -49,13 +50,7 @@ local faces = require "polygon.faces"
 
 local mathType = rawget(math, "type") or function() return nil end
 
--- Whether a and b are the same number bit for bit (or the same non-number).
-local function same(a, b)
-  if type(a) ~= "number" or type(b) ~= "number" then return a == b end
-  if a ~= a then return b ~= b end
-  if a ~= b or mathType(a) ~= mathType(b) then return false end
-  return a ~= 0 or 1 / a == 1 / b
-end
+local same = bitwise.same
 
 -- Whether a and b are equal numbers, a zero's sign aside (see the head of the file).
 local function zerosAside(a, b)

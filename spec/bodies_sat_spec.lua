@@ -6,6 +6,7 @@
 -- windings, at offsets up to 1e9 and 2^40, slivers, collinear and repeated vertices, integer
 -- coordinates (Lua integers on 5.3 and 5.4), and pairs that touch, overlap and miss.
 local prng = require "prng"
+local bitwise = require "bitwise"
 local shapes = require "shapes"
 local kernel = require "polygon.kernel"
 local measures = require "polygon.measures"
@@ -14,19 +15,10 @@ local sat = require "polygon.sat"
 
 local floor = math.floor
 local unpack = rawget(table, "unpack") or rawget(_G, "unpack")   -- (5.1 and LuaJIT: a global)
-local mathType = rawget(math, "type")   -- Lua 5.3+: an integer 0 is not a float 0.0
 
--- Whether a and b are the same value: of one type (and subtype), the same zero, both NaN.
-local function same(a, b)
-  if type(a) ~= type(b) then return false end
-  if type(a) ~= "number" then return a == b end
-  if mathType and mathType(a) ~= mathType(b) then return false end
-  if a ~= a then return b ~= b end
-  if a == 0 then return b == 0 and 1 / a == 1 / b end
-  return a == b
-end
+local same = bitwise.same
 
-local function pack(...) return { n = select("#", ...), ... } end
+local pack = bitwise.pack
 
 -- A description of a list of values with every digit (%.17g), for a failure's message.
 local function show(list, count)
