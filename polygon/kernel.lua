@@ -82,13 +82,12 @@ local function expLength() return expLen end
 
 -- Adds the double b to the expansion exactly (Shewchuk's Grow-Expansion, zeros eliminated).
 -- On LuaJIT without a branch inside: each part is written at k + 1 and k counts it when it is
--- not 0, so that a trace copying this loop has no side exit for a zero part (such exits failed
--- to compile in some runs of the benchmark: "NYI: register coalescing too complex", 31 and 42
--- in two batches of `bash bench/aborts.sh 16`). min(|h| 2^1000 2^1000, 1) is 0 for a zero and
--- 1 for any other double. A NaN part (only input outside the exact range makes one) counts too,
--- as on PUC Lua, and never reaches k: LuaJIT's min returns its second argument when either is
--- NaN (on x64 in the interpreter and in traces; spec/non_finite_hard_spec.lua's wild
--- coordinates make NaN parts, and with min(1, ...) k became NaN).
+-- not 0, so that a trace copying this loop has no side exit for a zero part (such exits fail
+-- to compile: "NYI: register coalescing too complex"). min(|h| 2^1000 2^1000, 1) is 0 for a
+-- zero and 1 for any other double. A NaN part (only input outside the exact range makes one)
+-- counts too, as on PUC Lua, and never reaches k: LuaJIT's min returns its second argument
+-- when either is NaN (on x64 in the interpreter and in traces; spec/non_finite_hard_spec.lua's
+-- wild coordinates make NaN parts, and with min(1, ...) k became NaN).
 local function expAdd(b)
   if b == 0 then return end
   local q, k = b, 0
@@ -186,7 +185,7 @@ end
 -- clear his bounds for those stages; only what remains is summed as an expansion of the sixteen
 -- partial products, from the differences split again. The first stages have no loop and keep
 -- three numbers across their branches: on LuaJIT a side trace taken at one of them inherits
--- every value alive there, and with the eight parts too (and the caller's values) it needed more
+-- every value alive there, and with the eight parts too (and the caller's values) it needs more
 -- registers than there are ("NYI: register coalescing too complex", retried on every call).
 local crossExact
 do
@@ -197,9 +196,8 @@ do
   -- The last stage: the sign of the sum of the eight products of the differences' parts, as an
   -- expansion. The factors wait in a table, so that a trace running this inline keeps only the
   -- loop's index in registers at the exits of expAdd's loops, not the eight parts: with them
-  -- (and a calling loop's values) the side traces there failed to compile, "NYI: register
-  -- coalescing too complex" at expAdd's end, 527 aborts in 4 of 16 runs of `bash bench/aborts.sh
-  -- 16`, all from the one-sided functions' deepestVertex loop.
+  -- (and a calling loop's values) the side traces there fail to compile, "NYI: register
+  -- coalescing too complex" at expAdd's end.
   local factors = {}
   local function expansionSign(ux0, uy0, ux1, uy1, vx0, vy0, vx1, vy1, s)
     local axh, axl = twoDiff(ux1 * s, ux0 * s)
@@ -237,10 +235,10 @@ do
     -- vertex on an edge's line), rounding being monotone, two products that round apart are
     -- ordered as their exact values, and the difference of the rounded ones has the sign;
     -- products that round alike differ by their rounding errors, whose difference has it. A few
-    -- operations (TwoDiff's written out: its calls were about a third of the instructions here)
-    -- where stage B below takes four TwoDiffs, two TwoProducts and a Two-Two-Diff. (On LuaJIT,
-    -- which compiles stage B inline, the branches' side traces, inheriting the eight parts,
-    -- failed to compile: "NYI: register coalescing too complex".)
+    -- operations (TwoDiff's written out: a call costs more than its body on PUC Lua) where stage
+    -- B below takes four TwoDiffs, two TwoProducts and a Two-Two-Diff. (Not on LuaJIT, which
+    -- compiles stage B inline: there the branches' side traces, inheriting the eight parts, fail
+    -- to compile, "NYI: register coalescing too complex".)
     if not JIT then
       local a, b = ux1 * s, ux0 * s
       local axh = a - b
@@ -352,12 +350,12 @@ end
 -- shoelace and the bounding box in one pass, for the collision functions on LuaJIT: returns
 -- shoelace's three sums and xmin, xmax, ymin, ymax. A NaN or infinite coordinate makes xSq + dSq
 -- non-finite. The box is kept with min and max, single instructions there: the comparisons' side
--- exits were side traces of this loop, and with those of the code after it they passed LuaJIT's
--- 100 side traces per loop, after which whole calls ran in the interpreter (`luajit -jv
--- bench/run.lua --only 'polygonsCollideV pMix'`). The PUC interpreters call min and max as
--- functions, so there comparisons are faster, and the area's sign is decided in the same call:
--- turnAndBounds, below. LuaJIT's xSq and dSq up to 8 vertices bound the sums by the box, as
--- turnAndBounds does, which changes only how often areaSignOf needs its exact path, never its sign.
+-- exits would be side traces of this loop, and with those of the code after it they pass
+-- LuaJIT's 100 side traces per loop, after which whole calls run in the interpreter. The PUC
+-- interpreters call min and max as functions, so there comparisons are faster, and the area's
+-- sign is decided in the same call: turnAndBounds, below. LuaJIT's xSq and dSq up to 8
+-- vertices bound the sums by the box, as turnAndBounds does, which changes only how often
+-- areaSignOf needs its exact path, never its sign.
 -- Beyond 8 vertices a loop. The first vertex and the previous one are read from points in
 -- every step (LuaJIT hoists the first and forwards the previous): only the seven sums cross
 -- from one step to the next, so a side trace that leaves the loop midway inherits few values
@@ -383,10 +381,8 @@ local function shoelaceBounds(points, n)
     return sum, xSq, dSq, xmin, xmax, ymin, ymax
   end
   -- Up to 8 vertices no loop: a loop of 3 to 8 steps is a trace of its own whose entry and
-  -- exit cost more than its steps (a miss, decided by the boxes, took 0.27 to 0.32 of the
-  -- tutorial's time with the loop, 0.12 to 0.16 without: `luajit bench/isolated.lua
-  -- polygonsCollideV miss`). Vertices 2 to 8, the last one repeated for fewer (its edges add
-  -- 0 to the sum); the sum in pairs, as a tree, where the loop's is a chain.
+  -- exit cost more than its steps. Vertices 2 to 8, the last one repeated for fewer (its edges
+  -- add 0 to the sum); the sum in pairs, as a tree, where the loop's is a chain.
   -- (vertices 2 and 3 at constant indices: convexPenetration, the one caller, hands on 3
   -- vertices or more)
   local x1, y1 = points[1] + 0.0, points[2] + 0.0

@@ -26,12 +26,8 @@ local TURN_BOUND_SQ = 2 * CROSS_BOUND * CROSS_BOUND
 -- coordinate raises an error (it makes the sum NaN or infinite, which takes the exact path).
 function M.polygonWindingOrder(points)
   -- The checks written out where they pass, and shoelace's loop copied here, unrolled by two
-  -- (no multiple assignment): each Lua call costs about 13 ns on Lua 5.4. Calling shoelace
-  -- instead took this from 1.2 to 1.4 times the tutorial's time on Lua 5.4, and an unrolled
-  -- shoelace to 1.3 (21 interleaved rounds on bench/workloads.lua's ordinary polygons; the
-  -- target is 1.3 in lua5.4 bench/run.lua --only 'polygonWindingOrder ord'). polygonArea's
-  -- loop is this one without the squares. A change to shoelace or to areaSignOf's bound
-  -- must be made here too.
+  -- (no multiple assignment): a Lua call is dear on PUC Lua. polygonArea's loop is this one
+  -- without the squares. A change to shoelace or to areaSignOf's bound must be made here too.
   local n = type(points) == "table" and #points or -1
   if n % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
   if n < 6 then return nil end
@@ -92,9 +88,8 @@ function M.polygonArea(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonArea") end
   local n = #points
   if n < 6 then return nil end
-  -- shoelace's sum alone, unrolled as in polygonWindingOrder: the loop that sums the squares
-  -- too took this from 0.92 to 1.19 times the tutorial's time on Lua 5.4 and from 0.81 to
-  -- 0.97 on LuaJIT (targets 1.1 and 1.0), measured as in polygonWindingOrder
+  -- shoelace's sum alone, unrolled as in polygonWindingOrder: no sums of squares, which only
+  -- the sign's bound needs
   local x0, y1 = points[1] + 0.0, points[2] + 0.0
   local px, py, sum = 0.0, y1, 0.0
   local start = 3
@@ -129,9 +124,8 @@ end
 -- could reach a quarter ulp of the result the area is summed exactly as an expansion instead
 -- (several times slower). The x are not taken relative to vertex 1 (as shoelace does): far from
 -- the origin that makes T larger, but the test below still passes while T / |2A| is below about
--- 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and dropping the x differences'
--- TwoSums took this from 3.8 to 3.3 times polygonArea's time on Lua 5.4 (interleaved rounds on
--- bench/workloads.lua's ordinary polygons).
+-- 2^37 at 16 vertices (2^27 for the benchmark's polygons at 1e9), and the x differences' TwoSums
+-- are saved.
 -- It stays one function (about 340 lines, half of them the proofs of its tests): each split is
 -- the per-call hot path of its size, and a call per path costs PUC Lua more than the test.
 -- Returns area; nil for fewer than 3 points. A non-finite coordinate raises an error.
@@ -146,9 +140,8 @@ function M.polygonAreaAccurate(points)
   -- |v| <= 2^52 q, vh = (v + sigma) - sigma (Rump, Ogita and Oishi's ExtractScalar) is v
   -- rounded to a multiple of q, exactly, and vl = v - vh is exact and at most q; beyond,
   -- |vh| > 2^51 q, so a bound on every |vh| below that bounds every |v|.
-  -- One quantum serves both axes, guessed from one pair of vertices: from two pairs (1 and m
-  -- too) the guess cost 10 more Lua 5.4 instructions a call (368 against 358 on
-  -- bench/workloads.lua's ordinary polygons, each of which passes the tests either way); a
+  -- One quantum serves both axes, guessed from one pair of vertices (a second pair costs
+  -- instructions on every call, and ordinary polygons pass the tests with one); a
   -- polygon far narrower than long, or whose middle vertex lies near vertex 1, only fails the
   -- tests sooner. (Beyond 4,096 vertices the large split's bound on its float part fails for
   -- spiky polygons: on bench/workloads.lua's large star it is 0.09, 0.17, 1.1 and 31 times what
@@ -162,18 +155,12 @@ function M.polygonAreaAccurate(points)
     -- and D_k = dh + dlExact (dh = yh_{k-1} - yh_{k+1}, dlExact = yl_{k-1} - yl_{k+1}): the
     -- term is X dh, summed exactly in hi, plus X dlExact + xl (dh + dlExact), small, summed in
     -- floating point in lo (dl, dlExact rounded). 26 floating-point operations a vertex against
-    -- Dot2's 33: about 750 machine instructions a call against 944 (cachegrind, the difference
-    -- of 500 and 1,500 passes of luajit bench/area_small.lua --alone FILE polygonAreaAccurate
-    -- ord PASSES; polygonArea 391).
+    -- Dot2's 33.
     -- Each step splits its neighbours' y again, carrying no part from step to step: with the
-    -- four y parts carried (two fewer splits a vertex) the traces that left the loop failed to
-    -- compile ("NYI: register coalescing too complex", 291 and 385 aborts in 3 and 6 of 16
-    -- runs of `bash bench/aborts.sh 16 polygonAreaAccurate`; 0 in 32 runs so, as with Dot2
-    -- alone), for about 3 % more time (`luajit bench/area_small.lua --alone FILE
-    -- polygonAreaAccurate ord 20000`, three alternating runs: 70.0-71.6 -> 72.7-76.4 ns). The
-    -- middle vertex comes from integer operations: m - m % 2 + 1 is a floating-point floor on
-    -- LuaJIT, on the path to every split; the same instructions, but it cost 3 to 8 ns a call
-    -- (luajit bench/area_small.lua --alone, alternating runs).
+    -- four y parts carried (two fewer splits a vertex) the traces that leave the loop fail to
+    -- compile ("NYI: register coalescing too complex"). The middle vertex comes from integer
+    -- operations: m - m % 2 + 1 is a floating-point floor on LuaJIT, slower, and on the path
+    -- to every split.
     local x1, y1 = points[1], points[2]
     local k = (n - n % 4) / 2 + 1
     local g = abs(points[k] - x1) + abs(points[k + 1] - y1)
@@ -261,21 +248,18 @@ function M.polygonAreaAccurate(points)
         -- hi, the second small and summed in floating point in lo. The odd vertices' terms
         -- take the even vertices' y, and the even ones the odd: one pass over each half, each
         -- carrying only the split of the y before it (two values, not four: on LuaJIT four
-        -- left the loop moving values between registers), the last term wrapping round to
+        -- leave the loop moving values between registers), the last term wrapping round to
         -- y_1. Alongside: sx = sum xh^2, sd = sum dh^2 and l2, the sum of lo^2 after every
         -- second term, which bound everything the tests after the loops need with no branch,
-        -- no call and no abs per vertex (tracking the largest |x|, |dh| and partial sum with
-        -- math.max and math.abs instead took 2.8 times polygonArea's time at 1,000 vertices on
-        -- LuaJIT against 2.3 with a sum of squares, in one run of interleaved rounds; PUC Lua
-        -- would pay a call for each).
-        -- On LuaJIT this loop is bound by its floating-point additions, 13.5 a vertex (one
-        -- fewer a vertex took 9% off its time, one fewer multiplication nothing): so x is
-        -- taken as it is, not relative to vertex 1 (one more subtraction a vertex, 7% more
-        -- time). Instead x and y swap roles when |x_1| > |y_1| (the term becomes
-        -- y_k (x_{k-1} - x_{k+1}), of opposite sign; the index arithmetic costs LuaJIT no
-        -- time): a polygon far from the origin along one axis passes the tests below; one far
-        -- along both fails them and takes Dot2 (bench/workloads.lua's polygons of 1,000
-        -- vertices moved by (d, d): all pass at d = 8 times their radius, none at 32).
+        -- no call and no abs per vertex (math.max and math.abs tracking the largest |x|, |dh|
+        -- and partial sum cost LuaJIT more than sums of squares, and PUC Lua a call each).
+        -- On LuaJIT this loop is bound by its floating-point additions, 13.5 a vertex: so x is
+        -- taken as it is, not relative to vertex 1 (one more subtraction a vertex). Instead x
+        -- and y swap roles when |x_1| > |y_1| (the term becomes y_k (x_{k-1} - x_{k+1}), of
+        -- opposite sign; the index arithmetic costs LuaJIT no time): a polygon far from the
+        -- origin along one axis passes the tests below; one far along both fails them and takes
+        -- Dot2 (bench/workloads.lua's polygons of 1,000 vertices moved by (d, d): all pass at
+        -- d = 8 times their radius, none at 32).
         -- Below, x and y name the coordinates in their roles.
         -- a: 1 when the roles swap; the flat index of a term's x plus yNext is that of the
         -- next vertex's y (3, or 1 for the next vertex's x when swapped)
@@ -372,7 +356,7 @@ function M.polygonAreaAccurate(points)
         -- and dh = yh_j - yh_i are exact multiples of q, and so is every sum of their
         -- products, while below 2^53 q^2: that sum is exact. The rest,
         -- sh (yl_j - yl_i) + (Xl_i + Xl_j)(y_j - y_i), is small and summed in floating point.
-        -- About 26 Lua 5.4 instructions per vertex against Dot2's 42 below.
+        -- Fewer VM instructions per vertex than Dot2's below.
         local x0h = (x1 + sigma) - sigma
         -- the parts of the edge's first vertex (xHi = xh - x0h): the last vertex first
         local x, y = points[n - 1], points[n]
@@ -443,9 +427,8 @@ function M.polygonAreaAccurate(points)
     local dh = yNext - yPrev              -- D = dh + dl exactly (TwoSum)
     local bv = yNext - dh
     local dl = (yNext - (dh + bv)) + (bv - yPrev)
-    -- x dh = p + e exactly: twoProduct written out, as calling it took this from 3.2 to 4.1
-    -- times polygonArea's time on Lua 5.4 (no change on LuaJIT), in 61 interleaved rounds on
-    -- bench/workloads.lua's ordinary polygons
+    -- x dh = p + e exactly: twoProduct written out, as on PUC Lua a call costs more than the
+    -- product
     local p = x * dh
     local c = splitter * x
     local ah = c - (c - x)
@@ -535,8 +518,8 @@ end
 -- or more for a pentagram): with every turn below a half turn, the signs of dx run
 -- + (0) - (0) + once per winding.
 -- LuaJIT (no integers, so no conversions): no branch in the loop. math.min, math.max and
--- math.abs compile to single instructions; data-dependent branches became side traces and
--- made this loop over twice the baseline's time (bench/run.lua --only 'polygonType ord').
+-- math.abs compile to single instructions; data-dependent branches become side traces, dearer
+-- than the loop's steps.
 -- The sign of the product of consecutive edges' dx is taken without a branch: in the exact
 -- range a nonzero product of coordinate differences is at least 2^-998, so 2^1000 times it
 -- clamps to +-1. Around m edges whose turns are all certain, no two consecutive dx are 0 and
@@ -546,12 +529,10 @@ end
 -- happen, and |l + r| <= |s| passes anyway (as in cross). Any NaN or overflow makes errSum
 -- NaN or infinite, so nothing is certain.
 -- The turns at the last vertex, at vertex 1 and at vertex 2 are taken before the loop, and
--- when they disagree the call ends there (58 of the 100 stars among bench/run.lua's ordinary
--- polygons end there; 44 with the first two turns only, when `luajit bench/run.lua --only
--- '^polygonType ord'`, ten runs each alternating, gave medians of 1.195 and 1.23 with two,
--- 1.165 and 1.18 with three). Only four sums cross that branch: its side trace inherits
--- little (with the first turns' differences and products alive there too it failed to
--- compile in 1 of 4 runs, "NYI: register coalescing too complex").
+-- when they disagree the call ends there (most concave polygons turn both ways within their
+-- first few vertices). Only four sums cross that branch: its side trace inherits little (with
+-- the first turns' differences and products alive there too it can fail to compile, "NYI:
+-- register coalescing too complex").
 local function typeFiltered(points, n)
   local cx, cy = points[n - 1], points[n]
   local ex, ey = cx - points[n - 3], cy - points[n - 2]
@@ -606,7 +587,7 @@ local function polygonTypeJit(points)
   return kind
 end
 
--- PUC Lua: math.min/max/abs are C calls (about 16 ns each, a Lua call about 13), so one
+-- PUC Lua: math.min/max/abs are C calls, dearer than comparisons, so one
 -- function with a branchy loop, one comparison per turn in the common case. The turns at
 -- the last vertex and at vertex 1 come first: the first one's sign picks ySign, which flips y
 -- so that every turn of a convex polygon is positive, and a second turn against it ends the
@@ -620,11 +601,8 @@ end
 -- positive and below a half turn, the edges' direction turns one way and leaves the half
 -- plane dx > 0 exactly once per winding (a turn cannot cross the half plane dx <= 0, a half
 -- turn wide), so the turns from an edge with dx > 0 to one with dx <= 0 count the windings.
--- Lua 5.4 instructions per call on bench/workloads.lua's ordinary polygons (a debug.sethook
--- count hook): 180 with one turn per step, its moves and a direction variable, 153 so (the
--- tutorial's 132), lua5.4 bench/run.lua --only '^polygonType ord$' 1.5-1.6 -> 1.35-1.4;
--- walking a polygon with a negative first turn backwards instead of flipping y took 167
--- (a longer start than the loop saves on 4 to 16 vertices).
+-- Flipping y costs less than walking such a polygon backwards, whose longer start the loop
+-- does not win back on 4 to 16 vertices.
 -- polygonTypePuc stays whole (about 100 lines): its loop is the hot path, and a call per step or
 -- per part would cost more than the turns it takes.
 -- PUC Lua's: one branchy pass, one comparison per turn, as calls cost more than branches.

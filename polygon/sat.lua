@@ -87,19 +87,17 @@ end
 -- between go to the exact kernel. The sign is multiplied by the sign +-1, never by an area, so
 -- nothing underflows.
 -- Two bodies giving the same answer. On LuaJIT a first pass keeps the largest det - bound and
--- det + bound with max and abs, no branch (the branches' side exits, taken from traces that had
--- unrolled this loop, failed to compile: "NYI: register coalescing too complex"), and counts
+-- det + bound with max and abs, no branch (the branches' side exits, taken from traces that
+-- unroll this loop, fail to compile: "NYI: register coalescing too complex"), and counts
 -- the vertices it cannot place, keeping the first and the last. When it cannot decide, at most
 -- two of them (a touching pair's shared edge, a vertex on the edge) go to onLineSigns, an exact
 -- test of both without a branch when their differences are exact, else to crossExact, whose
 -- stage B decides all but exactly collinear ones with inexact differences (through cross, the
--- vertices near the line took its filter's side exit, and those side traces failed to compile
--- too), by two calls, where a pass over every vertex took touching pairs
--- 0.31 to 0.32 of the tutorial's time, not 0.26 to 0.27 (`luajit bench/isolated.lua
--- polygonsCollideV touch`); more by a second pass with no early exit (an exit in it made
--- LuaJIT abort the loop's trace, "leaving loop in root trace"). On PUC Lua one pass returns at
--- the first vertex surely inside, and calls crossExact only for the vertices the filter cannot
--- place (on a touching pair's shared edge the second pass took a third of this): cross's own
+-- vertices near the line take its filter's side exit, and those side traces fail to compile
+-- too), by two calls, cheaper than a pass over every vertex; more by a second pass with no
+-- early exit (an exit in it makes LuaJIT abort the loop's trace, "leaving loop in root
+-- trace"). On PUC Lua one pass returns at the first vertex surely inside, and calls crossExact
+-- only for the vertices the filter cannot place, with no second pass: cross's own
 -- filter, on the same products turned by `inside`, could not place them either, short of a det
 -- exactly at its bound, whose sign crossExact gives too.
 -- For vertexInside: whether its test of vertices p and q against the line can be trusted
@@ -157,8 +155,8 @@ local function onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
   return unsafe, max(pSign, qSign)
 end
 
--- vertexInsideJit stays whole (about 120 lines, 8 vertices written out): a step function per
--- vertex brought LuaJIT's trace aborts back.
+-- vertexInsideJit stays whole (about 120 lines, 8 vertices written out): with a step function
+-- per vertex LuaJIT's traces abort.
 -- LuaJIT's: branch-free passes, then onLineSigns for at most two vertices (see above).
 local function vertexInsideJit(ax, ay, bx, by, cx, cy, inside, points, n)
   cx, cy = cx + 0.0, cy + 0.0
@@ -177,15 +175,11 @@ local function vertexInsideJit(ax, ay, bx, by, cx, cy, inside, points, n)
     end
   else
     -- Up to 8 vertices written out, the last one repeated for fewer and counted once: a loop
-    -- of 6 to 8 steps here was copied unrolled by the side trace that reaches it from
-    -- reachPast, one copy per polygon size, whose exits for the other sizes failed to compile
-    -- ("NYI: register coalescing too complex", in 1 to 3 of 12 runs of the mixed pairs). A
-    -- loop of a constant 8 steps, as faceAndFar's, has no such exits either, but took the
-    -- mixed pairs 0.30-0.38 of the tutorial's time where this takes 0.26-0.29 (`luajit
-    -- bench/isolated.lua polygonsCollideV`, four interleaved runs; touching pairs 0.35-0.36
-    -- against 0.31-0.34). Each vertex through a small step function returning the five
-    -- numbers was as fast, but brought NYI aborts back (9 in 3 of 16 runs of `bash
-    -- bench/aborts.sh 16 polygonsCollide`, against none in 32).
+    -- of 6 to 8 steps here is copied unrolled by the side trace that reaches it from
+    -- reachPast, one copy per polygon size, whose exits for the other sizes fail to compile
+    -- ("NYI: register coalescing too complex"). A loop of a constant 8 steps, as faceAndFar's,
+    -- has no such exits either, but is slower here; each vertex through a small step function
+    -- returning the five numbers brings those aborts back.
     local i, l, r, det, bound, unsure
     i = 1
     l, r = ex * (points[i + 1] - cy), ey * (points[i] - cx)
@@ -258,12 +252,8 @@ local function vertexInsideJit(ax, ay, bx, by, cx, cy, inside, points, n)
     -- exponents sum to at least -902, every step of Dekker's is a multiple of 2^-1006 and
     -- exact, as without underflow; a zero factor makes l, pl and every step 0). NaN or inf
     -- anywhere makes `unsafe` NaN or positive. Otherwise both vertices go to crossExact.
-    -- Against two crossExact calls always: touching pairs 204 -> 193, 208 -> 197, 206 -> 189 ns
-    -- a call, mixed 235 -> 232, 228 -> 227, 237 -> 231 (`luajit /work/brief/s10/tools/t2.lua
-    -- touch|mix`, interleaved, machine shared); machine instructions a touching call 2,646 ->
-    -- 2,504, mixed 2,361 -> 2,295 (cachegrind, fixed trace seed). Written inline here, the
-    -- guard's snapshot kept every temporary alive and spilled them (2,520 instructions); in a
-    -- function they die at its return.
+    -- Cheaper than two crossExact calls always. Written inline here, the guard's snapshot would
+    -- keep every temporary alive and spill them; in a function they die at its return.
     local px, py, qx, qy = points[first] + 0.0, points[first + 1] + 0.0, points[last] + 0.0,
       points[last + 1] + 0.0
     local unsafe, sign = onLineSigns(ax, ay, bx, by, cx, cy, inside, px, py, qx, qy)
@@ -298,8 +288,8 @@ local function vertexInsidePuc(ax, ay, bx, by, cx, cy, inside, points, n)
     if det > t or det > -t then   -- not surely outside
       if det > t and det > -t then return true end   -- surely inside
       -- The exact sign, short of the zeros known without it: p = c, and p = b on the line
-      -- through a (c = a), the far end of a touching pair's shared edge (half of crossExact's
-      -- calls from here on the benchmark's mixed pairs, 51 of 101)
+      -- through a (c = a), the far end of a touching pair's shared edge (a frequent call of
+      -- crossExact from here)
       if (px ~= cx or py ~= cy) and (px ~= bx or py ~= by or cx ~= ax or cy ~= ay)
           and crossExact(ax, ay, bx, by, cx, cy, px, py) * inside > 0 then
         return true
@@ -347,21 +337,16 @@ end
 -- least key also names an edge within tolSq or apart (a touching pair's), if there is one,
 -- which is decided after the loop from the loop's own numbers; if it is reached past after
 -- all, reachPastFull decides from the start, as it does for larger polygons and where a
--- selection would not keep -0.0 or NaN as the comparisons do. (Before, a second selection per
--- edge noted the first such edge and the projections were taken again for it: 4,040 -> 3,840
--- machine instructions per overlapping call, 2,891 -> 2,844 per touching one, cachegrind.)
+-- selection would not keep -0.0 or NaN as the comparisons do.
 -- Any such edge will do: an edge decided apart makes the answer false whichever is examined,
--- and otherwise reachPastFull decides. With an exit from the loop at such an edge, side traces
--- that reached the loop before it was compiled copied it, and the copy's exits failed to
--- compile ("NYI: register coalescing too complex", 2,216 aborts in 1 of 12 runs of the
--- touching pairs).
+-- and otherwise reachPastFull decides. The loop has no exit at such an edge: side traces that
+-- reach the loop before it is compiled copy it, and the copy's exits fail to compile ("NYI:
+-- register coalescing too complex").
 -- reachPastFull is one flat loop over every (edge, vertex) pair, whose edge's verdict is a side
 -- exit of its trace taken at every edge's last vertex (nested loops over a polygon's 6 to 8
--- vertices failed to become traces of their own, "leaving loop in root trace", and their
--- unrolled copies' side traces failed to compile). With the one loop over the edges
--- polygonsCollideV took 0.24 to 0.27 of the tutorial's time where the flat loop took 0.28 to
--- 0.33, and its overlapping pairs 0.27 to 0.29, not 0.36 to 0.42 (`luajit bench/isolated.lua
--- polygonsCollideV` and `... polygonsCollideV overlap`). PUC Lua runs reachBoth instead, below.
+-- vertices fail to become traces of their own, "leaving loop in root trace", and their
+-- unrolled copies' side traces fail to compile). The one loop over the edges is faster, most of
+-- all on overlapping pairs. PUC Lua runs reachBoth instead, below.
 
 -- reachPast's and reachBoth's tolerance for polygons within a box of sides spanX and spanY:
 -- (16 eps)^2 (spanX^2 + spanY^2), or every axis decided exactly where that square would
@@ -416,9 +401,8 @@ local function reachPast(edges, ne, turn, other, no, tolSq)
   -- the least key and its overlap and edge end; the largest key (see below)
   local leastKey, leastOverlap, leastEnd, largestKey = huge, 0.0, 1, -huge
   -- other's vertices, the last one repeated for fewer than 8 (harmless to a min), read before
-  -- the loop: its trace then takes them from the stack, where reading them in the loop made it
-  -- convert and check every index on each entry (its first pass took 387 machine instructions
-  -- on the overlapping pairs so, 228 now, callgrind; the reads, in the calling trace, share
+  -- the loop: its trace then takes them from the stack, where reading them in the loop makes it
+  -- convert and check every index on each entry (the reads, in the calling trace, share
   -- shoelaceBounds' there for the first call)
   -- (vertices 2 and 3 at constant indices: convexPenetration hands on 3 vertices or more)
   local x1, y1, x2, y2, x3, y3 = other[1], other[2], other[3], other[4], other[5], other[6]
@@ -456,9 +440,8 @@ local function reachPast(edges, ne, turn, other, no, tolSq)
     leastEnd = better * ib + (1 - better) * leastEnd
     ia = ib
   end
-  -- (the vertices' locals dead from here: kept alive, the side traces leaving the loop took them
-  -- over and failed to compile, "NYI: register coalescing too complex", 382 and 669 aborts a
-  -- run when the traces were first recorded on missing pairs)
+  -- (the vertices' locals dead from here: kept alive, the side traces leaving the loop take them
+  -- over and fail to compile, "NYI: register coalescing too complex")
   x1, y1, x2, y2, x3, y3, x4, y4, x5, y5, x6, y6, x7, y7, x8, y8 = nil   -- luacheck: ignore 311 532
   if not (leastKey > tolSq and largestKey < 2^1023) then
     -- The edge of the least key: apart, surely or decided exactly; else (reached past exactly,
@@ -520,13 +503,8 @@ local function reachBoth(p1, n1, turn1, p2, n2, turn2, tolSq, top1, bottom2)
   -- after it, within a half turn (with a tie, an edge whose normal is (0, 1) comes first or
   -- last, either way in order). Without them (pairOverlaps), at p1's first edge, p2's deepest
   -- vertex found over every vertex. Either way from p1's first edge with a normal there (the
-  -- area is not zero, so there is one): c -> cn, cn at kn. The known start saves the scan:
-  -- Lua 5.4 VM instructions a call of the benchmark's mixed pairs 875 -> 855 (overlapping
-  -- 1,368 -> 1,320, touching 844 -> 872, missing 355 -> 371: the indices cost every call,
-  -- `lua5.4 bench/instructions.lua`); `lua5.4 bench/run.lua --only '^polygonsCollideV pMix$'`
-  -- over 16 processes, two runs each, alternating: 0.44 and 0.44 -> 0.43 and 0.43. The same
-  -- answers as the scan's start on 240,000 calls of random convex pairs (boxes, grid polygons
-  -- with ties, repeated vertices, both windings, offsets to 1e9).
+  -- area is not zero, so there is one): c -> cn, cn at kn. The known start saves the scan, at
+  -- the cost of the indices on every call.
   local lo
   local kn, d = top1 and top1 + 2 or 1, bottom2
   if kn > n1 then kn = 1 end
@@ -567,7 +545,7 @@ local function reachBoth(p1, n1, turn1, p2, n2, turn2, tolSq, top1, bottom2)
   local keyAhead, keyWrap = n1 + (step > 0 and 2 or 0), n1 + n2
   local key, squaredNormal
   -- (one assignment per statement in this loop: Lua 5.4 gives a multiple assignment a move
-  -- through a temporary per value, which here was a tenth of the loop)
+  -- through a temporary per value)
   for _ = 2, n1 + n2, 2 do
     -- the next edge's squared outward normal and the least projection lo on that normal of the
     -- other polygon (from its current vertex), the edge's key; then its polygon moves on
@@ -630,14 +608,8 @@ end
 -- polygons at once, the shorter one's last vertex read again (harmless to a min or max): half
 -- the loops of the two calls, each a loop other traces could copy unrolled. Up to 8 vertices it
 -- always runs 8 steps: a loop whose count is a constant has no side exit for the other polygon
--- sizes in the copies. Those exits failed to compile ("NYI: register coalescing too complex":
--- 160 of the 236 NYI aborts in 16 runs of `bash bench/aborts.sh 16`; none at this loop in 48
--- runs after, while other sites still gave some, 283 in 3 of the last 16), for a few percent
--- more time (`luajit bench/isolated.lua polygonCollidesWithV`, six runs each: 0.89-0.98 of the
--- tutorial's time before, 0.84-1.05 after). Two other shapes were measured and dropped: the
--- edge loop flat over (edge, vertex) pairs, as reachPast's, with the verdicts after it, took
--- 0.99-1.68 (mostly above 1.4); each polygon's eight projections as one expression, with no
--- inner loop, 0.71-1.68, with 735 to 2,460 of those aborts a run.
+-- sizes in the copies. Those exits fail to compile ("NYI: register coalescing too complex"); the
+-- constant count costs a little time.
 -- LuaJIT's: one loop over both polygons, 8 steps for up to 8 vertices.
 local function faceAndFarJit(edges, ne, other, no, ax, ay, nx, ny)
   local lo, hi, own = huge, -huge, huge
@@ -652,9 +624,6 @@ local function faceAndFarJit(edges, ne, other, no, ax, ay, nx, ny)
   return -lo, hi - own
 end
 
--- projectRange's and minProjection's loops written out, not called: two calls an edge
--- (polygonCollidesWith on Lua 5.4, the benchmark's mixed pairs: 1,614 VM instructions per
--- call with the calls, 1,531 without, `lua5.4 bench/instructions.lua polygonCollidesWith`)
 -- PUC Lua's: minProjection's and projectRange's loops written out, two calls an edge fewer.
 local function faceAndFarPuc(edges, ne, other, no, ax, ay, nx, ny)
   local lo, hi = huge, -huge
@@ -681,7 +650,7 @@ local faceAndFar = JIT and faceAndFarJit or faceAndFarPuc
 -- (its end is read again where needed, the tolerance computed after them); the deepest vertex
 -- of the least is found once, after the loop. On LuaJIT a trace of the caller that runs on into
 -- a loop not yet compiled unrolls it, and the side traces leaving that copy inherit every value
--- alive there: with a false-or-index, the edge's end and the tolerance alive too they needed more
+-- alive there: with a false-or-index, the edge's end and the tolerance alive too they need more
 -- registers than there are ("NYI: register coalescing too complex", retried on every call).
 local function reachPastBothEnds(edges, ne, turn, other, no, span)
   local leastSquared, leastOverlap, leastEnd, leastAtFar = huge, 0.0, 1, 0
@@ -811,8 +780,7 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
     -- Both turns and the spans before the box test, so that only those four numbers are alive
     -- at its exit: the side trace that a miss takes there inherits them, where with the sums
-    -- and the boxes alive it failed to compile in some runs ("NYI: register coalescing too
-    -- complex", 10 in 3 of 16 runs of `bash bench/aborts.sh 16`)
+    -- and the boxes alive it can fail to compile ("NYI: register coalescing too complex")
     turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
     spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
     if both and min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1) <= 0 then
@@ -909,26 +877,17 @@ end
 -- separatingPush, below): the largest det + bound over the vertices p of points moved by the push,
 -- where det is e x (p - q) turned to be > 0 on the side `inside` (e premultiplied by that sign,
 -- which is exact) and bound is cross's error bound, its filter inlined. No vertex is inside when it
--- is 0. One cross product a vertex, from q only: the bound grows with |p - q|, and trying each
--- vertex from the edge's other end too (the better of the two kept, as before) placed the vertex
--- that ends near that end, but cost a second cross product and bound for every vertex, where the
--- first push's margin (see separatingPush) already covers the bound from q for all but a few: on
--- the benchmark's 300 overlapping pairs 321 checks instead of 318. The largest excess:
--- `spec/sat_push_spec.lua` 4.76 eps M on LuaJIT as before, 4.76 -> 5.99 on Lua 5.4 (whose sin and
--- cos make other pairs); 5.16 -> 6.31 over 4,000 calls on random pairs at offsets to 2^40;
--- `spec/sat_push_hard_spec.lua` (the deepest vertex at the edge's far end) 2.56 -> 3.88 and 4.15 ->
--- 4.79. LuaJIT machine instructions per overlapping call 3,619 -> 3,514, mixed 2,361 -> 2,308
--- (valgrind's cachegrind, 900 minus 300 passes over `W.pairs(300, ...)`, trace seed fixed by
--- bench/fixseed.c); time per call overlapping about 7 % less, mixed 4 to 7 % (both versions in one
--- process, interleaved rounds). Up to 8 vertices there is no loop: the vertices in one expression,
--- as in reachPast (a loop of 6 to 8 steps often failed to become a trace of its own, "leaving loop
--- in root trace" in 2 of 6 runs of the mixed pairs under `luajit -jv`, and the traces that reached
--- it then copied it unrolled). Beyond, the loop is branch-free and takes the line from pushLine in
--- every step: LuaJIT hoists those loads and products out of its compiled loop, and a side trace
--- that leaves the loop midway (a trace that ran on into it before it was compiled had unrolled it)
--- inherits only the push from its parent. With the line's numbers held across the loop such
--- side traces needed more registers than there are ("NYI: register coalescing too complex", retried
--- on every push, `luajit bench/isolated.lua polygonsCollideV`).
+-- is 0. One cross product a vertex, from q only: the bound grows with |p - q|, but the first
+-- push's margin (see separatingPush) already covers the bound from q for all but a few vertices,
+-- and a second cross product and bound from the edge's other end would cost every vertex. Up to
+-- 8 vertices there is no loop: the vertices in one expression, as in reachPast (a loop of 6 to 8
+-- steps often fails to become a trace of its own, "leaving loop in root trace", and the traces
+-- that reach it then copy it unrolled). Beyond, the loop is branch-free and takes the line from
+-- pushLine in every step: LuaJIT hoists those loads and products out of its compiled loop, and a
+-- side trace that leaves the loop midway (a trace that runs on into it before it is compiled
+-- unrolls it) inherits only the push from its parent. With the line's numbers held across the
+-- loop such side traces need more registers than there are ("NYI: register coalescing too
+-- complex", retried on every push).
 -- one vertex's det + bound, from q
 local function reachOf(ex, ey, qx, qy, px, py)
   local l, r = ex * (py - qy), ey * (px - qx)
@@ -983,22 +942,16 @@ local PUSH_ROUNDS = 64
 -- So along a slanted axis (ux uy not 0) the first push is already lengthened by a margin of
 -- about what the check's rounding takes away, eps (|qx ux| + |qy uy| + |ex| + |ey|) (q the
 -- line's point, e its edge: the moved coordinates' rounding, the depth's and the filter's bound
--- grow with them), and one check proves it for 282 of the benchmark's 300 overlapping pairs,
--- where from the depth itself 201 needed a second (which costs a square root and a division
--- too; 318 checks in all, not 501: `bench/workloads.lua`'s pairOverlap, a count hook; counted
--- again per call, 285 in one check, and 282 and 321 since it tries each vertex from q only).
--- The largest excess in `spec/sat_push_spec.lua` went from 4.46 to 4.76 eps M (the contract:
--- 8), as long as the second round's pushes it replaces. Along an axis the depth comes first, as
--- before: a move along x or y is often exact there.
+-- grow with them), and one check then proves most pushes, where from the depth itself many
+-- need a second (which costs a square root and a division too). The margin lengthens a push no
+-- more than the second round it replaces, well within the contract (8 eps M beyond the exact
+-- depth). Along an axis the depth comes first: a move along x or y is often exact there.
 -- Returns push length, dx, dy.
 -- Two bodies computing the same push (to the depth's rounding, which differs by an ulp where the
 -- two SAT bodies round differently). On PUC Lua the check (lineShortfall's, with pushLine's
 -- line) is written out in the loop over the rounds, and its filter is tried first without abs,
--- which places most vertices: with the calls (twelve arguments for the check, pushLine's eight
--- results, abs) the push took 395 VM instructions per overlapping pair of the benchmark on Lua
--- 5.4, 313 so (`lua5.4 bench/instructions.lua`, the push's share counted by a count hook). Each
--- vertex from q only, as on LuaJIT (the same pushes): overlapping pairs 1,374 -> 1,368 VM
--- instructions a call, mixed 876 -> 875.
+-- which places most vertices: the calls (twelve arguments for the check, pushLine's eight
+-- results, abs) are dear on PUC Lua. Each vertex from q only, as on LuaJIT (the same pushes).
 -- LuaJIT's: the check by lineShortfall, the first push's margin without a branch.
 local function separatingPushJit(p1, n1, p2, n2, depth, ux, uy, owner, edgeEnd, base, inside)
   if ux == 0 and uy == 0 then return 0.0, 0.0, 0.0 end   -- no axis: see convexPenetration
