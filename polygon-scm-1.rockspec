@@ -30,6 +30,7 @@ build = {
     ["polygon.sat"] = "polygon/sat.lua",
     ["polygon.circle"] = "polygon/circle.lua",
     ["polygon.object"] = "polygon/object.lua",
+    ["polygon.convex"] = "polygon/convex.lua",
     ["polygon.triangulate"] = "polygon/triangulate.lua",
     ["polygon.views"] = "polygon/views.lua",
     ["polygon.faces"] = "polygon/faces.lua",

@@ -7,13 +7,17 @@ local sat = require(_PACKAGE .. ".sat")
 local compound = require(_PACKAGE .. ".compound")
 local views = require(_PACKAGE .. ".views")
 local circle = require(_PACKAGE .. ".circle")
+local convex = require(_PACKAGE .. ".convex")
+local object = require(_PACKAGE .. ".object")
 
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
 local checkRadius = check.checkRadius
 local convexPenetration, separatingPush = sat.convexPenetration, sat.separatingPush
 local collideParts, collideCircleParts = compound.collideParts, compound.collideCircleParts
-local isParts = views.isParts
 local circleCollision = circle.circleCollision
+local checkConvex, refuseEntries = convex.checkConvex, convex.refuseEntries
+local objectPoints = object.objectPoints
+local listView = views.listView
 
 local M = {}
 
@@ -24,11 +28,74 @@ local function raiseNonFinite(fname, argname)
   error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
 end
 
+-- The shape a collision function was handed when its first entry is not a number (kind: its
+-- type, false for a non-table): a Polygon object's points, a list of parts (kind "table"), or
+-- the argument error, raised at `level` (as error's, counted from this function's caller).
+-- Returns the shape and its kind: "number" for a flat array, "table" for a list of parts.
+local function resolveShape(fname, argname, shape, kind, level)
+  if kind == false then
+    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), level + 1)
+  end
+  local points = objectPoints(shape)
+  if points then shape, kind = points, type(points[1]) end
+  if kind == "table" then
+    local first = shape[1]
+    if #first > 2 and type(first[1]) == "number" then return shape, "table" end   -- parts
+    refuseEntries(fname, argname, shape, kind, level + 1)
+  end
+  if kind == "nil" then
+    local n = checkPoints(shape, fname, argname, level + 2, true)
+    checkConvex(shape, n, fname, argname, level + 1)   -- raises: fewer than 3 points
+  elseif kind ~= "number" then
+    refuseEntries(fname, argname, shape, kind, level + 1)
+  end
+  return shape, kind
+end
+
+-- Checks a flat shape handed with a list of parts (the list's parts are checked when it is
+-- prepared): an even count, at least 3 points, convex. level as in resolveShape.
+local function checkFlat(fname, argname, shape, level)
+  local n = checkPoints(shape, fname, argname, level + 2, true)
+  checkConvex(shape, n, fname, argname, level + 1)
+end
+
+-- Both arguments of a function that takes lists of parts, resolved (called from the public
+-- function when a first entry is not a number). A flat shape beside a list is checked here;
+-- the list's parts when it is prepared. Returns the shapes and their kinds.
+local function resolveTwo(fname, points1, points2, kind1, kind2)
+  points1, kind1 = resolveShape(fname, "points1", points1, kind1, 3)
+  -- a list first: its errors before the second argument's (listView raises at the caller of
+  -- the function that calls it, as from collideParts)
+  if kind1 == "table" then listView(fname, "points1", points1) end
+  points2, kind2 = resolveShape(fname, "points2", points2, kind2, 3)
+  if kind1 == "table" and kind2 == "number" then checkFlat(fname, "points2", points2, 3) end
+  if kind2 == "table" and kind1 == "number" then checkFlat(fname, "points1", points1, 3) end
+  return points1, points2, kind1, kind2
+end
+
+-- Both arguments of a one-sided function (convex polygons only, no lists of parts), resolved.
+local function resolveOne(fname, points1, points2, kind1, kind2)
+  local kind
+  points1, kind = resolveShape(fname, "points1", points1, kind1, 3)
+  if kind == "table" then
+    error(("%s: points1 is a list of parts; it takes convex polygons only (polygonsCollide "
+      .. "takes lists)"):format(fname), 3)
+  end
+  points2, kind = resolveShape(fname, "points2", points2, kind2, 3)
+  if kind == "table" then
+    error(("%s: points2 is a list of parts; it takes convex polygons only (polygonsCollide "
+      .. "takes lists)"):format(fname), 3)
+  end
+  return points1, points2
+end
+
 -- kind1, kind2: the type of each argument's first entry where the caller has looked (it is a
 -- table then), else nil.
 local function collides(fname, points1, points2, both, kind1, kind2)
   local n1 = checkPoints(points1, fname, "points1", 4, kind1)
   local n2 = checkPoints(points2, fname, "points2", 4, kind2)
+  checkConvex(points1, n1, fname, "points1", 3)
+  checkConvex(points2, n2, fname, "points2", 3)
   local depth, argname = convexPenetration(points1, n1, points2, n2, both)
   if depth == nil then raiseNonFinite(fname, argname) end
   return depth ~= false
@@ -40,7 +107,14 @@ end
 -- Raises an error for a non-finite coordinate.
 -- Returns true or false
 function M.polygonCollidesWith(points1, points2)
-  local collided = collides("polygonCollidesWith", points1, points2, false)
+  local fname = "polygonCollidesWith"
+  local kind1 = type(points1) == "table" and type(points1[1])
+  local kind2 = type(points2) == "table" and type(points2[1])
+  if kind1 ~= "number" or kind2 ~= "number" then
+    points1, points2 = resolveOne(fname, points1, points2, kind1, kind2)
+    kind1, kind2 = "number", "number"
+  end
+  local collided = collides(fname, points1, points2, false, kind1, kind2)
   return collided
 end
 
@@ -53,10 +127,13 @@ function M.polygonsCollide(points1, points2)
   -- isParts inlined, the kinds handed on to the checks (two calls and two type calls fewer)
   local kind1 = type(points1) == "table" and type(points1[1])
   local kind2 = type(points2) == "table" and type(points2[1])
-  if kind1 == "table" or kind2 == "table" then
-    local hit = collideParts("polygonsCollide", points1, points2, false, kind1 == "table",
-      kind2 == "table")
-    return hit
+  if kind1 ~= "number" or kind2 ~= "number" then
+    points1, points2, kind1, kind2 = resolveTwo("polygonsCollide", points1, points2, kind1, kind2)
+    if kind1 == "table" or kind2 == "table" then
+      local hit = collideParts("polygonsCollide", points1, points2, false, kind1 == "table",
+        kind2 == "table")
+      return hit
+    end
   end
   local collided = collides("polygonsCollide", points1, points2, true, kind1, kind2)
   return collided
@@ -77,6 +154,8 @@ local function pushOut(fname, points1, points2, both, kind1, kind2)
     n1 = checkPoints(points1, fname, "points1", 4, kind1)
     n2 = checkPoints(points2, fname, "points2", 4, kind2)
   end
+  checkConvex(points1, n1, fname, "points1", 3)
+  checkConvex(points2, n2, fname, "points2", 3)
   local depth, ux, uy, owner, edgeEnd, base, inside =
     convexPenetration(points1, n1, points2, n2, both)
   if not depth then
@@ -92,7 +171,15 @@ end
 -- Returns overlap, dx, dy or false: after adding (dx, dy) to every vertex of points2,
 -- polygonCollidesWith(points1, moved) is false (see polygonsCollideV)
 function M.polygonCollidesWithV(points1, points2)
-  local push, dx, dy = pushOut("polygonCollidesWithV", points1, points2, false)
+  local fname = "polygonCollidesWithV"
+  local kind1 = type(points1) == "table" and type(points1[1])
+  local kind2 = type(points2) == "table" and type(points2[1])
+  if kind1 ~= "number" or kind2 ~= "number" then
+    points1, points2 = resolveOne(fname, points1, points2, kind1, kind2)
+    kind1, kind2 = "number", "number"
+  end
+  local push, dx, dy = pushOut(fname, points1, points2, false, kind1, kind2)
+  if not push then return false end
   return push, dx, dy
 end
 
@@ -108,12 +195,17 @@ function M.polygonsCollideV(points1, points2)
   -- isParts inlined, the kinds handed on to the checks (as in polygonsCollide)
   local kind1 = type(points1) == "table" and type(points1[1])
   local kind2 = type(points2) == "table" and type(points2[1])
-  if kind1 == "table" or kind2 == "table" then
-    local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true,
-      kind1 == "table", kind2 == "table")
-    return overlap, dx, dy
+  if kind1 ~= "number" or kind2 ~= "number" then
+    points1, points2, kind1, kind2 = resolveTwo("polygonsCollideV", points1, points2, kind1, kind2)
+    if kind1 == "table" or kind2 == "table" then
+      local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true,
+        kind1 == "table", kind2 == "table")
+      if not overlap then return false end
+      return overlap, dx, dy
+    end
   end
   local push, dx, dy = pushOut("polygonsCollideV", points1, points2, true, kind1, kind2)
+  if not push then return false end
   return push, dx, dy
 end
 -- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
@@ -128,15 +220,21 @@ end
 -- Returns overlap, dx, dy (move the circle by dx, dy) or false
 function M.polygonCircleCollideV(points, cx, cy, radius)
   local fname = "polygonCircleCollideV"
-  if isParts(points) then
-    local overlap, dx, dy = collideCircleParts(fname, points, cx, cy, radius)
-    return overlap, dx, dy
+  local kind = type(points) == "table" and type(points[1])
+  if kind ~= "number" then
+    points, kind = resolveShape(fname, "points", points, kind, 2)
+    if kind == "table" then
+      local overlap, dx, dy = collideCircleParts(fname, points, cx, cy, radius)
+      if not overlap then return false end
+      return overlap, dx, dy
+    end
   end
-  local n = checkPoints(points, fname)
+  local n = checkPoints(points, fname, "points", 3, true)
+  checkConvex(points, n, fname, "points", 2)
   checkFiniteNumber(cx, fname, "cx")
   checkFiniteNumber(cy, fname, "cy")
   checkRadius(radius, fname, "radius")
-  if n < 6 or radius == 0 then return false end
+  if radius == 0 then return false end
   -- converted in place: on LuaJIT the numbers of this frame and of circleCollision's are then
   -- the same (see circleCollision: fewer for a side trace to take over)
   cx = cx + 0.0

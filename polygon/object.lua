@@ -67,6 +67,15 @@ function Polygon:contains(x, y)
   return inside
 end
 
+-- The points of a Polygon object, or nil for anything else: the functions that take a polygon
+-- take the object too and use its points (called only where a shape's first entry is not a
+-- number, so flat arrays pay nothing).
+local function objectPoints(shape)
+  if getmetatable(shape) == Polygon then return rawget(shape, "points") end
+  return nil
+end
+M.objectPoints = objectPoints
+
 setmetatable(Polygon, { __call = function(_, points)
   local p = newPolygon(points, 2)
   return p

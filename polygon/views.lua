@@ -5,10 +5,12 @@
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local sat = require(_PACKAGE .. ".sat")
+local convex = require(_PACKAGE .. ".convex")
 
 local sqrt, huge, min, max = math.sqrt, math.huge, math.min, math.max
 local areaSign, JIT, cross = kernel.areaSign, kernel.JIT, kernel.cross
 local unit = sat.unit
+local checkConvex, fewPointsMessage = convex.checkConvex, convex.fewPointsMessage
 
 local M = {}
 
@@ -254,6 +256,7 @@ local function prepareParts(fname, argname, parts)
     if not partBox(info, k, part, n) then
       error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 5)
     end
+    checkConvex(part, n, fname, ("%s[%d]"):format(argname, k), 5)
     partNormals(info, k, part, n)
   end
   shapeBox(info)
@@ -321,6 +324,19 @@ local function checkList(fname, argname, shape)
       error(("%s: %s[%d] must hold an even number of coordinates, got %d")
         :format(fname, argname, k, #part), 5)
     end
+    local first = part[1]
+    if type(first) ~= "number" and #part > 0 then
+      error(("%s: %s[%d][1] must be a number, got %s; a list of parts holds flat arrays")
+        :format(fname, argname, k, type(first)), 5)
+    end
+    if #part < 6 then
+      local name = ("%s[%d]"):format(argname, k)
+      if #part == 0 and getmetatable(part) ~= nil then
+        error(("%s: %s is an object; a list of parts holds flat arrays (pass its .points)")
+          :format(fname, name), 5)
+      end
+      error(fewPointsMessage(fname, name, #part), 5)
+    end
   end
 end
 
@@ -333,6 +349,7 @@ local function refreshPart(view, k, part, n, level)
     view.records[k][9] = false   -- the next call refreshes the part again, and raises again
     error(("%s: %s holds a non-finite coordinate"):format(view.fname, view.argname), level)
   end
+  if n >= 6 then checkConvex(part, n, view.fname, ("%s[%d]"):format(view.argname, k), level) end
   partNormals(view, k, part, n)
   local copy = view.copies[k]
   for i = 1, n do copy[i] = part[i] end

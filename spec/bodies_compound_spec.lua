@@ -182,7 +182,7 @@ end)
 
 -- Lists of parts for partsOverlapping: floors of boxes (rectangles from their (xmin, ymin)),
 -- boxes starting at other corners, random convex parts, convex parts of random tile sets,
--- parts with fewer than three points, at offsets up to 1e9, integer coordinates.
+-- parts of zero area, at offsets up to 1e9, integer coordinates.
 local function randomList(rng)
   local kind = rng:int(1, 5)
   local ox = rng:pick({ 0, 0, 1e3, -1e9, 1e9 })
@@ -216,12 +216,13 @@ local function randomList(rng)
       end
     end
     if #list == 0 then list[1] = parts.box(0, 0, 32, 32) end
-  else   -- a few parts of fewer than three points among boxes
+  else   -- a few parts of zero area among boxes (fewer than three points are refused)
     list = {}
     for k = 1, rng:int(2, 8) do
       if rng:int(1, 3) == 1 then
-        list[k] = rng:int(1, 2) == 1 and { rng:int(-100, 100), rng:int(-100, 100) }
-          or { 0, 0, rng:int(1, 50), rng:int(1, 50) }
+        local x, y = rng:int(-100, 100), rng:int(-100, 100)
+        list[k] = rng:int(1, 2) == 1 and { x, y, x, y, x, y }
+          or { 0, 0, x, y, 2 * x, 2 * y }
       else
         list[k] = parts.box(rng:int(-100, 100), rng:int(-100, 100), rng:int(1, 50), rng:int(1, 50))
       end

@@ -171,12 +171,19 @@ describe("compound shapes", function()
   end)
 
   describe("when parts are degenerate", function()
-    it("ignores parts with fewer than 3 points or zero area", function()
-      local list = { { 0, 0, 10, 0 }, { 0, 0, 5, 5, 10, 10 }, {}, parts.box(0, 0, 10, 10) }
+    it("ignores parts of zero area", function()
+      local list = { { 0, 0, 5, 5, 10, 10 }, { 3, 3, 3, 3, 3, 3 }, parts.box(0, 0, 10, 10) }
       assert.is_true(collide(list, parts.box(8, 2, 10, 5)))
       assertPush(list, parts.box(8, 2, 10, 5), 2, 0)
-      assert.is_false(collide({ { 0, 0, 10, 0 }, { 0, 0, 5, 5, 10, 10 } }, parts.box(0, 0, 10, 10)))
-      assert.is_false(collideV({ { 0, 0, 10, 0 } }, parts.box(0, 0, 10, 10)))
+      assert.is_false(collide({ { 0, 0, 5, 5, 10, 10 } }, parts.box(0, 0, 10, 10)))
+      assert.are.equal(false, collideV({ { 0, 0, 5, 5, 10, 10 } }, parts.box(0, 0, 10, 10)))
+    end)
+
+    it("refuses parts with fewer than 3 points (spec/refusals_spec.lua has every message)", function()
+      assert.has_error(function() collide({ { 0, 0, 10, 0 }, parts.box(0, 0, 10, 10) }, parts.box(8, 2, 10, 5)) end,
+        "polygonsCollide: points1[1] has 2 points: a segment; a polygon needs at least 3")
+      assert.has_error(function() collideV({ parts.box(0, 0, 10, 10), {} }, parts.box(8, 2, 10, 5)) end,
+        "polygonsCollideV: points1[2] is empty; a polygon needs at least 3 points")
     end)
   end)
 
@@ -387,8 +394,8 @@ describe("compound shapes", function()
         local name = fn == collide and "polygonsCollide" or "polygonsCollideV"
         assert.has_error(function() fn({ box, 5 }, { 1, 2, 3 }) end,
           name .. ": points1[2] must be a table, got number")
-        assert.has_error(function() fn({ 1, 2, 3 }, { box, 5 }) end,
-          name .. ": points1 must hold an even number of coordinates, got 3")
+        assert.has_error(function() fn({ 1, 2, 3, 4 }, { box, 5 }) end,
+          name .. ": points1 has 2 points: a segment; a polygon needs at least 3")
         assert.has_error(function() fn({ box, { 0 / 0, 0, 1, 0, 1, 1 } }, { 0, 0, 1 / 0, 0, 1, 1 }) end,
           name .. ": points1 holds a non-finite coordinate")
       end

@@ -107,8 +107,8 @@ describe("degenerate polygons", function()
   end)
 
   it("never collide when their area is zero, with polygons or circles covering them", function()
-    each(function(name, p, _, _, zero)
-      if zero then
+    each(function(name, p, kind, _, zero)
+      if zero and kind ~= "concave" then
         local cx, cy = oracle.center(p)
         local r = 4 * extent(p) + 1
         local cover = { cx - r, cy - r, cx + r, cy - r, cx + r, cy + r, cx - r, cy + r }

@@ -86,11 +86,13 @@ describe("defect: the tutorial's SAT fails on repeated vertices and degenerate p
     assert.are.equal(false, polygon.polygonsCollideV(A, segment))
   end)
 
-  it("reports no collision with a two-point polygon lying across a square", function()
+  it("refuses a two-point polygon lying across a square (it is not a polygon)", function()
     local two = { 2, 5, 8, 5 }
     assert.is_true(tutorialCollide(A, two))
-    assert.is_false(polygon.polygonsCollide(A, two))
-    assert.are.equal(false, polygon.polygonsCollideV(two, A))
+    assert.has_error(function() polygon.polygonsCollide(A, two) end,
+      "polygonsCollide: points2 has 2 points: a segment; a polygon needs at least 3")
+    assert.has_error(function() polygon.polygonsCollideV(two, A) end,
+      "polygonsCollideV: points1 has 2 points: a segment; a polygon needs at least 3")
   end)
 end)
 
