@@ -323,6 +323,13 @@ row("polygonCircleCollideV", "ciMix", "v3", "circleV")
 row("polygonCircleCollideV", "ciIn", "v3", "circleV")
 row("projectCircle", "pcOrd", "num2", "none")
 row("validate", "ord", "bool", "valid", "validate")
+-- the convexity check's cost (issue 29): each collision row against the same function without it
+for _, f in ipairs({ { "polygonCollidesWith", "bool", "collide1" }, { "polygonsCollide", "bool", "collide2" },
+                     { "polygonCollidesWithV", "v3", "collideV1" },
+                     { "polygonsCollideV", "v3", "collideV2" } }) do
+  row(f[1], "pMix", f[2], f[3], "unchecked " .. f[1])
+end
+row("polygonCircleCollideV", "ciMix", "v3", "circleV", "unchecked polygonCircleCollideV")
 
 -- function, workload, LuaJIT target, Lua 5.4 target (ratio of the medians at most)
 local TARGETS = {
@@ -352,6 +359,9 @@ local function sideOf(lib, fname, wl)
     return { args = args, call = function(i) return objects[i]:contains(a[2][i], a[3][i]) end }
   end
   local f = lib[fname]
+  -- "unchecked NAME": NAME without the convexity check (polygon/collide.lua's M.unchecked)
+  local uncheckedName = fname:match("^unchecked (.+)$")
+  if uncheckedName then f = require("polygon.collide").unchecked[uncheckedName] end
   if type(f) ~= "function" then return nil end
   return { f = f, args = a, call = function(i)
     local values = {}
@@ -373,6 +383,10 @@ end
 
 local isTarget = {}
 for _, t in ipairs(TARGETS) do isTarget[t[1] .. "@" .. t[2]] = true end
+-- a row's key; the rows against an unchecked variant (the convexity check's cost) have their own
+local function rowKey(r)
+  return r.fname .. "@" .. r.wl.key .. (r.base and r.base:match("^unchecked ") and "@unchecked" or "")
+end
 
 -- The per-round ratios of one row timed in a fresh process (a new draw of LuaJIT's traces), and
 -- each side's per-round times (ns a call).
@@ -426,7 +440,7 @@ local function measureRow(r)
     return
   end
   r.drawLow, r.drawHigh = quantile(ratios, 0.5), quantile(ratios, 0.5)
-  if TARGET_COLUMN and DRAWS > 1 and isTarget[r.fname .. "@" .. wl.key] then
+  if TARGET_COLUMN and DRAWS > 1 and isTarget[rowKey(r)] then
     r.draws = DRAWS
     for _ = 2, DRAWS do
       local own, moduleNs, referenceNs = drawRatios(r)
@@ -454,14 +468,14 @@ end
 local rowsRun, byKey = {}, {}
 for _, r in ipairs(ROWS) do
   if (not opts.only or (r.fname .. " " .. r.wl.key):find(opts.only))
-      and (not opts.targets or isTarget[r.fname .. "@" .. r.wl.key]) then
+      and (not opts.targets or isTarget[rowKey(r)]) then
     local ok, err = pcall(measureRow, r)
     if not ok then
       r.error = tostring(err)
       failures[#failures + 1] = ("%s on %s raised: %s"):format(r.fname, r.wl.key, r.error)
     end
     rowsRun[#rowsRun + 1] = r
-    byKey[r.fname .. "@" .. r.wl.key] = r
+    byKey[rowKey(r)] = r
   end
 end
 if opts.ratios then

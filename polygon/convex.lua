@@ -122,16 +122,17 @@ end
 -- a step function returning several numbers makes its traces abort, see sat's vertexInside).
 -- LuaJIT's: up to 8 vertices unrolled, the last one repeated for fewer (its zero edges give
 -- zero turns, zero bounds and zero x products), and the real turn at the last vertex added
--- once more; a loop beyond. min, max and abs are single instructions there.
+-- once more; a loop beyond. min, max and abs are single instructions there, and LuaJIT has no
+-- integers, so no coordinate is converted.
 local SPIKE = 2^-600   -- any spike's tiny bound: a real turn's margin is far above it
 
 local function convexFilterJitLoop(points, n)
   local lo, hi, agree = huge, -huge, 0
-  local ax, ay = points[n - 3] + 0.0, points[n - 2] + 0.0
-  local bx, by = points[n - 1] + 0.0, points[n] + 0.0
+  local ax, ay = points[n - 3], points[n - 2]
+  local bx, by = points[n - 1], points[n]
   local ex, ey = bx - ax, by - ay
   for i = 1, n - 1, 2 do
-    local cx, cy = points[i] + 0.0, points[i + 1] + 0.0
+    local cx, cy = points[i], points[i + 1]
     local fx, fy = cx - bx, cy - by
     local l, r, xx = ex * fy, ey * fx, ex * fx
     local s, b = l - r, CROSS_BOUND * abs(l + r) + SPIKE * max(0, -(xx + ey * fy))
@@ -147,19 +148,19 @@ local function convexFilterJit(points, n)
     local sure = convexFilterJitLoop(points, n)
     return sure
   end
-  local x1, y1 = points[1] + 0.0, points[2] + 0.0
-  local x2, y2 = points[3] + 0.0, points[4] + 0.0
-  local x3, y3 = points[5] + 0.0, points[6] + 0.0
+  local x1, y1 = points[1], points[2]
+  local x2, y2 = points[3], points[4]
+  local x3, y3 = points[5], points[6]
   local j = min(7, n - 1)
-  local x4, y4 = points[j] + 0.0, points[j + 1] + 0.0
+  local x4, y4 = points[j], points[j + 1]
   j = min(9, n - 1)
-  local x5, y5 = points[j] + 0.0, points[j + 1] + 0.0
+  local x5, y5 = points[j], points[j + 1]
   j = min(11, n - 1)
-  local x6, y6 = points[j] + 0.0, points[j + 1] + 0.0
+  local x6, y6 = points[j], points[j + 1]
   j = min(13, n - 1)
-  local x7, y7 = points[j] + 0.0, points[j + 1] + 0.0
-  local x8, y8 = points[n - 1] + 0.0, points[n] + 0.0
-  local xp, yp = points[n - 3] + 0.0, points[n - 2] + 0.0   -- the real vertex before the last
+  local x7, y7 = points[j], points[j + 1]
+  local x8, y8 = points[n - 1], points[n]
+  local xp, yp = points[n - 3], points[n - 2]   -- the real vertex before the last
   -- edges: e_k from vertex k to k + 1 (e8 back to 1), and the real last edge into vertex 8
   local e1x, e1y, e2x, e2y = x2 - x1, y2 - y1, x3 - x2, y3 - y2
   local e3x, e3y, e4x, e4y = x4 - x3, y4 - y3, x5 - x4, y5 - y4

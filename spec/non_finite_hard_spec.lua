@@ -2,7 +2,7 @@
 -- (magnitudes 1e-300 to 1e300, mixed within one polygon, so far outside the exact range that
 -- the answers themselves are not checked here, only that every number returned is a number).
 local polygon = require "polygon"
-local unpack = rawget(_G, "unpack") or table.unpack
+local unpack = rawget(_G, "unpack") or rawget(table, "unpack")
 local prng = require "prng"
 
 local function coordinate(r, style)

@@ -1,0 +1,265 @@
+-- Issue 29, "no silent wrong answers": what the collision functions refuse, with every message,
+-- each raised at the caller's line; the Polygon object taken for its points; false alone for no
+-- collision; and the convexity check against the oracle on generated shapes.
+local polygon = require "polygon"
+local oracle = require "oracle"
+local prng = require "prng"
+local shapes = require "shapes"
+local parts = require "parts"
+local callsite = require "callsite"
+local convex = require "polygon.convex"
+
+local L = { 0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100 }   -- the issue's L: reflex at vertex 4
+local BOX = { 50, 10, 70, 10, 70, 30, 50, 30 }                   -- across the L's arm
+local NEAR = { 60, 20, 80, 20, 80, 40, 60, 40 }                  -- overlaps BOX
+
+-- The five collision functions, each called with a bad shape as its first or second shape.
+local PAIR_FUNCTIONS = { "polygonCollidesWith", "polygonsCollide", "polygonCollidesWithV", "polygonsCollideV" }
+
+-- Asserts that each function, given `bad` in each place, raises "<fname>: <argname> <what>" at
+-- the caller's line.
+local function refusedEverywhere(bad, what, functions)
+  for _, fname in ipairs(functions or PAIR_FUNCTIONS) do
+    local fn = polygon[fname]
+    local gap = what:sub(1, 1) == "[" and "" or " "
+    assert.has_error(function() fn(bad, BOX) end, ("%s: points1%s%s"):format(fname, gap, what))
+    assert.has_error(function() fn(BOX, bad) end, ("%s: points2%s%s"):format(fname, gap, what))
+    local ok, err = callsite.raisesAtCaller(fn, { bad, BOX })
+    assert.is_true(ok, err)
+    ok, err = callsite.raisesAtCaller(fn, { BOX, bad })
+    assert.is_true(ok, err)
+  end
+  if not functions then
+    assert.has_error(function() polygon.polygonCircleCollideV(bad, 60, 20, 5) end,
+      ("polygonCircleCollideV: points%s%s"):format(what:sub(1, 1) == "[" and "" or " ", what))
+    local ok, err = callsite.raisesAtCaller(polygon.polygonCircleCollideV, { bad, 60, 20, 5 })
+    assert.is_true(ok, err)
+  end
+end
+
+describe("the collision functions", function()
+  describe("when a flat polygon is not convex", function()
+    it("refuse the issue's L, naming the reflex vertex and the fix", function()
+      -- the turn at vertex 4, (20, 20), from (100, 20) -> (20, 20) to (20, 20) -> (20, 100):
+      -- (-80, 0) x (0, 80) = -6400, against the clockwise (positive) area: reflex
+      refusedEverywhere(L, "is not convex (a reflex turn at vertex 4); split it once with "
+        .. "polygonConvexParts and pass the parts")
+    end)
+
+    it("refuse a pentagram, whose turns all agree, as crossing itself", function()
+      refusedEverywhere({ 10, 0, 16, 20, 0, 7, 20, 7, 4, 20 }, "is not convex (its turns all "
+        .. "agree but it winds around more than once: it crosses itself); split it once with "
+        .. "polygonConvexParts and pass the parts")
+    end)
+
+    it("refuse a spike (a zero turn that folds back), horizontal or vertical", function()
+      -- vertex 3 is (10, 5) then (10, -5): the edges (0, 5) and (0, -10) fold back on x = 10
+      refusedEverywhere({ 0, 0, 10, 0, 10, 5, 10, -5, 10, 10, 0, 10 }, "is not convex (a spike "
+        .. "at vertex 3: its edges fold back on one line); split it once with polygonConvexParts "
+        .. "and pass the parts")
+      -- the same mirrored on y = x: vertex 3 is (5, 10) then (-5, 10): (5, 0) then (-10, 0)
+      refusedEverywhere({ 0, 0, 0, 10, 5, 10, -5, 10, 10, 10, 10, 0 }, "is not convex (a "
+        .. "spike at vertex 3: its edges fold back on one line); split it once with "
+        .. "polygonConvexParts and pass the parts")
+    end)
+
+    it("refuse a bow tie (zero signed area, but it covers two triangles)", function()
+      -- (0,0), (10,0), (0,10), (10,10). The area is 0, so the walk's first turn is the
+      -- reference: at vertex 4, (10, 0) x (-10, -10) = 10 (-10) - 0 = -100; at vertex 1,
+      -- (-10, -10) x (10, 0) = 0 - (-10)(10) = 100: against it
+      refusedEverywhere({ 0, 0, 10, 0, 0, 10, 10, 10 }, "is not convex (a reflex turn at vertex "
+        .. "1); split it once with polygonConvexParts and pass the parts")
+    end)
+  end)
+
+  describe("when a part of a list is not convex", function()
+    it("refuse it by its index, in either place", function()
+      local list = { parts.box(200, 200, 10, 10), L }
+      for _, fname in ipairs({ "polygonsCollide", "polygonsCollideV" }) do
+        local fn = polygon[fname]
+        assert.has_error(function() fn(list, BOX) end, fname .. ": points1[2] is not convex (a "
+          .. "reflex turn at vertex 4); split it once with polygonConvexParts and pass the parts")
+        assert.has_error(function() fn(BOX, { L }) end, fname .. ": points2[1] is not convex (a "
+          .. "reflex turn at vertex 4); split it once with polygonConvexParts and pass the parts")
+        local ok, err = callsite.raisesAtCaller(fn, { { L }, BOX })
+        assert.is_true(ok, err)
+      end
+      assert.has_error(function() polygon.polygonCircleCollideV({ L }, 50, 15, 8) end,
+        "polygonCircleCollideV: points[1] is not convex (a reflex turn at vertex 4); split it once "
+        .. "with polygonConvexParts and pass the parts")
+    end)
+
+    it("refuse a part made concave in place after the list was prepared", function()
+      local part = { 0, 0, 100, 0, 100, 100, 0, 100 }
+      local list = { part }
+      assert.is_true(polygon.polygonsCollide(list, BOX))
+      part[5], part[6] = 20, 20   -- vertex 3 pulled inside: a reflex turn there
+      assert.has_error(function() polygon.polygonsCollide(list, BOX) end,
+        "polygonsCollide: points1[1] is not convex (a reflex turn at vertex 3); split it once "
+        .. "with polygonConvexParts and pass the parts")
+    end)
+
+    it("take the parts polygonConvexParts makes of the same L", function()
+      local split = assert(polygon.polygonConvexParts(L))
+      assert.is_true(polygon.polygonsCollide(split, BOX))
+      assert.is_truthy(polygon.polygonsCollideV(BOX, split))
+      assert.is_truthy(polygon.polygonCircleCollideV(split, 50, 15, 8))
+    end)
+  end)
+
+  describe("when a shape has fewer than 3 points", function()
+    it("refuse a segment, saying it is one", function()
+      refusedEverywhere({ 0, 0, 100, 100 }, "has 2 points: a segment; a polygon needs at least 3")
+    end)
+
+    it("refuse one point and an empty table", function()
+      refusedEverywhere({ 5, 5 }, "has 1 point; a polygon needs at least 3")
+      refusedEverywhere({}, "is empty; a polygon needs at least 3 points")
+    end)
+
+    it("refuse a part of a list with fewer than 3 points", function()
+      assert.has_error(function() polygon.polygonsCollideV({ BOX, { 0, 0, 100, 100 } }, NEAR) end,
+        "polygonsCollideV: points1[2] has 2 points: a segment; a polygon needs at least 3")
+    end)
+  end)
+
+  describe("when entries are not numbers", function()
+    it("refuse point tables, {x =, y =} or {x, y}", function()
+      local what = "holds point tables; pass a flat array {x1, y1, x2, y2, ...}"
+      refusedEverywhere({ { x = 50, y = 10 }, { x = 70, y = 10 }, { x = 70, y = 30 } }, what)
+      refusedEverywhere({ { 50, 10 }, { 70, 10 }, { 70, 30 } }, what)
+    end)
+
+    it("refuse strings", function()
+      refusedEverywhere({ "50", "10", "70", "10", "70", "30" }, "[1] must be a number, got string")
+    end)
+
+    it("refuse a string in a part of a list", function()
+      assert.has_error(function() polygon.polygonsCollide({ { "0", 0, 1, 0, 1, 1 } }, BOX) end,
+        "polygonsCollide: points1[1][1] must be a number, got string; a list of parts holds flat arrays")
+    end)
+
+    it("refuse a list of parts in the one-sided functions", function()
+      for _, fname in ipairs({ "polygonCollidesWith", "polygonCollidesWithV" }) do
+        assert.has_error(function() polygon[fname]({ BOX }, NEAR) end, fname .. ": points1 is a "
+          .. "list of parts; it takes convex polygons only (polygonsCollide takes lists)")
+      end
+    end)
+  end)
+
+  describe("when a zero-area polygon is given", function()
+    it("never collide (no refusal): every point on one line", function()
+      local line = { 40, 20, 60, 20, 80, 20 }   -- across BOX
+      assert.is_false(polygon.polygonsCollide(line, BOX))
+      assert.are.equal(false, polygon.polygonsCollideV(BOX, line))
+      assert.are.equal(false, polygon.polygonCircleCollideV(line, 60, 20, 5))
+    end)
+  end)
+end)
+
+describe("the Polygon object", function()
+  it("is taken wherever a collision function takes a polygon, its points used", function()
+    local obj, near = polygon.Polygon.new(BOX), polygon.Polygon(NEAR)
+    for _, fname in ipairs(PAIR_FUNCTIONS) do
+      local fn = polygon[fname]
+      local a, b, c = fn(BOX, NEAR)
+      assert.is_truthy(a)
+      local x, y, z = fn(obj, NEAR)
+      assert.are.same({ a, b, c }, { x, y, z })
+      x, y, z = fn(BOX, near)
+      assert.are.same({ a, b, c }, { x, y, z })
+    end
+    assert.are.same({ polygon.polygonCircleCollideV(BOX, 60, 20, 5) },
+      { polygon.polygonCircleCollideV(obj, 60, 20, 5) })
+    assert.are.same({ polygon.polygonsCollideV({ BOX }, NEAR) }, { polygon.polygonsCollideV(obj, { NEAR }) })
+  end)
+
+  it("is refused as a concave polygon when its points are", function()
+    assert.has_error(function() polygon.polygonsCollide(polygon.Polygon.new(L), BOX) end,
+      "polygonsCollide: points1 is not convex (a reflex turn at vertex 4); split it once with "
+      .. "polygonConvexParts and pass the parts")
+  end)
+end)
+
+describe("no collision", function()
+  it("is false alone from every collision function, flat or parts", function()
+    local apart = { 500, 500, 510, 500, 510, 510 }
+    local function count(...) return select("#", ...), (...) end
+    for _, fname in ipairs(PAIR_FUNCTIONS) do
+      assert.are.same({ 1, false }, { count(polygon[fname](BOX, apart)) })
+    end
+    assert.are.same({ 1, false }, { count(polygon.polygonsCollideV({ BOX }, apart)) })
+    assert.are.same({ 1, false }, { count(polygon.polygonsCollide(BOX, { apart })) })
+    assert.are.same({ 1, false }, { count(polygon.polygonCircleCollideV(BOX, 500, 500, 1)) })
+    assert.are.same({ 1, false }, { count(polygon.polygonCircleCollideV({ BOX }, 500, 500, 1)) })
+    assert.are.same({ 1, false }, { count(polygon.polygonCircleCollideV(BOX, 60, 20, 0)) })
+  end)
+end)
+
+describe("the convexity check on generated shapes", function()
+  -- random convex polygons (rounded and not) and random stars (mostly concave), either winding
+  local function generated(count, seed)
+    local rng = prng.new(seed)
+    local list = {}
+    for k = 1, count do
+      local m, size = rng:int(3, 12), rng:pick({ 1, 10, 100, 1e-3 })
+      local ox, oy = rng:pick({ 0, 0, 1e6, -1e9 }), rng:pick({ 0, 0, 0.5, 1e6 })
+      local p
+      if k % 3 == 0 then
+        p = shapes.star(rng, m, ox, oy, size)
+      else
+        p = shapes.convex(rng, m, ox, oy, size, 0.3)
+        if k % 3 == 1 then for i = 1, #p do p[i] = math.floor(p[i] * 4 + 0.5) / 4 end end
+      end
+      if rng:int(0, 1) == 1 then p = shapes.reverse(p) end
+      list[k] = p
+    end
+    return list
+  end
+
+  it("refuses exactly the polygons the oracle finds concave, naming a real reflex vertex", function()
+    local refused, taken = 0, 0
+    for _, p in ipairs(generated(600, 2911)) do
+      local ok, err = pcall(polygon.polygonsCollide, p, BOX)
+      local kind = oracle.polygonType(p)
+      if kind == "concave" then
+        assert.is_false(ok, "a concave polygon was taken")
+        assert.is_truthy(tostring(err):find("is not convex", 1, true), tostring(err))
+        local k = tonumber(tostring(err):match("reflex turn at vertex (%d+)"))
+        if k then   -- the named vertex turns against the exact area's sign
+          local m = #p / 2
+          local function distinct(from, step)   -- the nearest vertex at another point
+            local v = from
+            repeat v = (v - 1 + step) % m + 1
+            until p[2 * v - 1] ~= p[2 * k - 1] or p[2 * v] ~= p[2 * k]
+            return v
+          end
+          local a, b, c = distinct(k, -1), k, distinct(k, 1)
+          local turn = oracle.orient(p[2 * a - 1], p[2 * a], p[2 * b - 1], p[2 * b], p[2 * c - 1], p[2 * c])
+          local area = oracle.winding(p)
+          assert.is_true(turn ~= 0 and (area == nil or (turn > 0) ~= (area == "cw")),
+            ("vertex %d of %s"):format(k, table.concat(p, ", ")))
+        end
+        refused = refused + 1
+      else
+        assert.is_true(ok, tostring(err))
+        taken = taken + 1
+      end
+    end
+    assert.is_true(refused > 100 and taken > 300, ("refused %d, taken %d"):format(refused, taken))
+  end)
+
+  it("has two filter bodies that agree, and neither vouches for a concave polygon", function()
+    local jitFilter, pucFilter = convex.convexFilterJit, convex.convexFilterPuc
+    local sure = 0
+    for _, p in ipairs(generated(900, 77)) do
+      local j, q = jitFilter(p, #p), pucFilter(p, #p)
+      assert.are.equal(j, q, table.concat(p, ", "))
+      if j then
+        assert.are_not.equal("concave", oracle.polygonType(p))
+        sure = sure + 1
+      end
+    end
+    assert.is_true(sure > 300, ("the filter vouched for %d"):format(sure))
+  end)
+end)
