@@ -1314,6 +1314,118 @@ local function report(name, seed, call, args, argsNew, n, old, new, where)
   io.stdout:flush()
 end
 
+--------------------------------------------------------------------------------------------------
+-- Intended changes, each accepted by a narrow rule named after its issue and checked
+-- independently of the library (spec/support/oracle.lua)
+--------------------------------------------------------------------------------------------------
+
+local oracle = require "oracle"
+
+-- Issue 29 ("no silent wrong answers"): the collision functions refuse what they cannot handle,
+-- a Polygon object is taken for its points, and no collision is `false` alone.
+local ISSUE_29_FUNCTIONS = { polygonCollidesWith = true, polygonsCollide = true,
+  polygonCollidesWithV = true, polygonsCollideV = true, polygonCircleCollideV = true }
+
+-- The shape a refusal names ("points1", "points2[3]", "points"), from the call's arguments.
+local function namedShape(args, argname)
+  local base, index = argname:match("^points(%d?)(.*)$")
+  local shape = args[base == "2" and 2 or 1]
+  local k = index:match("^%[(%d+)%]$")
+  if k then
+    shape = type(shape) == "table" and shape[tonumber(k)]
+  end
+  return shape
+end
+
+-- The entries a collision function reads of a shape: a NEW Polygon object's points.
+local function pointsOf(shape)
+  if type(shape) == "table" and NEW.Polygon and getmetatable(shape) == NEW.Polygon then
+    return rawget(shape, "points")
+  end
+  return shape
+end
+
+-- Whether NEW's refusal message names a shape that is of the refused kind, judged here.
+local function refusalHolds(name, args, message)
+  local argname, what = message:match("^" .. name .. ": (points%d?)(%[%d+%] must be a number, got %a+)$")
+  if not argname then
+    argname, what = message:match("^" .. name .. ": (points%d?%[%d+%])(%[%d+%] must be a "
+      .. "number, got %a+; a list of parts holds flat arrays)$")
+  end
+  if not argname then
+    argname, what = message:match("^" .. name .. ": (points%d?[%[%]%d]*) (.*)$")
+    if not argname then return false end
+  end
+  local shape = pointsOf(namedShape(args, argname))
+  if type(shape) ~= "table" then return false end
+  local n = #shape
+  if what:find("^is not convex %(") then
+    for i = 1, n do if type(shape[i]) ~= "number" then return false end end
+    return n >= 6 and n % 2 == 0 and oracle.polygonType(shape) == "concave"
+  end
+  if what == "holds a non-finite coordinate" then   -- now seen in every part when it is prepared
+    local list = type(shape[1]) == "table" and shape or { shape }
+    for _, part in ipairs(list) do
+      for i = 1, #part do
+        local v = part[i]
+        if type(v) == "number" and (v ~= v or v == huge or v == -huge) then return true end
+      end
+    end
+    return false
+  end
+  if what == "has 2 points: a segment; a polygon needs at least 3" then return n == 4 end
+  if what == "has 1 point; a polygon needs at least 3" then return n == 2 end
+  if what == "is empty; a polygon needs at least 3 points" then return n == 0 end
+  if what == "holds point tables; pass a flat array {x1, y1, x2, y2, ...}" then
+    local first = shape[1]
+    return type(first) == "table" and (first.x ~= nil or #first <= 2)
+  end
+  local k, got = what:match("^%[(%d+)%] must be a number, got (%a+)$")
+  if got then return type(shape[tonumber(k)]) == got and got ~= "number" end
+  k, got = what:match("^%[(%d+)%] must be a number, got (%a+); a list of parts holds flat arrays$")
+  if got then return type(shape[tonumber(k)]) == got and got ~= "number" end
+  if what == "is a list of parts; it takes convex polygons only (polygonsCollide takes lists)" then
+    return type(shape[1]) == "table" and #shape[1] > 2
+  end
+  return false
+end
+
+local function issue29Accepts(name, args, n, old, new)
+  if not ISSUE_29_FUNCTIONS[name] then return false end
+  -- no collision: false alone where OLD gave false, nil, nil
+  if old[1] and new[1] and old[2] == false and new[2] == false and new.n == 2 then return true end
+  -- a refusal of a shape that is of the refused kind
+  if not new[1] and type(new[2]) == "string" and refusalHolds(name, args, new[2]) then return true end
+  -- Lua's own error where OLD answered, for a flat shape holding an entry that is not a number
+  -- past its first (the check reads every entry; such entries are refused, past the first by
+  -- Lua's own error: spec/refusals_spec.lua)
+  if not new[1] and type(new[2]) == "string" and new[2]:find("attempt to perform arithmetic", 1, true) then
+    for i = 1, n do
+      local shape = pointsOf(args[i])
+      if type(shape) == "table" and type(shape[1]) == "number" then
+        for j = 2, #shape do
+          if type(shape[j]) ~= "number" then return true end
+        end
+      end
+    end
+  end
+  -- a NEW Polygon object taken for its points: the same as NEW on the points themselves
+  local plain, changed = {}, false
+  for i = 1, n do
+    plain[i] = pointsOf(args[i])
+    if plain[i] ~= args[i] then changed = true end
+  end
+  if changed and new[1] then
+    local again = pack(pcall(NEW[name], unpack(plain, 1, n)))
+    if again.n ~= new.n then return false end
+    for i = 1, new.n do
+      if not (again[i] == new[i] or again[i] ~= again[i] and new[i] ~= new[i]) then return false end
+    end
+    return true
+  end
+  return false
+end
+
 -- One call of a case on both sides; the first difference, described, or nil; both results.
 local function oneCall(name, args, n, argsNew)
   local oldF, newF = functionOf(OLD, name, args), functionOf(NEW, name, argsNew)
@@ -1328,6 +1440,7 @@ local function oneCall(name, args, n, argsNew)
   local new = pack(pcall(newF, unpack(argsNew, 1, n)))
   local ctx = newContext(args, argsNew, n, true)
   local where = compareResults(old, new, ctx)
+  if where and issue29Accepts(name, args, n, old, new) then where = nil end
   if where then return where, old, new end
   if shared then
     if not unchanged(leftByOld) then return "the two sides left the arguments different", old, new end

@@ -5,7 +5,6 @@ local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local check = require(_PACKAGE .. ".check")
 local sat = require(_PACKAGE .. ".sat")
 local compound = require(_PACKAGE .. ".compound")
-local views = require(_PACKAGE .. ".views")
 local circle = require(_PACKAGE .. ".circle")
 local convex = require(_PACKAGE .. ".convex")
 local object = require(_PACKAGE .. ".object")
@@ -17,7 +16,6 @@ local collideParts, collideCircleParts = compound.collideParts, compound.collide
 local circleCollision = circle.circleCollision
 local checkConvex, refuseEntries = convex.checkConvex, convex.refuseEntries
 local objectPoints = object.objectPoints
-local listView = views.listView
 
 local M = {}
 
@@ -33,9 +31,8 @@ end
 -- the argument error, raised at `level` (as error's, counted from this function's caller).
 -- Returns the shape and its kind: "number" for a flat array, "table" for a list of parts.
 local function resolveShape(fname, argname, shape, kind, level)
-  if kind == false then
-    error(("%s: %s must be a table, got %s"):format(fname, argname, type(shape)), level + 1)
-  end
+  -- not a table: raised by the engines' own checks, after a list's errors (as before)
+  if kind == false then return shape, false end
   local points = objectPoints(shape)
   if points then shape, kind = points, type(points[1]) end
   if kind == "table" then
@@ -43,7 +40,7 @@ local function resolveShape(fname, argname, shape, kind, level)
     if #first > 2 then return shape, "table" end   -- parts (checked when the list is prepared)
     refuseEntries(fname, argname, shape, kind, level + 1)
   end
-  if kind == "nil" then
+  if kind == "nil" and #shape < 6 then
     local n = checkPoints(shape, fname, argname, level + 2, true)
     checkConvex(shape, n, fname, argname, level + 1)   -- raises: fewer than 3 points
   elseif kind ~= "number" then
@@ -53,40 +50,35 @@ local function resolveShape(fname, argname, shape, kind, level)
 end
 
 -- Checks a flat shape handed with a list of parts (the list's parts are checked when it is
--- prepared): an even count, at least 3 points, convex. level as in resolveShape.
+-- prepared): an even count, at least 3 points, convex. Called after collideParts, which raises
+-- the list's errors first, as the engines' answers come before the check (see collides).
+-- level as in resolveShape.
 local function checkFlat(fname, argname, shape, level)
   local n = checkPoints(shape, fname, argname, level + 2, true)
   checkConvex(shape, n, fname, argname, level + 1)
 end
 
 -- Both arguments of a function that takes lists of parts, resolved (called from the public
--- function when a first entry is not a number). A flat shape beside a list is checked here;
--- the list's parts when it is prepared. Returns the shapes and their kinds.
+-- function when a first entry is not a number). Returns the shapes and their kinds.
 local function resolveTwo(fname, points1, points2, kind1, kind2)
   points1, kind1 = resolveShape(fname, "points1", points1, kind1, 3)
-  -- a list first: its errors before the second argument's (listView raises at the caller of
-  -- the function that calls it, as from collideParts)
-  if kind1 == "table" then listView(fname, "points1", points1) end
   points2, kind2 = resolveShape(fname, "points2", points2, kind2, 3)
-  if kind1 == "table" and kind2 == "number" then checkFlat(fname, "points2", points2, 3) end
-  if kind2 == "table" and kind1 == "number" then checkFlat(fname, "points1", points1, 3) end
   return points1, points2, kind1, kind2
 end
 
 -- Both arguments of a one-sided function (convex polygons only, no lists of parts), resolved.
 local function resolveOne(fname, points1, points2, kind1, kind2)
-  local kind
-  points1, kind = resolveShape(fname, "points1", points1, kind1, 3)
-  if kind == "table" then
+  points1, kind1 = resolveShape(fname, "points1", points1, kind1, 3)
+  if kind1 == "table" then
     error(("%s: points1 is a list of parts; it takes convex polygons only (polygonsCollide "
       .. "takes lists)"):format(fname), 3)
   end
-  points2, kind = resolveShape(fname, "points2", points2, kind2, 3)
-  if kind == "table" then
+  points2, kind2 = resolveShape(fname, "points2", points2, kind2, 3)
+  if kind2 == "table" then
     error(("%s: points2 is a list of parts; it takes convex polygons only (polygonsCollide "
       .. "takes lists)"):format(fname), 3)
   end
-  return points1, points2
+  return points1, points2, kind1, kind2
 end
 
 -- The public functions, built twice: with the convexity check (checked, the module's) and
@@ -98,12 +90,14 @@ local function build(T, checked)
   local function collides(fname, points1, points2, both, kind1, kind2)
     local n1 = checkPoints(points1, fname, "points1", 4, kind1)
     local n2 = checkPoints(points2, fname, "points2", 4, kind2)
+    local depth, argname = convexPenetration(points1, n1, points2, n2, both)
+    if depth == nil then raiseNonFinite(fname, argname) end
+    -- after the engine, which reads any table of numbers (its answer is dropped when a polygon
+    -- is refused): a non-number entry fails in the same place as before the check
     if checked then
       checkConvex(points1, n1, fname, "points1", 3)
       checkConvex(points2, n2, fname, "points2", 3)
     end
-    local depth, argname = convexPenetration(points1, n1, points2, n2, both)
-    if depth == nil then raiseNonFinite(fname, argname) end
     return depth ~= false
   end
 
@@ -117,8 +111,7 @@ local function build(T, checked)
     local kind1 = type(points1) == "table" and type(points1[1])
     local kind2 = type(points2) == "table" and type(points2[1])
     if kind1 ~= "number" or kind2 ~= "number" then
-      points1, points2 = resolveOne(fname, points1, points2, kind1, kind2)
-      kind1, kind2 = "number", "number"
+      points1, points2, kind1, kind2 = resolveOne(fname, points1, points2, kind1, kind2)
     end
     local collided = collides(fname, points1, points2, false, kind1, kind2)
     return collided
@@ -138,6 +131,10 @@ local function build(T, checked)
       if kind1 == "table" or kind2 == "table" then
         local hit = collideParts("polygonsCollide", points1, points2, false, kind1 == "table",
           kind2 == "table")
+        if kind1 ~= kind2 then
+          local flat = kind1 == "number"
+          checkFlat("polygonsCollide", flat and "points1" or "points2", flat and points1 or points2, 2)
+        end
         return hit
       end
     end
@@ -160,16 +157,14 @@ local function build(T, checked)
       n1 = checkPoints(points1, fname, "points1", 4, kind1)
       n2 = checkPoints(points2, fname, "points2", 4, kind2)
     end
-    if checked then
+    local depth, ux, uy, owner, edgeEnd, base, inside =
+      convexPenetration(points1, n1, points2, n2, both)
+    if depth == nil then raiseNonFinite(fname, ux) end
+    if checked then   -- after the engine, as in collides
       checkConvex(points1, n1, fname, "points1", 3)
       checkConvex(points2, n2, fname, "points2", 3)
     end
-    local depth, ux, uy, owner, edgeEnd, base, inside =
-      convexPenetration(points1, n1, points2, n2, both)
-    if not depth then
-      if depth == nil then raiseNonFinite(fname, ux) end
-      return false
-    end
+    if not depth then return false end
     local push, dx, dy = separatingPush(points1, n1, points2, n2, depth, ux, uy, owner, edgeEnd,
       base, inside)
     return push, dx, dy
@@ -183,8 +178,7 @@ local function build(T, checked)
     local kind1 = type(points1) == "table" and type(points1[1])
     local kind2 = type(points2) == "table" and type(points2[1])
     if kind1 ~= "number" or kind2 ~= "number" then
-      points1, points2 = resolveOne(fname, points1, points2, kind1, kind2)
-      kind1, kind2 = "number", "number"
+      points1, points2, kind1, kind2 = resolveOne(fname, points1, points2, kind1, kind2)
     end
     local push, dx, dy = pushOut(fname, points1, points2, false, kind1, kind2)
     if not push then return false end
@@ -208,6 +202,11 @@ local function build(T, checked)
       if kind1 == "table" or kind2 == "table" then
         local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true,
           kind1 == "table", kind2 == "table")
+        if kind1 ~= kind2 then
+          local flat = kind1 == "number"
+          checkFlat("polygonsCollideV", flat and "points1" or "points2", flat and points1 or points2,
+            2)
+        end
         if not overlap then return false end
         return overlap, dx, dy
       end
@@ -237,12 +236,14 @@ local function build(T, checked)
         return overlap, dx, dy
       end
     end
-    local n = checkPoints(points, fname, "points", 3, true)
-    if checked then checkConvex(points, n, fname, "points", 2) end
+    local n = checkPoints(points, fname, "points", 3, kind)
     checkFiniteNumber(cx, fname, "cx")
     checkFiniteNumber(cy, fname, "cy")
     checkRadius(radius, fname, "radius")
-    if radius == 0 then return false end
+    if n < 6 or radius == 0 then
+      if checked then checkConvex(points, n, fname, "points", 2) end
+      return false
+    end
     -- converted in place: on LuaJIT the numbers of this frame and of circleCollision's are then
     -- the same (see circleCollision: fewer for a side trace to take over)
     cx = cx + 0.0
@@ -250,6 +251,7 @@ local function build(T, checked)
     radius = radius + 0.0
     local overlap, dx, dy = circleCollision(points, n, cx, cy, radius)
     if overlap == nil then error(fname .. ": points holds a non-finite coordinate", 2) end
+    if checked then checkConvex(points, n, fname, "points", 2) end   -- after the engine, as in collides
     if not overlap then return false end
     return overlap, dx, dy
   end

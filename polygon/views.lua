@@ -324,10 +324,12 @@ local function checkList(fname, argname, shape)
       error(("%s: %s[%d] must hold an even number of coordinates, got %d")
         :format(fname, argname, k, #part), 5)
     end
-    local first = part[1]
-    if type(first) ~= "number" and #part > 0 then
-      error(("%s: %s[%d][1] must be a number, got %s; a list of parts holds flat arrays")
-        :format(fname, argname, k, type(first)), 5)
+    for i = 1, #part do
+      local v = part[i]
+      if type(v) ~= "number" then
+        error(("%s: %s[%d][%d] must be a number, got %s; a list of parts holds flat arrays")
+          :format(fname, argname, k, i, type(v)), 5)
+      end
     end
     if #part < 6 then
       local name = ("%s[%d]"):format(argname, k)

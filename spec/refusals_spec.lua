@@ -14,7 +14,8 @@ local BOX = { 50, 10, 70, 10, 70, 30, 50, 30 }                   -- across the L
 local NEAR = { 60, 20, 80, 20, 80, 40, 60, 40 }                  -- overlaps BOX
 
 -- The five collision functions, each called with a bad shape as its first or second shape.
-local PAIR_FUNCTIONS = { "polygonCollidesWith", "polygonsCollide", "polygonCollidesWithV", "polygonsCollideV" }
+local PAIR_FUNCTIONS = { "polygonCollidesWith", "polygonsCollide", "polygonCollidesWithV",
+  "polygonsCollideV" }
 
 -- Asserts that each function, given `bad` in each place, raises "<fname>: <argname> <what>" at
 -- the caller's line.
@@ -64,11 +65,11 @@ describe("the collision functions", function()
     end)
 
     it("refuse a bow tie (zero signed area, but it covers two triangles)", function()
-      -- (0,0), (10,0), (0,10), (10,10). The area is 0, so the walk's first turn is the
-      -- reference: at vertex 4, (10, 0) x (-10, -10) = 10 (-10) - 0 = -100; at vertex 1,
-      -- (-10, -10) x (10, 0) = 0 - (-10)(10) = 100: against it
+      -- (0,0), (10,0), (0,10), (10,10). The reference is the turn at the lowest vertex, (0, 0):
+      -- (v1 - v4) x (v2 - v1) = (-10, -10) x (10, 0) = 0 - (-10)(10) = 100; the walk starts at
+      -- vertex 4: (v4 - v3) x (v1 - v4) = (10, 0) x (-10, -10) = -100, against it
       refusedEverywhere({ 0, 0, 10, 0, 0, 10, 10, 10 }, "is not convex (a reflex turn at vertex "
-        .. "1); split it once with polygonConvexParts and pass the parts")
+        .. "4); split it once with polygonConvexParts and pass the parts")
     end)
   end)
 
