@@ -17,6 +17,10 @@ local function checkPoints(points, fname, argname, level, isTable)
   end
   local n = #points
   if n % 2 ~= 0 then
+    if type(points[1]) == "table" and (points[1].x ~= nil or #points[1] == 2) then
+      error(("%s: %s holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
+        :format(fname, argname or "points"), level or 3)
+    end
     error(("%s: %s must hold an even number of coordinates, got %d")
       :format(fname, argname or "points", n), level or 3)
   end
@@ -58,6 +62,25 @@ local function checkRadius(r, fname, argname)
   end
 end
 
+-- The class of Polygon objects (object.lua gives it its methods), here so that every function
+-- that takes a polygon can know one.
+local Polygon = {}
+
+-- What a function that read fewer than 3 points in `shape` (a table) takes instead: a Polygon
+-- object's points (the caller computes again on them), else nil; raises fname's argument error
+-- for a table of point tables. Called only on that rare path, so flat arrays pay nothing.
+local function shapeBehind(shape, fname, argname, level)
+  if getmetatable(shape) == Polygon then return rawget(shape, "points") end
+  local first = shape[1]
+  if type(first) == "table" and (first.x ~= nil or #first <= 2) then
+    error(("%s: %s holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
+      :format(fname, argname), level + 1)
+  end
+  return nil
+end
+
+M.Polygon = Polygon
+M.shapeBehind = shapeBehind
 M.checkPoints = checkPoints
 M.checkFinitePoints = checkFinitePoints
 M.checkNumber = checkNumber

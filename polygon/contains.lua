@@ -8,6 +8,7 @@ local check = require(_PACKAGE .. ".check")
 local abs, min, max = math.abs, math.min, math.max
 local CROSS_BOUND, cross, JIT = kernel.CROSS_BOUND, kernel.cross, kernel.JIT
 local checkPoints, checkNumber = check.checkPoints, check.checkNumber
+local shapeBehind = check.shapeBehind
 
 local M = {}
 
@@ -212,7 +213,14 @@ local function polygonContains(points, x, y)
   if n % 2 ~= 0 or type(x) ~= "number" or type(y) ~= "number" or x - x ~= 0 or y - y ~= 0 then
     checkQuery("polygonContains", points, x, y, 3)
   end
-  if n < 6 then return false end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonContains", "points", 2)
+    if inner then
+      local inside = polygonContains(inner, x, y)
+      return inside
+    end
+    return false
+  end
   x = x + 0.0
   y = y + 0.0
   if JIT and n <= 32 then   -- (see containsShort4)

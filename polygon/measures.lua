@@ -12,6 +12,7 @@ local cross, expClear, expAddTriple = kernel.cross, kernel.expClear, kernel.expA
 local expLength, powerScale = kernel.expLength, kernel.powerScale
 local largestMagnitude = kernel.largestMagnitude
 local checkPoints, checkFinitePoints = check.checkPoints, check.checkFinitePoints
+local shapeBehind = check.shapeBehind
 
 local M = {}
 
@@ -30,7 +31,14 @@ function M.polygonWindingOrder(points)
   -- without the squares. A change to shoelace or to areaSignOf's bound must be made here too.
   local n = type(points) == "table" and #points or -1
   if n % 2 ~= 0 then checkPoints(points, "polygonWindingOrder") end
-  if n < 6 then return nil end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonWindingOrder", "points", 2)
+    if inner then
+      local a, b = M.polygonWindingOrder(inner)
+      return a, b
+    end
+    return nil
+  end
   -- shoelace's sum with its bound's sums of X^2 (xSq) and d^2 (dSq), as in shoelace. Of the
   -- two y read per step only the second is converted: each difference has one converted side,
   -- which converts the other (a Lua 5.3+ integer counts as its double), one instruction less.
@@ -87,7 +95,14 @@ end
 function M.polygonArea(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonArea") end
   local n = #points
-  if n < 6 then return nil end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonArea", "points", 2)
+    if inner then
+      local a, b = M.polygonArea(inner)
+      return a, b
+    end
+    return nil
+  end
   -- shoelace's sum alone, unrolled as in polygonWindingOrder: no sums of squares, which only
   -- the sign's bound needs
   local x0, y1 = points[1] + 0.0, points[2] + 0.0
@@ -132,7 +147,14 @@ end
 function M.polygonAreaAccurate(points)
   if type(points) ~= "table" or #points % 2 ~= 0 then checkPoints(points, "polygonAreaAccurate") end
   local n = #points
-  if n < 6 then return nil end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonAreaAccurate", "points", 2)
+    if inner then
+      local a, b = M.polygonAreaAccurate(inner)
+      return a, b
+    end
+    return nil
+  end
   local m = n / 2
   -- Both splits round every coordinate to a multiple of a quantum q, a power of two from the
   -- polygon's size guessed from vertex 1 and the middle vertex: g = |x_k - x_1| + |y_k - y_1|
@@ -581,7 +603,14 @@ end
 -- LuaJIT's: typeFiltered's branch-free pass (min, max and abs are single instructions there).
 local function polygonTypeJit(points)
   local n = checkPoints(points, "polygonType")
-  if n < 6 then return nil end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonType", "points", 2)
+    if inner then
+      local a, b = polygonTypeJit(inner)
+      return a, b
+    end
+    return nil
+  end
   local kind = typeFiltered(points, n)
   if kind == false then kind = typeCareful(points, n) end
   return kind
@@ -610,7 +639,14 @@ local function polygonTypePuc(points)
   if type(points) ~= "table" then checkPoints(points, "polygonType") end
   local n = #points
   if n % 2 ~= 0 then checkPoints(points, "polygonType") end
-  if n < 6 then return nil end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonType", "points", 2)
+    if inner then
+      local a, b = polygonTypePuc(inner)
+      return a, b
+    end
+    return nil
+  end
   local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
   local ex, ey = cx - points[n - 3], cy - points[n - 2]
   local qx, qy = points[1] + 0.0, points[2] + 0.0
@@ -743,7 +779,14 @@ end
 -- Returns cx, cy; nil for fewer than 3 points. A non-finite coordinate raises an error.
 function M.polygonCenter(points)
   local n = checkPoints(points, "polygonCenter")
-  if n < 6 then return nil end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonCenter", "points", 2)
+    if inner then
+      local a, b = M.polygonCenter(inner)
+      return a, b
+    end
+    return nil
+  end
   local m = n / 2
   local sumX, sumY = vertexSums(points, n, 1.0)
   if sumX - sumX ~= 0 or sumY - sumY ~= 0 then   -- NaN or infinite: rare, so check here
@@ -806,7 +849,14 @@ local CANCELLATION_LIMIT = 64
 -- coordinate raises an error.
 function M.polygonCentroid(points)
   local n = checkPoints(points, "polygonCentroid")
-  if n < 6 then return nil end
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonCentroid", "points", 2)
+    if inner then
+      local a, b = M.polygonCentroid(inner)
+      return a, b
+    end
+    return nil
+  end
   local x0, y0 = points[1] + 0.0, points[2] + 0.0
   -- The sums below are cubic in the coordinates (relative to vertex 1): scale x and y each by a
   -- power of two to near 1 so that they neither overflow nor underflow, and scale back at the

@@ -3,6 +3,7 @@
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local contains = require(_PACKAGE .. ".contains")
+local check = require(_PACKAGE .. ".check")
 
 local huge = math.huge
 local checkQuery, polygonContains = contains.checkQuery, contains.polygonContains
@@ -35,8 +36,9 @@ end
 
 local validate = M.validate
 
--- A polygon object holding the caller's points table (not a copy).
-local Polygon = {}
+-- A polygon object holding the caller's points table (not a copy). Its class table is check's,
+-- so that every function taking a polygon knows it (check.shapeBehind).
+local Polygon = check.Polygon
 Polygon.__index = Polygon
 
 local function newPolygon(points, level)

@@ -9,6 +9,7 @@ local measures = require(_PACKAGE .. ".measures")
 local huge, sin, cos = math.huge, math.sin, math.cos
 local isParts = views.isParts
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
+local shapeBehind = check.shapeBehind
 local polygonCentroid, polygonArea = measures.polygonCentroid, measures.polygonArea
 
 local M = {}
@@ -79,6 +80,10 @@ end
 function M.polygonBounds(points)
   local fname = "polygonBounds"
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  if type(points) == "table" and type(points[1]) ~= "number" then
+    -- a Polygon object: its points; point tables raise
+    points = shapeBehind(points, fname, "points", 2) or points
+  end
   if isParts(points) then
     local count = checkParts(points, fname, 3)
     for k = 1, count do

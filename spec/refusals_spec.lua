@@ -175,10 +175,40 @@ describe("the Polygon object", function()
     assert.are.same({ polygon.polygonsCollideV({ BOX }, NEAR) }, { polygon.polygonsCollideV(obj, { NEAR }) })
   end)
 
+  it("is taken by the measures, polygonContains and polygonBounds, its points used", function()
+    local obj = polygon.Polygon.new(L)
+    for _, fname in ipairs({ "polygonWindingOrder", "polygonArea", "polygonAreaAccurate", "polygonType",
+                             "polygonCenter", "polygonCentroid", "polygonBounds" }) do
+      assert.are.same({ polygon[fname](L) }, { polygon[fname](obj) }, fname)
+    end
+    -- (30, 30) lies in the L's notch, (10, 50) in its arm
+    assert.is_false(polygon.polygonContains(obj, 30, 30))
+    assert.is_true(polygon.polygonContains(obj, 10, 50))
+    assert.are.equal(3600, polygon.polygonArea(obj))   -- 100 * 20 + 20 * 80
+  end)
+
   it("is refused as a concave polygon when its points are", function()
     assert.has_error(function() polygon.polygonsCollide(polygon.Polygon.new(L), BOX) end,
       "polygonsCollide: points1 is not convex (a reflex turn at vertex 4); split it once with "
       .. "polygonConvexParts and pass the parts")
+  end)
+end)
+
+describe("the measures, polygonContains and polygonBounds", function()
+  it("refuse point tables of fewer than 3 points or of an odd count, where they answered nil", function()
+    local two = { { x = 0, y = 0 }, { x = 10, y = 0 } }
+    local three = { { 0, 0 }, { 10, 0 }, { 0, 10 } }
+    for _, fname in ipairs({ "polygonWindingOrder", "polygonArea", "polygonAreaAccurate", "polygonType",
+                             "polygonCenter", "polygonCentroid", "polygonBounds" }) do
+      for _, bad in ipairs({ two, three }) do
+        assert.has_error(function() polygon[fname](bad) end,
+          fname .. ": points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
+        local ok, err = callsite.raisesAtCaller(polygon[fname], { bad })
+        assert.is_true(ok, err)
+      end
+    end
+    assert.has_error(function() polygon.polygonContains(two, 5, 0) end,
+      "polygonContains: points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
   end)
 end)
 
