@@ -1322,9 +1322,13 @@ end
 local oracle = require "oracle"
 
 -- Issue 29 ("no silent wrong answers"): the collision functions refuse what they cannot handle,
--- a Polygon object is taken for its points, and no collision is `false` alone.
+-- a Polygon object is taken for its points, and no collision is `false` alone; the measures,
+-- polygonContains and polygonBounds take a Polygon object too and refuse point tables.
 local ISSUE_29_FUNCTIONS = { polygonCollidesWith = true, polygonsCollide = true,
-  polygonCollidesWithV = true, polygonsCollideV = true, polygonCircleCollideV = true }
+  polygonCollidesWithV = true, polygonsCollideV = true, polygonCircleCollideV = true,
+  polygonWindingOrder = true, polygonArea = true, polygonAreaAccurate = true, polygonType = true,
+  polygonCenter = true, polygonCentroid = true, polygonContains = true, polygonBounds = true,
+  ["Polygon:contains"] = true }
 
 -- The shape a refusal names ("points1", "points2[3]", "points"), from the call's arguments.
 local function namedShape(args, argname)
@@ -1357,6 +1361,7 @@ local function refusalHolds(name, args, message)
     if not argname then return false end
   end
   local shape = pointsOf(namedShape(args, argname))
+  if name == "Polygon:contains" then shape = type(args[1]) == "table" and rawget(args[1], "points") end
   if type(shape) ~= "table" then return false end
   local n = #shape
   if what:find("^is not convex %(") then
@@ -1391,6 +1396,12 @@ local function refusalHolds(name, args, message)
 end
 
 local function issue29Accepts(name, args, n, old, new)
+  -- any function: the odd-count error of a table of point tables now says what it is
+  if not old[1] and not new[1] and type(new[2]) == "string"
+      and new[2]:find(" holds point tables; pass a flat array", 1, true)
+      and refusalHolds(name, args, new[2]) then
+    return true
+  end
   if not ISSUE_29_FUNCTIONS[name] then return false end
   -- no collision: false alone where OLD gave false, nil, nil
   if old[1] and new[1] and old[2] == false and new[2] == false and new.n == 2 then return true end

@@ -50,11 +50,10 @@ local function resolveShape(fname, argname, shape, kind, level)
 end
 
 -- Checks a flat shape handed with a list of parts (the list's parts are checked when it is
--- prepared): an even count, at least 3 points, convex. Called after collideParts, which raises
--- the list's errors first, as the engines' answers come before the check (see collides).
--- level as in resolveShape.
+-- prepared): an even count, at least 3 points, convex; before collideParts when it is the first
+-- argument, after it (and the list's errors) when it is the second. level as in resolveShape.
 local function checkFlat(fname, argname, shape, level)
-  local n = checkPoints(shape, fname, argname, level + 2, true)
+  local n = checkPoints(shape, fname, argname, level + 2)
   checkConvex(shape, n, fname, argname, level + 1)
 end
 
@@ -129,12 +128,11 @@ local function build(T, checked)
     if kind1 ~= "number" or kind2 ~= "number" then
       points1, points2, kind1, kind2 = resolveTwo("polygonsCollide", points1, points2, kind1, kind2)
       if kind1 == "table" or kind2 == "table" then
+        -- a flat shape's refusals in argument order: before the list's errors when it comes first
+        if kind1 ~= "table" then checkFlat("polygonsCollide", "points1", points1, 2) end
         local hit = collideParts("polygonsCollide", points1, points2, false, kind1 == "table",
           kind2 == "table")
-        if kind1 ~= kind2 then
-          local flat = kind1 == "number"
-          checkFlat("polygonsCollide", flat and "points1" or "points2", flat and points1 or points2, 2)
-        end
+        if kind2 ~= "table" then checkFlat("polygonsCollide", "points2", points2, 2) end
         return hit
       end
     end
@@ -200,13 +198,10 @@ local function build(T, checked)
     if kind1 ~= "number" or kind2 ~= "number" then
       points1, points2, kind1, kind2 = resolveTwo("polygonsCollideV", points1, points2, kind1, kind2)
       if kind1 == "table" or kind2 == "table" then
+        if kind1 ~= "table" then checkFlat("polygonsCollideV", "points1", points1, 2) end
         local overlap, dx, dy = collideParts("polygonsCollideV", points1, points2, true,
           kind1 == "table", kind2 == "table")
-        if kind1 ~= kind2 then
-          local flat = kind1 == "number"
-          checkFlat("polygonsCollideV", flat and "points1" or "points2", flat and points1 or points2,
-            2)
-        end
+        if kind2 ~= "table" then checkFlat("polygonsCollideV", "points2", points2, 2) end
         if not overlap then return false end
         return overlap, dx, dy
       end

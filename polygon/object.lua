@@ -65,6 +65,9 @@ function Polygon:contains(x, y)
   if n % 2 ~= 0 or type(x) ~= "number" or type(y) ~= "number" or x - x ~= 0 or y - y ~= 0 then
     checkQuery("Polygon:contains", points, x, y, 3)
   end
+  if n < 6 and type(points[1]) == "table" then   -- point tables: refused naming this method
+    check.shapeBehind(points, "Polygon:contains", "points", 2)
+  end
   local inside = polygonContains(points, x, y)
   return inside
 end

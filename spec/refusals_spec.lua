@@ -209,6 +209,9 @@ describe("the measures, polygonContains and polygonBounds", function()
     end
     assert.has_error(function() polygon.polygonContains(two, 5, 0) end,
       "polygonContains: points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
+    local obj = setmetatable({ points = two }, polygon.Polygon)   -- past Polygon.new's check
+    assert.has_error(function() obj:contains(5, 0) end,
+      "Polygon:contains: points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
   end)
 end)
 
