@@ -1383,14 +1383,14 @@ local function refusalHolds(name, args, message)
   if what == "is empty; a polygon needs at least 3 points" then return n == 0 end
   if what == "holds point tables; pass a flat array {x1, y1, x2, y2, ...}" then
     local first = shape[1]
-    return type(first) == "table" and (first.x ~= nil or #first <= 2)
+    return type(first) == "table" and (first.x ~= nil or #first == 2)
   end
   local k, got = what:match("^%[(%d+)%] must be a number, got (%a+)$")
   if got then return type(shape[tonumber(k)]) == got and got ~= "number" end
   k, got = what:match("^%[(%d+)%] must be a number, got (%a+); a list of parts holds flat arrays$")
   if got then return type(shape[tonumber(k)]) == got and got ~= "number" end
   if what == "is a list of parts; it takes convex polygons only (polygonsCollide takes lists)" then
-    return type(shape[1]) == "table" and #shape[1] > 2
+    return type(shape[1]) == "table" and shape[1].x == nil and #shape[1] ~= 2
   end
   return false
 end

@@ -72,7 +72,7 @@ local Polygon = {}
 local function shapeBehind(shape, fname, argname, level)
   if getmetatable(shape) == Polygon then return rawget(shape, "points") end
   local first = shape[1]
-  if type(first) == "table" and (first.x ~= nil or #first <= 2) then
+  if type(first) == "table" and (first.x ~= nil or #first == 2) then
     error(("%s: %s holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
       :format(fname, argname), level + 1)
   end

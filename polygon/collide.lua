@@ -37,7 +37,8 @@ local function resolveShape(fname, argname, shape, kind, level)
   if points then shape, kind = points, type(points[1]) end
   if kind == "table" then
     local first = shape[1]
-    if #first > 2 then return shape, "table" end   -- parts (checked when the list is prepared)
+    -- a point {x =, y =} or {x, y}: refused; else a list of parts (checked when prepared)
+    if first.x == nil and #first ~= 2 then return shape, "table" end
     refuseEntries(fname, argname, shape, kind, level + 1)
   end
   if kind == "nil" and #shape < 6 then

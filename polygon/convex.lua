@@ -31,7 +31,7 @@ end
 -- point tables, strings. level as error's, counted from the caller of this function.
 local function refuseEntries(fname, argname, shape, kind, level)
   local first = shape[1]
-  if kind == "table" and (first.x ~= nil or first[1] ~= nil and first[3] == nil) then
+  if kind == "table" and (first.x ~= nil or #first == 2) then
     error(("%s: %s holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
       :format(fname, argname), level + 1)
   end
