@@ -18,6 +18,14 @@ function M.validate(points)
   if type(points) ~= "table" then
     return nil, "points must be a table, got " .. type(points)
   end
+  if getmetatable(points) == check.Polygon then points = rawget(points, "points") end   -- its points
+  if type(points) ~= "table" then
+    return nil, "points must be a table, got " .. type(points)
+  end
+  local first = points[1]
+  if type(first) == "table" and (first.x ~= nil or #first == 2) then
+    return nil, "points holds point tables; pass a flat array {x1, y1, x2, y2, ...}"
+  end
   local n = #points
   if n % 2 ~= 0 then
     return nil, ("points must hold an even number of coordinates, got %d"):format(n)
@@ -42,6 +50,7 @@ local Polygon = check.Polygon
 Polygon.__index = Polygon
 
 local function newPolygon(points, level)
+  if getmetatable(points) == Polygon then points = rawget(points, "points") end   -- a copy of one
   local ok, message = validate(points)
   if not ok then error("Polygon.new: " .. message, level + 1) end
   -- not a tail call: after a tail call to setmetatable (a built-in with side effects) LuaJIT

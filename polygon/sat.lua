@@ -24,7 +24,15 @@ function M.projectPolygon(points, x, y, nx, ny)
   checkNumber(y, "projectPolygon", "y")
   checkNumber(nx, "projectPolygon", "nx")
   checkNumber(ny, "projectPolygon", "ny")
-  if n < 2 then return nil end
+  if n < 2 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and check.shapeBehind(points, "projectPolygon",
+      "points", 2)
+    if inner then
+      local lo, hi = M.projectPolygon(inner, x, y, nx, ny)
+      return lo, hi
+    end
+    return nil
+  end
   x, y = x + 0.0, y + 0.0
   local lo = (points[1] - x) * nx + (points[2] - y) * ny
   local hi = lo

@@ -20,6 +20,13 @@ local M = {}
 
 -- Checks a list of parts: every entry a table with an even count. Returns their number. level as
 -- in checkPoints, counted from here. The messages are built only on the error path (no garbage).
+-- Whether shape is a list of {x, y} pairs: bounded, moved and turned as parts of one point
+-- each, as ever (every coordinate is read right), so not refused here.
+local function pointPairs(shape)
+  local first = shape[1]
+  return type(first) == "table" and #first == 2 and first.x == nil
+end
+
 local function checkParts(parts, fname, level)
   local count = #parts
   for k = 1, count do
@@ -80,8 +87,8 @@ end
 function M.polygonBounds(points)
   local fname = "polygonBounds"
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
-  if type(points) == "table" and type(points[1]) ~= "number" then
-    -- a Polygon object: its points; point tables raise
+  if type(points) == "table" and type(points[1]) ~= "number" and not pointPairs(points) then
+    -- a Polygon object: its points; {x =, y =} tables raise
     points = shapeBehind(points, fname, "points", 2) or points
   end
   if isParts(points) then
@@ -116,6 +123,10 @@ end
 -- Returns out. Each coordinate is rounded once (x + dx).
 function M.polygonTranslate(points, dx, dy, out)
   local fname = "polygonTranslate"
+  if type(points) == "table" and type(points[1]) ~= "number" and not pointPairs(points) then
+    -- a Polygon object: its points; {x =, y =} tables raise
+    points = shapeBehind(points, fname, "points", 2) or points
+  end
   if isParts(points) then
     local count = checkParts(points, fname, 3)
     checkFiniteNumber(dx, fname, "dx")
@@ -200,6 +211,10 @@ end
 function M.polygonRotate(points, angle, ox, oy, out)
   local fname = "polygonRotate"
   if type(ox) == "table" and oy == nil and out == nil then ox, out = nil, ox end
+  if type(points) == "table" and type(points[1]) ~= "number" and not pointPairs(points) then
+    -- a Polygon object: its points; {x =, y =} tables raise
+    points = shapeBehind(points, fname, "points", 2) or points
+  end
   local parts = isParts(points)
   local count
   if parts then count = checkParts(points, fname, 3) else count = checkPoints(points, fname) end

@@ -12,6 +12,7 @@ local floor, sort = math.floor, table.sort
 local CROSS_BOUND, crossExact, JIT = kernel.CROSS_BOUND, kernel.crossExact, kernel.JIT
 local cross, areaSign = kernel.cross, kernel.areaSign
 local checkPoints = check.checkPoints
+local shapeBehind = check.shapeBehind
 local validate = object.validate
 
 local M = {}
@@ -1075,6 +1076,8 @@ end
 -- polygonTriangulate, documented in polygon.lua: the triangles as new tables of the input's own
 -- numbers, each wound like points.
 function M.polygonTriangulate(points, holes)
+  if type(points) == "table" and type(points[1]) ~= "number" then   -- a Polygon: its points
+    points = shapeBehind(points, "polygonTriangulate", "points", 2) or points end      -- (point tables raise)
   local tris, message = triangulate("polygonTriangulate", points, holes)
   if not tris then releaseNodes(); return nil, message end
   local out = newArray(#tris / 3)
@@ -1173,6 +1176,8 @@ end
 -- shared edges while both ends stay convex (Hertel and Mehlhorn: at most four times the fewest
 -- parts possible). Builds new tables.
 function M.polygonConvexParts(points, holes)
+  if type(points) == "table" and type(points[1]) ~= "number" then   -- a Polygon: its points
+    points = shapeBehind(points, "polygonConvexParts", "points", 2) or points end      -- (point tables raise)
   local tris, message = triangulate("polygonConvexParts", points, holes)
   if not tris then releaseNodes(); return nil, message end
   -- corners: three per triangle, linked around their part; a part is the triangles joined so far

@@ -8,6 +8,7 @@ local shapes = require "shapes"
 local parts = require "parts"
 local callsite = require "callsite"
 local convex = require "polygon.convex"
+local unpack = rawget(table, "unpack") or rawget(_G, "unpack")
 
 local L = { 0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100 }   -- the issue's L: reflex at vertex 4
 local BOX = { 50, 10, 70, 10, 70, 30, 50, 30 }                   -- across the L's arm
@@ -187,6 +188,18 @@ describe("the Polygon object", function()
     assert.are.equal(3600, polygon.polygonArea(obj))   -- 100 * 20 + 20 * 80
   end)
 
+  it("is taken by projectPolygon, the transforms, the splits and validate, its points used", function()
+    local obj = polygon.Polygon.new(L)
+    assert.are.same({ polygon.projectPolygon(L, 1, 2, 0.6, 0.8) },
+      { polygon.projectPolygon(obj, 1, 2, 0.6, 0.8) })
+    assert.are.same(polygon.polygonTranslate(L, 3, 4), polygon.polygonTranslate(obj, 3, 4))
+    assert.are.same(polygon.polygonRotate(L, 0.5), polygon.polygonRotate(obj, 0.5))
+    assert.are.same(polygon.polygonTriangulate(L), polygon.polygonTriangulate(obj))
+    assert.are.same(polygon.polygonConvexParts(L), polygon.polygonConvexParts(obj))
+    assert.is_true(polygon.validate(obj))
+    assert.are.equal(L, polygon.Polygon.new(obj).points)   -- an object of an object: its points
+  end)
+
   it("is refused as a concave polygon when its points are", function()
     assert.has_error(function() polygon.polygonsCollide(polygon.Polygon.new(L), BOX) end,
       "polygonsCollide: points1 is not convex (a reflex turn at vertex 4); split it once with "
@@ -194,13 +207,14 @@ describe("the Polygon object", function()
   end)
 end)
 
-describe("the measures, polygonContains and polygonBounds", function()
-  it("refuse point tables of fewer than 3 points or of an odd count, where they answered nil", function()
+describe("the functions of one shape", function()
+  it("refuse point tables where they answered nil, false or empty tables", function()
     local two = { { x = 0, y = 0 }, { x = 10, y = 0 } }
     local three = { { 0, 0 }, { 10, 0 }, { 0, 10 } }
     for _, fname in ipairs({ "polygonWindingOrder", "polygonArea", "polygonAreaAccurate", "polygonType",
                              "polygonCenter", "polygonCentroid", "polygonBounds" }) do
-      for _, bad in ipairs({ two, three }) do
+      -- polygonBounds reads {x, y} pairs right, as parts of one point: only {x =, y =} refused
+      for _, bad in ipairs(fname == "polygonBounds" and { two } or { two, three }) do
         assert.has_error(function() polygon[fname](bad) end,
           fname .. ": points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
         local ok, err = callsite.raisesAtCaller(polygon[fname], { bad })
@@ -209,6 +223,19 @@ describe("the measures, polygonContains and polygonBounds", function()
     end
     assert.has_error(function() polygon.polygonContains(two, 5, 0) end,
       "polygonContains: points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
+    assert.are.same({ 0, 0, 10, 10 }, { polygon.polygonBounds(three) })
+    for _, fname in ipairs({ "polygonTranslate", "polygonRotate", "polygonTriangulate",
+                             "polygonConvexParts" }) do
+      local fn = polygon[fname]
+      local args = fname == "polygonTranslate" and { two, 1, 1 }
+        or fname == "polygonRotate" and { two, 1 } or { two }
+      assert.has_error(function() fn(unpack(args)) end,
+        fname .. ": points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
+      local ok, err = callsite.raisesAtCaller(fn, args)
+      assert.is_true(ok, err)
+    end
+    assert.are.same({ nil, "points holds point tables; pass a flat array {x1, y1, x2, y2, ...}" },
+      { polygon.validate(three) })
     local obj = setmetatable({ points = two }, polygon.Polygon)   -- past Polygon.new's check
     assert.has_error(function() obj:contains(5, 0) end,
       "Polygon:contains: points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
