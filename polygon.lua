@@ -31,7 +31,9 @@ local polygon = {
 -- Points are flat arrays `{x1, y1, x2, y2, ...}` in screen coordinates: y grows downwards, as in
 -- LÖVE, so "cw" is clockwise as seen on screen. No function modifies `points` unless it is also
 -- passed as `out`. The collision functions take convex polygons of either winding, or lists of
--- convex parts (from @{polygonConvexParts}) where they say so. Touching is not colliding.
+-- convex parts (from @{polygonConvexParts}) where they say so, and check it on every call: a
+-- concave polygon, fewer than 3 points or point tables raise. Touching is not colliding; no
+-- collision is `false` alone. A `Polygon` object is taken wherever a polygon is, for its points.
 --
 -- An argument error names the function, the argument and what it got, at the caller's line:
 -- `polygonArea: points must be a table, got nil`. Below, eps is 2^-53 and M the largest
@@ -139,18 +141,19 @@ polygon.polygonContains = contains.polygonContains
 polygon.projectPolygon = sat.projectPolygon
 
 --- Whether no edge normal of `points1` separates two convex polygons (the tutorial's one-sided
--- test). Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
--- Convex polygons only, no lists of parts.
+-- test). Touching is not colliding; zero area never collides. Exact. Convex polygons of 3 or
+-- more points only, no lists of parts (checked exactly on every call).
 -- @function polygonCollidesWith
 -- @tparam table points1 flat array `{x1, y1, x2, y2, ...}`
 -- @tparam table points2 flat array
 -- @treturn boolean
--- @raise when either is not a table of an even number of coordinates, or holds NaN or an
--- infinity
+-- @raise when either is not a table of an even number of coordinates, holds NaN or an
+-- infinity, is not convex (`points1 is not convex (a reflex turn at vertex 4); split it once
+-- with polygonConvexParts and pass the parts`), has fewer than 3 points or holds point tables
 polygon.polygonCollidesWith = collide.polygonCollidesWith
 
 --- Whether two convex polygons overlap, by the separating axis theorem. Touching is not
--- colliding; fewer than 3 points or zero area never collides. Exact.
+-- colliding; zero area never collides. Exact.
 -- @function polygonsCollide
 -- @tparam table points1 flat array, or a list of convex parts (colliding when any part does)
 -- @tparam table points2 the same
@@ -222,7 +225,7 @@ polygon.circlesCollideV = circle.circlesCollideV
 
 --- The push of a circle out of a convex polygon (either winding) or a list of convex parts.
 -- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
--- a radius of 0, fewer than 3 points or zero area never collide. The overlap is the full
+-- a radius of 0 or zero area never collide. The overlap is the full
 -- penetration, so a circle deep inside leaves in one step; after `cx + dx, cy + dy` (rounded) it
 -- no longer collides, and the push is at most 8 eps M longer than the exact depth (M over the
 -- polygon, the centre and the moved centre, not the radius).
@@ -234,8 +237,9 @@ polygon.circlesCollideV = circle.circlesCollideV
 -- @treturn number|boolean overlap, or false
 -- @treturn number dx, moving the circle (subtract it from the polygon to move that instead)
 -- @treturn number dy
--- @raise when points is not a table of an even number of coordinates or holds NaN or an
--- infinity, or cx, cy or radius is not a finite number, or the radius is negative
+-- @raise when points is not a table of an even number of coordinates, holds NaN or an
+-- infinity, is not convex, has fewer than 3 points or holds point tables, or cx, cy or radius
+-- is not a finite number, or the radius is negative
 polygon.polygonCircleCollideV = collide.polygonCircleCollideV
 
 --- Concave shapes

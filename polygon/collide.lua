@@ -103,7 +103,8 @@ local function build(T, checked)
 
 
   -- Whether the edge normals of points1 show no separating axis between two convex polygons.
-  -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+  -- Touching is not colliding; zero area never collides (fewer than 3 points and concave
+  -- polygons are refused). Exact.
   -- Raises an error for a non-finite coordinate.
   -- Returns true or false
   function T.polygonCollidesWith(points1, points2)
@@ -119,7 +120,8 @@ local function build(T, checked)
 
   -- Whether two convex polygons (either winding) overlap, by the separating axis theorem.
   -- Either may be a list of convex parts instead (see polygon/compound.lua).
-  -- Touching is not colliding; fewer than 3 points or zero area never collides. Exact.
+  -- Touching is not colliding; zero area never collides (fewer than 3 points and concave
+  -- polygons are refused). Exact.
   -- Raises an error for a non-finite coordinate.
   -- Returns true or false
   function T.polygonsCollide(points1, points2)
@@ -214,7 +216,7 @@ local function build(T, checked)
   -- The minimum translation vector of a circle out of a convex polygon (either winding), or out of
   -- a list of convex parts (see polygon/compound.lua).
   -- Collides exactly when the open disc meets the polygon's interior: touching is not colliding,
-  -- a radius of 0 never collides, fewer than 3 points or zero area never collides. The overlap
+  -- a radius of 0 or zero area never collides (fewer than 3 points are refused). The overlap
   -- is the full penetration (r minus the signed distance from the centre to the polygon), so a
   -- circle deep inside is pushed out in one step, and the push separates for certain: after
   -- cx + dx, cy + dy (rounded) the circle no longer collides. The push is longer than the exact
