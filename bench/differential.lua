@@ -1406,6 +1406,11 @@ local function issue29Accepts(name, args, n, old, new)
     return true
   end
   if not ISSUE_29_FUNCTIONS[name] then return false end
+  -- polygonRotate's pivot: the non-finite error names polygonRotate, not polygonCentroid
+  if name == "polygonRotate" and not old[1] and not new[1] and type(old[2]) == "string" then
+    local was = old[2]:match("polygonCentroid: (points holds a non%-finite coordinate.*)$")
+    if was and new[2]:match("polygonRotate: (.*)$") == was then return true end
+  end
   -- validate's answer for point tables
   if name == "validate" and new[1] and new[2] == nil
       and new[3] == "points holds point tables; pass a flat array {x1, y1, x2, y2, ...}" then

@@ -847,16 +847,9 @@ local CANCELLATION_LIMIT = 64
 -- coordinates' magnitude of the exact centroid either way.
 -- Returns cx, cy; nil for fewer than 3 points or zero (exact) signed area. A non-finite
 -- coordinate raises an error.
-function M.polygonCentroid(points)
-  local n = checkPoints(points, "polygonCentroid")
-  if n < 6 then   -- a Polygon object: its points (point tables raise)
-    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonCentroid", "points", 2)
-    if inner then
-      local a, b = M.polygonCentroid(inner)
-      return a, b
-    end
-    return nil
-  end
+-- polygonCentroid's computation for n >= 6 coordinates; a non-finite coordinate raises fname's
+-- error at `level` (counted from checkFinitePoints: polygonRotate's pivot names itself).
+local function centroidOf(points, n, fname, level)
   local x0, y0 = points[1] + 0.0, points[2] + 0.0
   -- The sums below are cubic in the coordinates (relative to vertex 1): scale x and y each by a
   -- power of two to near 1 so that they neither overflow nor underflow, and scale back at the
@@ -905,7 +898,7 @@ function M.polygonCentroid(points)
   if (area2 < 0 and -area2 or area2) * (CANCELLATION_LIMIT * n / 2) > magnitude then
     cx, cy = x0 + momentX / (3 * area2) / kx, y0 + momentY / (3 * area2) / ky
   else
-    checkFinitePoints(points, n, "polygonCentroid", "points", 3)
+    checkFinitePoints(points, n, fname, "points", level)
     cx, cy = centroidExact(points, n)
     if cx == nil then return nil end
   end
@@ -917,6 +910,22 @@ function M.polygonCentroid(points)
   end
   return cx, cy
 end
+
+function M.polygonCentroid(points)
+  local n = checkPoints(points, "polygonCentroid")
+  if n < 6 then   -- a Polygon object: its points (point tables raise)
+    local inner = type(points[1]) ~= "number" and shapeBehind(points, "polygonCentroid", "points", 2)
+    if inner then
+      local a, b = M.polygonCentroid(inner)
+      return a, b
+    end
+    return nil
+  end
+  local cx, cy = centroidOf(points, n, "polygonCentroid", 4)
+  if cx == nil then return nil end   -- (one value, as ever)
+  return cx, cy
+end
+M.centroidOf = centroidOf
 
 
 return M

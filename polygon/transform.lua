@@ -10,7 +10,7 @@ local huge, sin, cos = math.huge, math.sin, math.cos
 local isParts = views.isParts
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
 local shapeBehind = check.shapeBehind
-local polygonCentroid, polygonArea = measures.polygonCentroid, measures.polygonArea
+local centroidOf, polygonArea = measures.centroidOf, measures.polygonArea
 
 local M = {}
 
@@ -157,15 +157,19 @@ end
 -- weighted by the parts' areas; the vertex mean when there is no area at all; (0, 0) for no points.
 local function pivotOf(points, parts, count)
   local sumX, sumY, m = 0.0, 0.0, 0
+  -- centroidOf, so that a non-finite coordinate's error names polygonRotate (level 5: from
+  -- checkFinitePoints through centroidOf, here and polygonRotate to its caller)
   if not parts then
-    local cx, cy = polygonCentroid(points)
+    local cx, cy
+    if count >= 6 then cx, cy = centroidOf(points, count, "polygonRotate", 5) end
     if cx then return cx, cy end
     sumX, sumY, m = addVertices(points, count, sumX, sumY, m)
   else
     local wx, wy, total = 0.0, 0.0, 0.0
     for k = 1, count do
       local part = points[k]
-      local cx, cy = polygonCentroid(part)
+      local cx, cy
+      if #part >= 6 then cx, cy = centroidOf(part, #part, "polygonRotate", 5) end
       if cx then
         local area = polygonArea(part)
         wx, wy, total = wx + area * cx, wy + area * cy, total + area

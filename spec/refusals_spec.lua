@@ -242,6 +242,19 @@ describe("the functions of one shape", function()
   end)
 end)
 
+describe("polygonRotate about its centroid", function()
+  it("names itself for a non-finite coordinate (the centroid's error named polygonCentroid)", function()
+    assert.has_error(function() polygon.polygonRotate({ 0, 0, 10, 0, 0 / 0, 10 }, 1) end)
+    local ok, err = callsite.raisesAtCaller(polygon.polygonRotate, { { 0, 0, 10, 0, 1 / 0, 10 }, 1 })
+    assert.is_true(ok, err)
+    local want = "polygonRotate: points holds a non-finite coordinate, got inf at [5]"
+    assert.is_truthy(err:find(want, 1, true), err)
+    ok, err = callsite.raisesAtCaller(polygon.polygonRotate, { { { 0, 0, 10, 0, 1 / 0, 10 } }, 1 })
+    assert.is_true(ok, err)
+    assert.is_truthy(err:find("polygonRotate: points holds a non-finite coordinate", 1, true), err)
+  end)
+end)
+
 describe("no collision", function()
   it("is false alone from every collision function, flat or parts", function()
     local apart = { 500, 500, 510, 500, 510, 510 }
