@@ -41,6 +41,15 @@ local function setColor(color, alpha)
 end
 ui.setColor = setColor
 
+--- Calls a collision function of polygon.lua. A shape it refuses (a polygon dragged concave)
+-- gives false, nil, nil and the refusal's message (without the file and line), which the
+-- scenes show instead of an answer.
+function ui.ask(fn, ...)
+  local ok, a, b, c = pcall(fn, ...)
+  if ok then return a, b, c, nil end
+  return false, nil, nil, (tostring(a):gsub("^[^:]*:%d+: ", ""))
+end
+
 --- Formats a value returned by polygon.lua the way Lua would write it.
 function ui.show(value)
   local kind = type(value)

@@ -24,7 +24,7 @@ return function(polygon, ui)
 
   function scene.draw()
     local points, cx, cy, r = scene.points, scene.cx, scene.cy, scene.r
-    local overlap, dx, dy = polygon.polygonCircleCollideV(points, cx, cy, r)
+    local overlap, dx, dy, refusal = ui.ask(polygon.polygonCircleCollideV, points, cx, cy, r)
     local last = scene.last
     if last then
       ui.setColor(colors.orange, 0.45)
@@ -71,7 +71,9 @@ return function(polygon, ui)
       lines[#lines + 1] = ("then polygonCircleCollideV = %s")
         :format(ui.showAll(last.after, last.afterDx, last.afterDy))
     end
-    if polygon.polygonType(points) ~= "convex" then
+    if refusal then   -- the library refuses a concave polygon rather than answer wrong
+      lines[#lines + 1] = { colors.yellow, refusal }
+    elseif polygon.polygonType(points) ~= "convex" then
       lines[#lines + 1] = { colors.yellow, "the separating axis test needs a convex polygon" }
     end
     ui.panel(lines, 24, 40)
@@ -101,7 +103,7 @@ return function(polygon, ui)
     end
     scene.grab = nil
     local points, cx, cy, r = scene.points, scene.cx, scene.cy, scene.r
-    local overlap, dx, dy = polygon.polygonCircleCollideV(points, cx, cy, r)
+    local overlap, dx, dy = ui.ask(polygon.polygonCircleCollideV, points, cx, cy, r)
     if not overlap then
       return
     end

@@ -17,7 +17,7 @@ return function(polygon, ui)
 
   function scene.draw()
     local a, b = scene.shapes[1], scene.shapes[2]
-    local colliding = polygon.polygonsCollide(a, b)
+    local colliding, _, _, refusal = ui.ask(polygon.polygonsCollide, a, b)
     ui.drawPolygon(a, colliding and colors.hit or colors.blue, colliding and 0.45 or 0.35)
     ui.drawPolygon(b, colliding and colors.hit or colors.orange, colliding and 0.45 or 0.35)
     ui.vertices(a, colors.blue, 4)
@@ -26,15 +26,18 @@ return function(polygon, ui)
       ui.drawGrab(scene.shapes[scene.grabbed], scene.grab)
     end
     local typeA, typeB = polygon.polygonType(a), polygon.polygonType(b)
+    local withA, withB = ui.ask(polygon.polygonCollidesWith, a, b), ui.ask(polygon.polygonCollidesWith, b, a)
     local lines = {
       { colors.blue, ("A: polygonType = %s"):format(ui.show(typeA)) },
       { colors.orange, ("B: polygonType = %s"):format(ui.show(typeB)) },
-      ("polygonCollidesWith(A, B) = %s   (axes of A)"):format(ui.show(polygon.polygonCollidesWith(a, b))),
-      ("polygonCollidesWith(B, A) = %s   (axes of B)"):format(ui.show(polygon.polygonCollidesWith(b, a))),
+      ("polygonCollidesWith(A, B) = %s   (axes of A)"):format(ui.show(withA)),
+      ("polygonCollidesWith(B, A) = %s   (axes of B)"):format(ui.show(withB)),
       { colliding and colors.hit or colors.text,
         ("polygonsCollide(A, B) = %s"):format(ui.show(colliding)) },
     }
-    if typeA ~= "convex" or typeB ~= "convex" then
+    if refusal then   -- the library refuses a concave polygon rather than answer wrong
+      lines[#lines + 1] = { colors.yellow, refusal }
+    elseif typeA ~= "convex" or typeB ~= "convex" then
       lines[#lines + 1] = { colors.yellow, "the separating axis test needs convex polygons" }
     end
     ui.panel(lines, 24, 40)

@@ -40,7 +40,7 @@ return function(polygon, ui)
   function scene.draw()
     local s, m = staticIndex(), scene.moving
     local static, moving = scene.shapes[s], scene.shapes[m]
-    local overlap, dx, dy = polygon.polygonsCollideV(static, moving)
+    local overlap, dx, dy, refusal = ui.ask(polygon.polygonsCollideV, static, moving)
 
     local last = scene.last
     if last then
@@ -93,7 +93,9 @@ return function(polygon, ui)
       lines[#lines + 1] = ("then polygonsCollideV(%s, %s) = %s"):format(NAMES[3 - last.moving],
         NAMES[last.moving], ui.showAll(last.after, last.afterDx, last.afterDy))
     end
-    if polygon.polygonType(static) ~= "convex" or polygon.polygonType(moving) ~= "convex" then
+    if refusal then   -- the library refuses a concave polygon rather than answer wrong
+      lines[#lines + 1] = { colors.yellow, refusal }
+    elseif polygon.polygonType(static) ~= "convex" or polygon.polygonType(moving) ~= "convex" then
       lines[#lines + 1] = { colors.yellow, "the separating axis test needs convex polygons" }
     end
     ui.panel(lines, 24, 40)
@@ -117,7 +119,7 @@ return function(polygon, ui)
     end
     scene.grab = nil
     local static, moving = scene.shapes[staticIndex()], scene.shapes[scene.moving]
-    local overlap, dx, dy = polygon.polygonsCollideV(static, moving)
+    local overlap, dx, dy = ui.ask(polygon.polygonsCollideV, static, moving)
     if not overlap then
       return
     end
