@@ -143,9 +143,9 @@ end
 -- Two bodies, the same answers (spec/refusals_spec.lua compares them).
 local TINY = 2^-900   -- below every turn of the exact range worth trusting to the filter
 
--- LuaJIT's: min, max and abs are single instructions there (no branch in the loop), and LuaJIT
--- has no integers, so no coordinate is converted.
-local function convexFilterJit(points, n)
+-- LuaJIT's: min, max and abs are single instructions there (no branch), and LuaJIT has no
+-- integers, so no coordinate is converted. Beyond 8 vertices a loop.
+local function convexFilterJitLoop(points, n)
   local lo, hi, agree, bsum = huge, -huge, 0, 0
   local ax, ay = points[n - 3], points[n - 2]
   local bx, by = points[n - 1], points[n]
@@ -159,6 +159,79 @@ local function convexFilterJit(points, n)
     agree = agree + min(1, max(-1, xx * 2^1000))
     bx, by, ex, ey = cx, cy, fx, fy
   end
+  return max(lo, -hi) > 0 and agree == n / 2 - 4 and bsum < huge
+end
+
+-- Up to 8 vertices written out, as sat's shoelaceBounds: a loop of 3 to 8 steps is copied
+-- unrolled into its callers' traces, whose exits for the other sizes fail to compile ("NYI:
+-- register coalescing too complex") until the loop is left to the interpreter. Slot k holds
+-- vertex min(k, m) (the last repeated for fewer); edge k runs from slot k to slot k + 1 (edge 8
+-- back to slot 1). A slot from m on (2k >= n) turns between repeated vertices: its turn is
+-- taken out of lo and hi by `pad` (2^1000) and its x product is 0; the real turn at vertex m
+-- is taken once more at the end (for 8 vertices a repeat of slot 8's, its x product not
+-- counted).
+local PAD = 2^1000
+
+local function convexFilterJit(points, n)
+  if n > 16 then
+    local sure = convexFilterJitLoop(points, n)
+    return sure
+  end
+  local x1, y1 = points[1], points[2]
+  local x2, y2 = points[3], points[4]
+  local x3, y3 = points[5], points[6]
+  local j = min(7, n - 1)
+  local x4, y4 = points[j], points[j + 1]
+  j = min(9, n - 1)
+  local x5, y5 = points[j], points[j + 1]
+  j = min(11, n - 1)
+  local x6, y6 = points[j], points[j + 1]
+  j = min(13, n - 1)
+  local x7, y7 = points[j], points[j + 1]
+  local x8, y8 = points[n - 1], points[n]
+  local xp, yp = points[n - 3], points[n - 2]   -- the real vertex before the last
+  local e1x, e1y, e2x, e2y = x2 - x1, y2 - y1, x3 - x2, y3 - y2
+  local e3x, e3y, e4x, e4y = x4 - x3, y4 - y3, x5 - x4, y5 - y4
+  local e5x, e5y, e6x, e6y = x6 - x5, y6 - y5, x7 - x6, y7 - y6
+  local e7x, e7y, e8x, e8y = x8 - x7, y8 - y7, x1 - x8, y1 - y8
+  local l, r, xx, s, b, pad
+  local lo, hi, agree, bsum
+  l, r, xx = e8x * e1y, e8y * e1x, e8x * e1x   -- slot 1
+  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
+  lo, hi, agree, bsum = s - b, s + b, min(1, max(-1, xx * 2^1000)), b
+  l, r, xx = e1x * e2y, e1y * e2x, e1x * e2x   -- slot 2 (always a real vertex)
+  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
+  lo, hi = min(lo, s - b), max(hi, s + b)
+  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
+  l, r, xx = e2x * e3y, e2y * e3x, e2x * e3x   -- slot 3
+  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 7 - n))
+  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
+  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
+  l, r, xx = e3x * e4y, e3y * e4x, e3x * e4x   -- slot 4
+  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 9 - n))
+  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
+  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
+  l, r, xx = e4x * e5y, e4y * e5x, e4x * e5x   -- slot 5
+  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 11 - n))
+  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
+  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
+  l, r, xx = e5x * e6y, e5y * e6x, e5x * e6x   -- slot 6
+  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 13 - n))
+  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
+  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
+  l, r, xx = e6x * e7y, e6y * e7x, e6x * e7x   -- slot 7
+  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 15 - n))
+  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
+  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
+  l, r, xx = e7x * e8y, e7y * e8x, e7x * e8x   -- slot 8 (for 8 vertices the repeat below)
+  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
+  lo, hi = min(lo, s - b + PAD), max(hi, s + b - PAD)
+  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
+  local elx, ely = x8 - xp, y8 - yp   -- the real turn at the last vertex
+  l, r, xx = elx * e8y, ely * e8x, elx * e8x
+  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
+  lo, hi, bsum = min(lo, s - b), max(hi, s + b), bsum + b
+  agree = agree + min(1, max(-1, xx * 2^1000)) * min(1, max(0, 16 - n))
   return max(lo, -hi) > 0 and agree == n / 2 - 4 and bsum < huge
 end
 
@@ -208,6 +281,7 @@ M.refuseEntries = refuseEntries
 M.whyNotConvex = whyNotConvex
 M.convexFilter = convexFilter
 M.convexFilterJit = convexFilterJit
+M.convexFilterJitLoop = convexFilterJitLoop
 M.convexFilterPuc = convexFilterPuc
 M.convexCareful = convexCareful
 M.checkConvex = checkConvex

@@ -74,6 +74,24 @@ describe("the collision functions", function()
     end)
   end)
 
+  describe("when the coordinates are tiny or huge (turns that underflow or overflow)", function()
+    it("refuse a concave quadrilateral and take a convex one at 1e-200 and at 1e300", function()
+      for _, k in ipairs({ 1e-200, 1e300 }) do
+        -- a dart: (0,0), (10,0), (3,3), (0,10); the turn at vertex 3 is reflex:
+        -- (3 - 10, 3 - 0) x (0 - 3, 10 - 3) = (-7)(7) - (3)(-3) = -40 against the others' +
+        local dart = { 0, 0, 10 * k, 0, 3 * k, 3 * k, 0, 10 * k }
+        local square = { 0, 0, 10 * k, 0, 10 * k, 10 * k, 0, 10 * k }
+        local near = { 5 * k, 5 * k, 20 * k, 5 * k, 20 * k, 20 * k }
+        assert.has_error(function() polygon.polygonsCollide(dart, near) end,
+          "polygonsCollide: points1 is not convex (a reflex turn at vertex 3); split it once with "
+          .. "polygonConvexParts and pass the parts")
+        -- taken (the answer itself at 1e-200 is outside the exact range, docs/accuracy.md)
+        assert.is_true(pcall(polygon.polygonsCollide, square, near))
+        assert.is_false(convex.convexFilterJit(dart, 8) or convex.convexFilterPuc(dart, 8))
+      end
+    end)
+  end)
+
   describe("when a part of a list is not convex", function()
     it("refuse it by its index, in either place", function()
       local list = { parts.box(200, 200, 10, 10), L }
