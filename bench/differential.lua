@@ -1368,8 +1368,13 @@ local function refusalHolds(name, args, message)
   if type(shape) ~= "table" then return false end
   local n = #shape
   if what:find("^is not convex %(") then
-    for i = 1, n do if type(shape[i]) ~= "number" then return false end end
-    return n >= 6 and n % 2 == 0 and oracle.polygonType(shape) == "concave"
+    -- judged on the doubles the library reads (a Lua 5.3+ integer beyond 2^53 converted)
+    local doubles = {}
+    for i = 1, n do
+      if type(shape[i]) ~= "number" then return false end
+      doubles[i] = shape[i] + 0.0
+    end
+    return n >= 6 and n % 2 == 0 and oracle.polygonType(doubles) == "concave"
   end
   if what == "holds a non-finite coordinate" then   -- now seen in every part when it is prepared
     local list = type(shape[1]) == "table" and shape or { shape }
