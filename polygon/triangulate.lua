@@ -84,6 +84,27 @@ local function same(a, b)
   return nodeX[a] == nodeX[b] and nodeY[a] == nodeY[b]
 end
 
+-- The ring node k was made for: 1 the outline, h + 1 hole h (ringEnd[r]: the last node of
+-- ring r). Asked only to name the rings in a message.
+local ringEnd
+local crossedA, crossedB   -- nodes of the two edges found crossing (or meeting wrongly), for
+                           -- the message naming their rings
+local function ringOf(k)
+  local r = 1
+  while ringEnd[r] and k > ringEnd[r] do r = r + 1 end
+  return r
+end
+
+-- The message for two rings found crossing or meeting wrongly (crossedA, crossedB).
+local function crossingMessage()
+  local r, g = ringOf(crossedA), ringOf(crossedB)
+  if r > g then r, g = g, r end
+  if g == 1 then return "edges cross" end
+  if r == g then return ("holes[%d] crosses itself"):format(g - 1) end
+  if r == 1 then return ("holes[%d] crosses the outline"):format(g - 1) end
+  return ("holes[%d] and holes[%d] cross"):format(r - 1, g - 1)
+end
+
 local function newNode(x, y, id)
   nodeCount = nodeCount + 1
   local k = nodeCount
@@ -131,7 +152,9 @@ local function properlyCross(a, b, c, d)
   local s1, s2 = orient(a, b, c), orient(a, b, d)
   if min(max(s1, s2), -min(s1, s2)) <= 0 then return false end
   local s3, s4 = orient(c, d, a), orient(c, d, b)
-  return min(max(s3, s4), -min(s3, s4)) > 0
+  if min(max(s3, s4), -min(s3, s4)) <= 0 then return false end
+  crossedA, crossedB = a, c
+  return true
 end
 
 -- Shamos and Hoey's sweep: the edges in order along a vertical line moving right; a proper
@@ -500,7 +523,15 @@ local function placesCross()
   while i <= placeCount do
     local r, last = rank[placeOrder[i]], i
     while last < placeCount and rank[placeOrder[last + 1]] == r do last = last + 1 end
-    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then return true end
+    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then
+      -- the rings meeting there: two of the nodes, or a node and an edge through the place
+      local touched = touchedAt[r]
+      crossedA, crossedB = placeOrder[i], touched and touched[1] or placeOrder[last]
+      for g = i + 1, last do
+        if ringOf(placeOrder[g]) ~= ringOf(crossedA) then crossedB = placeOrder[g] end
+      end
+      return true
+    end
     i = last + 1
   end
   return false
@@ -610,7 +641,7 @@ local function between(hx, hy, x, y, bx, by)
 end
 
 -- The node of the ring at s that the hole's leftmost node h joins: the nearest point hit by the
--- ray from h to the left is a vertex, or lies on an edge whose right end P is seen from h unless
+-- ray from h to the left is a vertex, or lies on an edge whose left end P is seen from h unless
 -- another vertex in the triangle (h, hit, P) is: the one there at the least angle from the ray
 -- (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside).
 local function bridgeTarget(s, h)
@@ -649,7 +680,9 @@ local function bridgeTarget(s, h)
   until k == s
   if vertex then return copyFacing(s, vertex, h) end
   if not lo then return nil end
-  local p = nodeX[hi] > nodeX[lo] and hi or lo
+  -- the edge's left end: mirrored Eberly (the ray goes left), P.x <= hit.x < hx, so the
+  -- triangle (h, hit, P) lies left of h and holds no part of the hole
+  local p = nodeX[hi] < nodeX[lo] and hi or lo
   local side = nodeY[p] > hy and 1 or -1   -- the side of the ray the triangle lies on
   local lx, ly, ux, uy = nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi]
   local best = p
@@ -1002,8 +1035,8 @@ local function triangulate(fname, points, holes)
     if not ok then error(("%s: holes[%d]: %s"):format(fname, h, message), 3) end
   end
   turn = areaSign(points, n)
-  if turn == 0 then return nil, "points have zero area" end
-  turn = turn > 0 and 1 or -1
+  local flat = turn == 0   -- zero area: a bow-tie's halves cancel; say so when edges cross
+  turn = turn < 0 and -1 or 1
   capacity = n / 2
   for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
   nodeX, nodeY, inX, inY = newArray(capacity), newArray(capacity), newArray(capacity), newArray(capacity)
@@ -1012,19 +1045,28 @@ local function triangulate(fname, points, holes)
   nodeCount = 0
   listed = nil
   local outer = linkRing(points, n, 1, false)
+  ringEnd = { nodeCount }
+  if flat then
+    if anyCrossing({ outer }) then return nil, "edges cross" end
+    return nil, "points have zero area"
+  end
   local starts, firstId = { outer }, n / 2 + 1
   for h = 1, holes and #holes or 0 do
     local hole = holes[h]
     local m = #hole
     local s = areaSign(hole, m)
-    if s == 0 then return nil, ("holes[%d] has zero area"):format(h) end
     -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
     starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0))
+    if s == 0 then
+      if anyCrossing({ starts[h + 1] }) then return nil, ("holes[%d] crosses itself"):format(h) end
+      return nil, ("holes[%d] has zero area"):format(h)
+    end
+    ringEnd[h + 1] = nodeCount
     firstId = firstId + m / 2
   end
   local crossing = sweepCrossing(starts)
   if crossing == nil then crossing = anyCrossing(starts) end
-  if crossing then return nil, "edges cross" end
+  if crossing then return nil, crossingMessage() end
   for h = 2, #starts do
     local k, side = starts[h]
     repeat
@@ -1068,7 +1110,7 @@ end
 -- Drops the node arrays of the last call.
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
-  sortKey, listed, shared, reflexSeen = nil, nil, nil, nil
+  sortKey, listed, shared, reflexSeen, ringEnd = nil, nil, nil, nil, nil
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
 end
 
