@@ -40,6 +40,7 @@ local capacity          -- the number of nodes a call can make, at most: the arr
 local nodeX, nodeY      -- coordinates as doubles (+ 0.0), for the predicates
 local inX, inY          -- the caller's values, copied into the output bit for bit
 local origin            -- the input vertex a node stands for (a bridge copies two of them)
+local nodeRing          -- the ring a node was made for: 1 the outline, h + 1 hole h
 local nextNode, prevNode, nodeCount
 local gone              -- gone[k]: node k has been unlinked
 local cellStart         -- the ear test's grid (see buildGrid): where cell c's entries begin
@@ -84,15 +85,11 @@ local function same(a, b)
   return nodeX[a] == nodeX[b] and nodeY[a] == nodeY[b]
 end
 
--- The ring node k was made for: 1 the outline, h + 1 hole h (ringEnd[r]: the last node of
--- ring r). Asked only to name the rings in a message.
-local ringEnd
+-- The ring node k was made for: 1 the outline, h + 1 hole h.
 local crossedA, crossedB   -- nodes of the two edges found crossing (or meeting wrongly), for
                            -- the message naming their rings
 local function ringOf(k)
-  local r = 1
-  while ringEnd[r] and k > ringEnd[r] do r = r + 1 end
-  return r
+  return nodeRing[k]
 end
 
 -- The message for two rings found crossing or meeting wrongly (crossedA, crossedB).
@@ -128,13 +125,14 @@ end
 
 -- Links the vertices of a flat array into a ring, in reverse when `reversed`, skipping
 -- repeated consecutive vertices. firstId: the id of the array's first vertex. Returns a node.
-local function linkRing(points, n, firstId, reversed)
+local function linkRing(points, n, firstId, reversed, ring)
   local first, last
   for j = 1, n - 1, 2 do
     local i = reversed and n - j or j
     local x, y = points[i], points[i + 1]
     if not last or x + 0.0 ~= nodeX[last] or y + 0.0 ~= nodeY[last] then
       local k = newNode(x, y, firstId + (i - 1) / 2)
+      nodeRing[k] = ring
       if last then nextNode[last], prevNode[k] = k, last else first = k end
       last = k
     end
@@ -333,10 +331,52 @@ local function besideLast(s, coming)
   return status[lastPlace - 1] == s and lastPlace - 1 or 0
 end
 
+-- Where each ring lies, read off the order at its leftmost place: the edge just below the
+-- ring's lowest edge there bounds the region the ring starts in. Every edge has the inside on
+-- one side (the holes run against the outline), so a hole starts in the polygon's inside
+-- exactly when that edge has the inside above it, and rings that do not cross keep all their
+-- other points on that side too. An edge has the inside above it (in y-up terms, as edgeOrder)
+-- when it runs rightwards and the rings turn positively, or leftwards and they turn negatively.
+-- ringStart[r]: 1 when ring r starts inside the polygon, -1 outside, 0 undecided (its lowest
+-- edge runs along the edge below: their order there is not known); ringBelow[r]: the edge below,
+-- or false for none.
+local ringStart, ringBelow, leftRank
+
+-- Notes edge `below` (or nil) as the edge just below edge s, when s starts at its ring's
+-- leftmost place and `below` is not the ring's own (another of its edges from that place).
+local function noteBelow(s, below)
+  local v = sweepLeft[s]
+  local r = nodeRing[v]
+  if rank[v] ~= leftRank[r] then return end
+  if below and nodeRing[below] == r and rank[sweepLeft[below]] == rank[v] then return end
+  ringBelow[r] = below or false
+  if not below then
+    ringStart[r] = -1
+  elseif orient(sweepLeft[below], sweepRight[below], v) == 0
+    and orient(sweepLeft[below], sweepRight[below], sweepRight[s]) == 0 then
+    ringStart[r] = 0
+  else
+    ringStart[r] = ((sweepLeft[below] == below) == (turn > 0)) and 1 or -1
+  end
+end
+
+-- Notes where edge s, now at place `at` of the order, lies: above the edge below it, and below
+-- the edge above it (which may start at its ring's leftmost place, where s comes in too).
+local function noteRings(s, at)
+  noteBelow(s, status[at - 1])
+  local above = status[at + 1]
+  if above and rank[sweepLeft[above]] == rank[sweepLeft[s]] then noteBelow(above, s) end
+end
+
 -- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
 -- order came out inconsistent (then the caller asks anyCrossing).
 local function sweep(starts)
   local events, eventCount = sweepEvents(starts)
+  ringStart, ringBelow, leftRank = {}, {}, {}
+  for i = placeCount, 1, -1 do
+    local k = placeOrder[i]
+    leftRank[nodeRing[k]] = rank[k]
+  end
   -- the order is status[bottom + 1 .. bottom + m]. On LuaJIT an edge coming in or leaving
   -- shifts the shorter side, so bottom moves, by one per event at most: starting it half the
   -- events up keeps it in the array. (A vertical line meets some 650 edges of a noisy circle
@@ -372,6 +412,7 @@ local function sweep(starts)
       lastPlace = lo
       noteTouches(sweepLeft[s], lo, -1)
       noteTouches(sweepLeft[s], lo, 1)
+      noteRings(s, lo)
       local below, above = status[lo - 1], status[lo + 1]
       if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
       if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
@@ -388,6 +429,7 @@ local function sweep(starts)
       if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
         and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
         status[lo] = t
+        noteRings(t, lo)
         i = i + 1
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
         if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
@@ -600,6 +642,29 @@ local function ringSide(s, x, y)
     k = q
   until k == s
   return inside and 1 or -1
+end
+
+-- Where hole h lies, by the crossing rule from its vertices (the rings do not cross: the first
+-- vertex off another ring decides), when the sweep could not tell: a message when it is outside
+-- the polygon or inside another hole, else nil.
+local function holeMisplaced(starts, h)
+  local k, side = starts[h]
+  repeat
+    side = ringSide(starts[1], nodeX[k], nodeY[k])
+    k = nextNode[k]
+  until side ~= 0 or k == starts[h]
+  if side < 0 then return ("holes[%d] is outside the polygon"):format(h - 1) end
+  for g = 2, #starts do
+    if g ~= h then
+      k = starts[h]
+      repeat
+        side = ringSide(starts[g], nodeX[k], nodeY[k])
+        k = nextNode[k]
+      until side ~= 0 or k == starts[h]
+      if side > 0 then return ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1) end
+    end
+  end
+  return nil
 end
 
 -- Whether the direction from node k to node t points strictly into the interior at k.
@@ -861,6 +926,7 @@ end
 -- the slopes dx/dy of the long side t -> bottom and of the short sides t -> m and m -> bottom.
 local earA, earB, earC, boxX0, boxY0, boxX1, boxY1, boxCol0, boxCol1
 local spanX0, spanX1    -- the triangle's widened span in x over the row being visited
+local nearby = {}       -- on LuaJIT, the entries near the triangle, tested after the scan
 local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
 
 -- The columns of the cells the triangle may meet in a row: its span in x over the row's band
@@ -914,10 +980,11 @@ local function isEar(b)
   -- one loop over the entries of the rows' spans, one row after the other: a loop per row (a
   -- few entries) ran as a trace of its own, and every row left it for the interpreter
   local row, lastRow, j, last = rowOf(boxY0) - 1, rowOf(boxY1), 1, 0
+  local found = 0
   while true do
     if j > last then   -- the next row's span
       row = row + 1
-      if row > lastRow then return true end
+      if row > lastRow then break end
       local left, right = rowSpan(row)
       local base = row * gridCols + 1
       j, last = cellStart[base + left], cellStart[base + right + 1] - 1
@@ -929,12 +996,13 @@ local function isEar(b)
       local xLong = topX + (y - topY) * longSlope
       local xShort = midX + (min(y, midY) - midY) * upperSlope + (max(y, midY) - midY) * lowerSlope
       local xNear = min(x, spanX1)
+      -- an entry passing is only noted, and tested after the scan: tested here, the exact
+      -- tests' side traces, started with the loop's many live values, aborted ("register
+      -- coalescing too complex") thousands of times on outlines with holes
       if max(spanX0 - x, x - spanX1, boxY0 - y, y - boxY1,
           abs(xNear + xNear - xLong - xShort) - abs(xLong - xShort) - spanMargin) <= 0 then
-        local k = entryNode[j]
-        if k ~= earA and k ~= earC and keepListed(k) and blocks(k, earA, earB, earC) then
-          return false
-        end
+        found = found + 1
+        nearby[found] = j
       end
       j = j + 1
     else
@@ -949,6 +1017,13 @@ local function isEar(b)
       j = j + 1
     end
   end
+  for i = 1, found do
+    local k = entryNode[nearby[i]]
+    if k ~= earA and k ~= earC and keepListed(k) and blocks(k, earA, earB, earC) then
+      return false
+    end
+  end
+  return true
 end
 
 -- Clips ears from the ring at s until it is gone, appending each triangle's three nodes to
@@ -1044,8 +1119,8 @@ local function triangulate(fname, points, holes)
   prevNode, gone = newArray(capacity), newArray(capacity)
   nodeCount = 0
   listed = nil
-  local outer = linkRing(points, n, 1, false)
-  ringEnd = { nodeCount }
+  nodeRing = newArray(capacity)
+  local outer = linkRing(points, n, 1, false, 1)
   if flat then
     if anyCrossing({ outer }) then return nil, "edges cross" end
     return nil, "points have zero area"
@@ -1056,35 +1131,31 @@ local function triangulate(fname, points, holes)
     local m = #hole
     local s = areaSign(hole, m)
     -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
-    starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0))
+    starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0), h + 1)
     if s == 0 then
       if anyCrossing({ starts[h + 1] }) then return nil, ("holes[%d] crosses itself"):format(h) end
       return nil, ("holes[%d] has zero area"):format(h)
     end
-    ringEnd[h + 1] = nodeCount
     firstId = firstId + m / 2
   end
   local crossing = sweepCrossing(starts)
+  local ordered = crossing ~= nil   -- the sweep's order held: ringStart is known
   if crossing == nil then crossing = anyCrossing(starts) end
   if crossing then return nil, crossingMessage() end
   for h = 2, #starts do
-    local k, side = starts[h]
-    repeat
-      side = ringSide(outer, nodeX[k], nodeY[k])
-      k = nextNode[k]
-    until side ~= 0 or k == starts[h]
-    if side < 0 then return nil, ("holes[%d] is outside the polygon"):format(h - 1) end
-    for g = 2, #starts do
-      if g ~= h then
-        k = starts[h]
-        repeat
-          side = ringSide(starts[g], nodeX[k], nodeY[k])
-          k = nextNode[k]
-        until side ~= 0 or k == starts[h]
-        if side > 0 then return nil, ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1) end
-      end
+    local start = ordered and ringStart[h] or 0
+    if start < 0 then
+      local g = ringBelow[h] and nodeRing[ringBelow[h]] or 1
+      if g == 1 then return nil, ("holes[%d] is outside the polygon"):format(h - 1) end
+      return nil, ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1)
+    end
+    if start == 0 then
+      local misplaced = holeMisplaced(starts, h)
+      if misplaced then return nil, misplaced end
     end
   end
+  ringStart, ringBelow = nil, nil
+  -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
   -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
   local lefts = {}
   for h = 2, #starts do
@@ -1110,7 +1181,8 @@ end
 -- Drops the node arrays of the last call.
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
-  sortKey, listed, shared, reflexSeen, ringEnd = nil, nil, nil, nil, nil
+  sortKey, listed, shared, reflexSeen, nodeRing = nil, nil, nil, nil, nil
+  ringStart, ringBelow = nil, nil
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
 end
 
