@@ -653,7 +653,8 @@ local function holeMisplaced(starts, h)
     side = ringSide(starts[1], nodeX[k], nodeY[k])
     k = nextNode[k]
   until side ~= 0 or k == starts[h]
-  if side < 0 then return ("holes[%d] is outside the polygon"):format(h - 1) end
+  local name = nodeRing[starts[h]] - 1
+  if side < 0 then return ("holes[%d] is outside the polygon"):format(name) end
   for g = 2, #starts do
     if g ~= h then
       k = starts[h]
@@ -661,7 +662,9 @@ local function holeMisplaced(starts, h)
         side = ringSide(starts[g], nodeX[k], nodeY[k])
         k = nextNode[k]
       until side ~= 0 or k == starts[h]
-      if side > 0 then return ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1) end
+      if side > 0 then
+        return ("holes[%d] is inside holes[%d]"):format(name, nodeRing[starts[g]] - 1)
+      end
     end
   end
   return nil
@@ -1106,7 +1109,19 @@ local function triangulate(fname, points, holes)
     error(fname .. ": " .. message, 3)
   end
   for h = 1, holes and #holes or 0 do
-    ok, message = validate(holes[h])
+    local hole = holes[h]
+    ok, message = validate(hole)
+    -- a hole of fewer than 3 points encloses nothing and is skipped (see below), but its
+    -- coordinates must still be finite numbers
+    if not ok and type(hole) == "table" and #hole % 2 == 0 and #hole < 6 then
+      ok = true
+      for i = 1, #hole do
+        local v = hole[i]
+        if type(v) ~= "number" or v ~= v or v == huge or v == -huge then
+          ok, message = false, ("points[%d] must be a finite number, got %s"):format(i, tostring(v))
+        end
+      end
+    end
     if not ok then error(("%s: holes[%d]: %s"):format(fname, h, message), 3) end
   end
   turn = areaSign(points, n)
@@ -1129,12 +1144,18 @@ local function triangulate(fname, points, holes)
   for h = 1, holes and #holes or 0 do
     local hole = holes[h]
     local m = #hole
-    local s = areaSign(hole, m)
-    -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
-    starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0), h + 1)
-    if s == 0 then
-      if anyCrossing({ starts[h + 1] }) then return nil, ("holes[%d] crosses itself"):format(h) end
-      return nil, ("holes[%d] has zero area"):format(h)
+    -- a hole enclosing nothing (fewer than 3 points, or zero area without crossing itself: a
+    -- point, a segment, a sliver folded flat) takes nothing away and is skipped, as earcut's
+    -- Steiner points and the slivers of map data come
+    local s = m >= 6 and areaSign(hole, m) or 0
+    if m >= 6 then
+      -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
+      local first = linkRing(hole, m, firstId, (s > 0) == (turn > 0), h + 1)
+      if s ~= 0 then
+        starts[#starts + 1] = first
+      elseif anyCrossing({ first }) then
+        return nil, ("holes[%d] crosses itself"):format(h)
+      end
     end
     firstId = firstId + m / 2
   end
@@ -1142,7 +1163,8 @@ local function triangulate(fname, points, holes)
   local ordered = crossing ~= nil   -- the sweep's order held: ringStart is known
   if crossing == nil then crossing = anyCrossing(starts) end
   if crossing then return nil, crossingMessage() end
-  for h = 2, #starts do
+  for i = 2, #starts do
+    local h = nodeRing[starts[i]]   -- hole h - 1
     local start = ordered and ringStart[h] or 0
     if start < 0 then
       local g = ringBelow[h] and nodeRing[ringBelow[h]] or 1
@@ -1150,7 +1172,7 @@ local function triangulate(fname, points, holes)
       return nil, ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1)
     end
     if start == 0 then
-      local misplaced = holeMisplaced(starts, h)
+      local misplaced = holeMisplaced(starts, i)
       if misplaced then return nil, misplaced end
     end
   end

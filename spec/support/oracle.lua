@@ -745,7 +745,8 @@ function oracle.checkCover(points, holes, pieces, convex)
   end
   addRing(points, -1)
   for _, hole in ipairs(holes) do
-    addRing(hole, oracle.winding(hole) == winding and 1 or -1)
+    local w = oracle.winding(hole)   -- nil: the hole encloses nothing and is skipped
+    if w then addRing(hole, w == winding and 1 or -1) end
   end
   for key, c in pairs(count) do
     if c ~= 0 then
@@ -976,10 +977,12 @@ end
 -- and the chains nest), and each hole lies inside the outline and outside every other hole (a
 -- vertex of it off the other ring's boundary decides: rings that do not cross keep all their
 -- other points on one side). Edges are paired only when their boxes overlap (a sweep in x).
+-- A hole enclosing nothing (fewer than 3 points, or zero area without crossing itself) is
+-- skipped: it takes nothing away.
 -- @return "valid"; "cross", i, j (rings i and j cross or overlap: 1 the outline, h + 1 hole h);
 --   "outside", h (hole h not inside the outline); "inside", h, g (hole h inside hole g);
---   "degenerate", i (ring i has fewer than 3 distinct vertices or zero area); "unknown" when a
---   place's order is not decided or a hole has every vertex on another ring
+--   "degenerate", 1 (the outline has fewer than 3 distinct vertices or zero area); "unknown"
+--   when a place's order is not decided or a hole has every vertex on another ring
 function oracle.regionCrossing(points, holes)
   holes = holes or {}
   local rings = { points }
@@ -987,12 +990,18 @@ function oracle.regionCrossing(points, holes)
     rings[h + 1] = holes[h]
   end
   local outerWinding = oracle.winding(points)
-  local xs, ys, nextOf, ringOf, first, last = {}, {}, {}, {}, {}, {}
+  local xs, ys, nextOf, ringOf, first, last, skipped = {}, {}, {}, {}, {}, {}, {}
   for r, ring in ipairs(rings) do
     local w = oracle.winding(ring)
     local rx, ry = distinctDoubles(ring)
-    if #rx < 3 or not w then
-      return "degenerate", r
+    if r > 1 and not w and #rx >= 3 and oracle.outlineCrossing(ring) == "cross" then
+      return "cross", r, r
+    end
+    if r == 1 and (#rx < 3 or not w) then
+      return "degenerate", 1
+    end
+    if not w then   -- a hole enclosing nothing: skipped
+      rx, ry, skipped[r] = {}, {}, true
     end
     local reversed = r > 1 and w == outerWinding
     local base = #xs
@@ -1107,7 +1116,7 @@ function oracle.regionCrossing(points, holes)
     return ax0 <= bx1 and bx0 <= ax1 and ay0 <= by1 and by0 <= ay1
   end
   for r = 2, #rings do
-    local inside = sideOf(r, 1)
+    local inside = skipped[r] or sideOf(r, 1)
     if inside == nil then
       undecided = true
     elseif not inside then
@@ -1116,7 +1125,7 @@ function oracle.regionCrossing(points, holes)
   end
   for r = 2, #rings do
     for g = 2, #rings do
-      if g ~= r and boxesMeet(r, g) then
+      if g ~= r and not skipped[r] and not skipped[g] and boxesMeet(r, g) then
         local inside = sideOf(r, g)
         if inside == nil then
           undecided = true
