@@ -344,17 +344,23 @@ local ringStart, ringBelow, leftRank
 
 -- Notes edge `below` (or nil) as the edge just below edge s, when s starts at its ring's
 -- leftmost place and `below` is not the ring's own (another of its edges from that place).
-local function noteBelow(s, below)
+-- Whether edge t runs along edge s where s starts (both ends of s on t's line).
+local function alongside(t, s)
+  return t and orient(sweepLeft[t], sweepRight[t], sweepLeft[s]) == 0
+    and orient(sweepLeft[t], sweepRight[t], sweepRight[s]) == 0
+end
+
+local function noteBelow(s, below, above)
   local v = sweepLeft[s]
   local r = nodeRing[v]
   if rank[v] ~= leftRank[r] then return end
   if below and nodeRing[below] == r and rank[sweepLeft[below]] == rank[v] then return end
   ringBelow[r] = below or false
-  if not below then
-    ringStart[r] = -1
-  elseif orient(sweepLeft[below], sweepRight[below], v) == 0
-    and orient(sweepLeft[below], sweepRight[below], sweepRight[s]) == 0 then
+  -- an edge along s, on either side of it in the order, leaves the order there undecided
+  if alongside(below, s) or (above and nodeRing[above] ~= r and alongside(above, s)) then
     ringStart[r] = 0
+  elseif not below then
+    ringStart[r] = -1
   else
     ringStart[r] = ((sweepLeft[below] == below) == (turn > 0)) and 1 or -1
   end
@@ -363,9 +369,9 @@ end
 -- Notes where edge s, now at place `at` of the order, lies: above the edge below it, and below
 -- the edge above it (which may start at its ring's leftmost place, where s comes in too).
 local function noteRings(s, at)
-  noteBelow(s, status[at - 1])
   local above = status[at + 1]
-  if above and rank[sweepLeft[above]] == rank[sweepLeft[s]] then noteBelow(above, s) end
+  noteBelow(s, status[at - 1], above)
+  if above and rank[sweepLeft[above]] == rank[sweepLeft[s]] then noteBelow(above, s, status[at + 2]) end
 end
 
 -- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
