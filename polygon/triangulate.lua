@@ -41,6 +41,7 @@ local capacity          -- the number of nodes a call can make, at most: the arr
 local nodeX, nodeY      -- coordinates as doubles (+ 0.0), for the predicates
 local inX, inY          -- the caller's values, copied into the output bit for bit
 local origin            -- the input vertex a node stands for (a bridge copies two of them)
+local nodeRing          -- the ring a node was made for: 1 the outline, h + 1 hole h
 local nextNode, prevNode, nodeCount
 local gone              -- gone[k]: node k has been unlinked
 local cellStart         -- the ear test's grid (see buildGrid): where cell c's entries begin
@@ -85,6 +86,23 @@ local function same(a, b)
   return nodeX[a] == nodeX[b] and nodeY[a] == nodeY[b]
 end
 
+-- The ring node k was made for: 1 the outline, h + 1 hole h.
+local crossedA, crossedB   -- nodes of the two edges found crossing (or meeting wrongly), for
+                           -- the message naming their rings
+local function ringOf(k)
+  return nodeRing[k]
+end
+
+-- The message for two rings found crossing or meeting wrongly (crossedA, crossedB).
+local function crossingMessage()
+  local r, g = ringOf(crossedA), ringOf(crossedB)
+  if r > g then r, g = g, r end
+  if g == 1 then return "edges cross" end
+  if r == g then return ("holes[%d] crosses itself"):format(g - 1) end
+  if r == 1 then return ("holes[%d] crosses the outline"):format(g - 1) end
+  return ("holes[%d] and holes[%d] cross"):format(r - 1, g - 1)
+end
+
 local function newNode(x, y, id)
   nodeCount = nodeCount + 1
   local k = nodeCount
@@ -108,13 +126,14 @@ end
 
 -- Links the vertices of a flat array into a ring, in reverse when `reversed`, skipping
 -- repeated consecutive vertices. firstId: the id of the array's first vertex. Returns a node.
-local function linkRing(points, n, firstId, reversed)
+local function linkRing(points, n, firstId, reversed, ring)
   local first, last
   for j = 1, n - 1, 2 do
     local i = reversed and n - j or j
     local x, y = points[i], points[i + 1]
     if not last or x + 0.0 ~= nodeX[last] or y + 0.0 ~= nodeY[last] then
       local k = newNode(x, y, firstId + (i - 1) / 2)
+      nodeRing[k] = ring
       if last then nextNode[last], prevNode[k] = k, last else first = k end
       last = k
     end
@@ -132,7 +151,9 @@ local function properlyCross(a, b, c, d)
   local s1, s2 = orient(a, b, c), orient(a, b, d)
   if min(max(s1, s2), -min(s1, s2)) <= 0 then return false end
   local s3, s4 = orient(c, d, a), orient(c, d, b)
-  return min(max(s3, s4), -min(s3, s4)) > 0
+  if min(max(s3, s4), -min(s3, s4)) <= 0 then return false end
+  crossedA, crossedB = a, c
+  return true
 end
 
 -- Shamos and Hoey's sweep: the edges in order along a vertical line moving right; a proper
@@ -311,10 +332,58 @@ local function besideLast(s, coming)
   return status[lastPlace - 1] == s and lastPlace - 1 or 0
 end
 
+-- Where each ring lies, read off the order at its leftmost place: the edge just below the
+-- ring's lowest edge there bounds the region the ring starts in. Every edge has the inside on
+-- one side (the holes run against the outline), so a hole starts in the polygon's inside
+-- exactly when that edge has the inside above it, and rings that do not cross keep all their
+-- other points on that side too. An edge has the inside above it (in y-up terms, as edgeOrder)
+-- when it runs rightwards and the rings turn positively, or leftwards and they turn negatively.
+-- ringStart[r]: 1 when ring r starts inside the polygon, -1 outside, 0 undecided (its lowest
+-- edge runs along the edge below: their order there is not known); ringBelow[r]: the edge below,
+-- or false for none.
+local ringStart, ringBelow, leftRank
+
+-- Notes edge `below` (or nil) as the edge just below edge s, when s starts at its ring's
+-- leftmost place and `below` is not the ring's own (another of its edges from that place).
+-- Whether edge t runs along edge s where s starts (both ends of s on t's line).
+local function alongside(t, s)
+  return t and orient(sweepLeft[t], sweepRight[t], sweepLeft[s]) == 0
+    and orient(sweepLeft[t], sweepRight[t], sweepRight[s]) == 0
+end
+
+local function noteBelow(s, below, above)
+  local v = sweepLeft[s]
+  local r = nodeRing[v]
+  if rank[v] ~= leftRank[r] then return end
+  if below and nodeRing[below] == r and rank[sweepLeft[below]] == rank[v] then return end
+  ringBelow[r] = below or false
+  -- an edge along s, on either side of it in the order, leaves the order there undecided
+  if alongside(below, s) or (above and nodeRing[above] ~= r and alongside(above, s)) then
+    ringStart[r] = 0
+  elseif not below then
+    ringStart[r] = -1
+  else
+    ringStart[r] = ((sweepLeft[below] == below) == (turn > 0)) and 1 or -1
+  end
+end
+
+-- Notes where edge s, now at place `at` of the order, lies: above the edge below it, and below
+-- the edge above it (which may start at its ring's leftmost place, where s comes in too).
+local function noteRings(s, at)
+  local above = status[at + 1]
+  noteBelow(s, status[at - 1], above)
+  if above and rank[sweepLeft[above]] == rank[sweepLeft[s]] then noteBelow(above, s, status[at + 2]) end
+end
+
 -- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
 -- order came out inconsistent (then the caller asks anyCrossing).
 local function sweep(starts)
   local events, eventCount = sweepEvents(starts)
+  ringStart, ringBelow, leftRank = {}, {}, {}
+  for i = placeCount, 1, -1 do
+    local k = placeOrder[i]
+    leftRank[nodeRing[k]] = rank[k]
+  end
   -- the order is status[bottom + 1 .. bottom + m]. On LuaJIT an edge coming in or leaving
   -- shifts the shorter side, so bottom moves, by one per event at most: starting it half the
   -- events up keeps it in the array. (A vertical line meets some 650 edges of a noisy circle
@@ -350,6 +419,7 @@ local function sweep(starts)
       lastPlace = lo
       noteTouches(sweepLeft[s], lo, -1)
       noteTouches(sweepLeft[s], lo, 1)
+      noteRings(s, lo)
       local below, above = status[lo - 1], status[lo + 1]
       if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
       if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
@@ -366,6 +436,7 @@ local function sweep(starts)
       if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
         and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
         status[lo] = t
+        noteRings(t, lo)
         i = i + 1
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
         if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
@@ -501,7 +572,15 @@ local function placesCross()
   while i <= placeCount do
     local r, last = rank[placeOrder[i]], i
     while last < placeCount and rank[placeOrder[last + 1]] == r do last = last + 1 end
-    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then return true end
+    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then
+      -- the rings meeting there: two of the nodes, or a node and an edge through the place
+      local touched = touchedAt[r]
+      crossedA, crossedB = placeOrder[i], touched and touched[1] or placeOrder[last]
+      for g = i + 1, last do
+        if ringOf(placeOrder[g]) ~= ringOf(crossedA) then crossedB = placeOrder[g] end
+      end
+      return true
+    end
     i = last + 1
   end
   return false
@@ -572,6 +651,32 @@ local function ringSide(s, x, y)
   return inside and 1 or -1
 end
 
+-- Where hole h lies, by the crossing rule from its vertices (the rings do not cross: the first
+-- vertex off another ring decides), when the sweep could not tell: a message when it is outside
+-- the polygon or inside another hole, else nil.
+local function holeMisplaced(starts, h)
+  local k, side = starts[h]
+  repeat
+    side = ringSide(starts[1], nodeX[k], nodeY[k])
+    k = nextNode[k]
+  until side ~= 0 or k == starts[h]
+  local name = nodeRing[starts[h]] - 1
+  if side < 0 then return ("holes[%d] is outside the polygon"):format(name) end
+  for g = 2, #starts do
+    if g ~= h then
+      k = starts[h]
+      repeat
+        side = ringSide(starts[g], nodeX[k], nodeY[k])
+        k = nextNode[k]
+      until side ~= 0 or k == starts[h]
+      if side > 0 then
+        return ("holes[%d] is inside holes[%d]"):format(name, nodeRing[starts[g]] - 1)
+      end
+    end
+  end
+  return nil
+end
+
 -- Whether the direction from node k to node t points strictly into the interior at k.
 local function sectorHolds(k, t)
   local a, c = prevNode[k], nextNode[k]
@@ -611,7 +716,7 @@ local function between(hx, hy, x, y, bx, by)
 end
 
 -- The node of the ring at s that the hole's leftmost node h joins: the nearest point hit by the
--- ray from h to the left is a vertex, or lies on an edge whose right end P is seen from h unless
+-- ray from h to the left is a vertex, or lies on an edge whose left end P is seen from h unless
 -- another vertex in the triangle (h, hit, P) is: the one there at the least angle from the ray
 -- (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside).
 local function bridgeTarget(s, h)
@@ -650,7 +755,9 @@ local function bridgeTarget(s, h)
   until k == s
   if vertex then return copyFacing(s, vertex, h) end
   if not lo then return nil end
-  local p = nodeX[hi] > nodeX[lo] and hi or lo
+  -- the edge's left end: mirrored Eberly (the ray goes left), P.x <= hit.x < hx, so the
+  -- triangle (h, hit, P) lies left of h and holds no part of the hole
+  local p = nodeX[hi] < nodeX[lo] and hi or lo
   local side = nodeY[p] > hy and 1 or -1   -- the side of the ray the triangle lies on
   local lx, ly, ux, uy = nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi]
   local best = p
@@ -829,6 +936,7 @@ end
 -- the slopes dx/dy of the long side t -> bottom and of the short sides t -> m and m -> bottom.
 local earA, earB, earC, boxX0, boxY0, boxX1, boxY1, boxCol0, boxCol1
 local spanX0, spanX1    -- the triangle's widened span in x over the row being visited
+local nearby = {}       -- on LuaJIT, the entries near the triangle, tested after the scan
 local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
 
 -- The columns of the cells the triangle may meet in a row: its span in x over the row's band
@@ -882,10 +990,11 @@ local function isEar(b)
   -- one loop over the entries of the rows' spans, one row after the other: a loop per row (a
   -- few entries) ran as a trace of its own, and every row left it for the interpreter
   local row, lastRow, j, last = rowOf(boxY0) - 1, rowOf(boxY1), 1, 0
+  local found = 0
   while true do
     if j > last then   -- the next row's span
       row = row + 1
-      if row > lastRow then return true end
+      if row > lastRow then break end
       local left, right = rowSpan(row)
       local base = row * gridCols + 1
       j, last = cellStart[base + left], cellStart[base + right + 1] - 1
@@ -897,12 +1006,13 @@ local function isEar(b)
       local xLong = topX + (y - topY) * longSlope
       local xShort = midX + (min(y, midY) - midY) * upperSlope + (max(y, midY) - midY) * lowerSlope
       local xNear = min(x, spanX1)
+      -- an entry passing is only noted, and tested after the scan: tested here, the exact
+      -- tests' side traces, started with the loop's many live values, aborted ("register
+      -- coalescing too complex") thousands of times on outlines with holes
       if max(spanX0 - x, x - spanX1, boxY0 - y, y - boxY1,
           abs(xNear + xNear - xLong - xShort) - abs(xLong - xShort) - spanMargin) <= 0 then
-        local k = entryNode[j]
-        if k ~= earA and k ~= earC and keepListed(k) and blocks(k, earA, earB, earC) then
-          return false
-        end
+        found = found + 1
+        nearby[found] = j
       end
       j = j + 1
     else
@@ -917,6 +1027,13 @@ local function isEar(b)
       j = j + 1
     end
   end
+  for i = 1, found do
+    local k = entryNode[nearby[i]]
+    if k ~= earA and k ~= earC and keepListed(k) and blocks(k, earA, earB, earC) then
+      return false
+    end
+  end
+  return true
 end
 
 -- Clips ears from the ring at s until it is gone, appending each triangle's three nodes to
@@ -999,12 +1116,24 @@ local function triangulate(fname, points, holes)
     error(fname .. ": " .. message, 3)
   end
   for h = 1, holes and #holes or 0 do
-    ok, message = validate(holes[h])
+    local hole = holes[h]
+    ok, message = validate(hole)
+    -- a hole of fewer than 3 points encloses nothing and is skipped (see below), but its
+    -- coordinates must still be finite numbers
+    if not ok and type(hole) == "table" and #hole % 2 == 0 and #hole < 6 then
+      ok = true
+      for i = 1, #hole do
+        local v = hole[i]
+        if type(v) ~= "number" or v ~= v or v == huge or v == -huge then
+          ok, message = false, ("points[%d] must be a finite number, got %s"):format(i, tostring(v))
+        end
+      end
+    end
     if not ok then error(("%s: holes[%d]: %s"):format(fname, h, message), 3) end
   end
   turn = areaSign(points, n)
-  if turn == 0 then return nil, "points have zero area" end
-  turn = turn > 0 and 1 or -1
+  local flat = turn == 0   -- zero area: a bow-tie's halves cancel; say so when edges cross
+  turn = turn < 0 and -1 or 1
   capacity = n / 2
   for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
   nodeX, nodeY, inX, inY = newArray(capacity), newArray(capacity), newArray(capacity), newArray(capacity)
@@ -1012,38 +1141,50 @@ local function triangulate(fname, points, holes)
   prevNode, gone = newArray(capacity), newArray(capacity)
   nodeCount = 0
   listed = nil
-  local outer = linkRing(points, n, 1, false)
+  nodeRing = newArray(capacity)
+  local outer = linkRing(points, n, 1, false, 1)
+  if flat then
+    if anyCrossing({ outer }) then return nil, "edges cross" end
+    return nil, "points have zero area"
+  end
   local starts, firstId = { outer }, n / 2 + 1
   for h = 1, holes and #holes or 0 do
     local hole = holes[h]
     local m = #hole
-    local s = areaSign(hole, m)
-    if s == 0 then return nil, ("holes[%d] has zero area"):format(h) end
-    -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
-    starts[h + 1] = linkRing(hole, m, firstId, (s > 0) == (turn > 0))
+    -- a hole enclosing nothing (fewer than 3 points, or zero area without crossing itself: a
+    -- point, a segment, a sliver folded flat) takes nothing away and is skipped, as earcut's
+    -- Steiner points and the slivers of map data come
+    local s = m >= 6 and areaSign(hole, m) or 0
+    if m >= 6 then
+      -- a hole runs against the outer ring, so that the joined ring keeps the inside on one side
+      local first = linkRing(hole, m, firstId, (s > 0) == (turn > 0), h + 1)
+      if s ~= 0 then
+        starts[#starts + 1] = first
+      elseif anyCrossing({ first }) then
+        return nil, ("holes[%d] crosses itself"):format(h)
+      end
+    end
     firstId = firstId + m / 2
   end
   local crossing = sweepCrossing(starts)
+  local ordered = crossing ~= nil   -- the sweep's order held: ringStart is known
   if crossing == nil then crossing = anyCrossing(starts) end
-  if crossing then return nil, "edges cross" end
-  for h = 2, #starts do
-    local k, side = starts[h]
-    repeat
-      side = ringSide(outer, nodeX[k], nodeY[k])
-      k = nextNode[k]
-    until side ~= 0 or k == starts[h]
-    if side < 0 then return nil, ("holes[%d] is outside the polygon"):format(h - 1) end
-    for g = 2, #starts do
-      if g ~= h then
-        k = starts[h]
-        repeat
-          side = ringSide(starts[g], nodeX[k], nodeY[k])
-          k = nextNode[k]
-        until side ~= 0 or k == starts[h]
-        if side > 0 then return nil, ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1) end
-      end
+  if crossing then return nil, crossingMessage() end
+  for i = 2, #starts do
+    local h = nodeRing[starts[i]]   -- hole h - 1
+    local start = ordered and ringStart[h] or 0
+    if start < 0 then
+      local g = ringBelow[h] and nodeRing[ringBelow[h]] or 1
+      if g == 1 then return nil, ("holes[%d] is outside the polygon"):format(h - 1) end
+      return nil, ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1)
+    end
+    if start == 0 then
+      local misplaced = holeMisplaced(starts, i)
+      if misplaced then return nil, misplaced end
     end
   end
+  ringStart, ringBelow = nil, nil
+  -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
   -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
   local lefts = {}
   for h = 2, #starts do
@@ -1069,7 +1210,8 @@ end
 -- Drops the node arrays of the last call.
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
-  sortKey, listed, shared, reflexSeen = nil, nil, nil, nil
+  sortKey, listed, shared, reflexSeen, nodeRing = nil, nil, nil, nil, nil
+  ringStart, ringBelow = nil, nil
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
 end
 

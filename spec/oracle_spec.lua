@@ -377,4 +377,47 @@ describe("oracle", function()
       assert.are.equal(-1, (oracle.depth(a, { 11, 0, 21, 0, 21, 10, 11, 10 }, true)))
     end)
   end)
+
+  describe("regionCrossing", function()
+    local SQUARE = { 0, 0, 10, 0, 10, 10, 0, 10 }
+    it("tells valid rings with holes from crossing, outside, nested and degenerate ones", function()
+      assert.are.equal("valid", oracle.regionCrossing(SQUARE, { { 1, 1, 5, 1, 5, 5 } }))
+      -- touching the outline at (0, 0), and two holes touching at (5, 5)
+      assert.are.equal("valid", oracle.regionCrossing(SQUARE, { { 0, 0, 5, 1, 5, 5 } }))
+      assert.are.equal("valid", oracle.regionCrossing(SQUARE, { { 1, 1, 5, 1, 5, 5 }, { 5, 5, 6, 5, 6, 6 } }))
+      assert.are.same({ "cross", 1, 2 }, { oracle.regionCrossing(SQUARE, { { 5, 5, 15, 5, 15, 6 } }) })
+      assert.are.same({ "outside", 1 }, { oracle.regionCrossing(SQUARE, { { 20, 0, 21, 0, 21, 1 } }) })
+      assert.are.same({ "inside", 2, 1 },
+        { oracle.regionCrossing(SQUARE, { { 1, 1, 5, 1, 5, 5 }, { 2, 1.5, 4, 1.5, 4, 3 } }) })
+      -- a triangle inscribed in another, its corners inside the other's edges: they meet wrongly
+      -- at (3, 1), (5, 3) and (3, 3) (the chains there do not nest)
+      assert.are.same({ "cross", 2, 3 },
+        { oracle.regionCrossing(SQUARE, { { 1, 1, 5, 1, 5, 5 }, { 3, 1, 5, 3, 3, 3 } }) })
+      -- holes enclosing nothing are skipped; a hole folded into a bow-tie crosses itself
+      assert.are.equal("valid", oracle.regionCrossing(SQUARE, { { 1, 1, 2, 2, 3, 3 }, { 4, 4 } }))
+      assert.are.same({ "cross", 2, 2 }, { oracle.regionCrossing(SQUARE, { { 1, 1, 3, 3, 3, 1, 1, 3 } }) })
+      assert.are.same({ "degenerate", 1 }, { oracle.regionCrossing({ 1, 1, 2, 2, 3, 3 }) })
+      -- a bow-tie outline crosses itself
+      assert.are.same({ "cross", 1, 1 }, { oracle.regionCrossing({ 0, 0, 10, 10, 10, 0, 0, 20, -10, 20, -10, 10 }) })
+    end)
+  end)
+
+  describe("checkCover", function()
+    it("takes an exact cover and catches a gap, a piece in a hole and an overlap", function()
+      local frame, window = { 0, 0, 30, 0, 30, 30, 0, 30 }, { 10, 10, 20, 10, 20, 20, 10, 20 }
+      -- the frame as four trapezoids around the window (area 4 x 200 = 800 = 900 - 100)
+      local parts = {
+        { 0, 0, 30, 0, 20, 10, 10, 10 }, { 30, 0, 30, 30, 20, 20, 20, 10 },
+        { 30, 30, 0, 30, 10, 20, 20, 20 }, { 0, 30, 0, 0, 10, 10, 10, 20 },
+      }
+      assert.is_true(oracle.checkCover(frame, { window }, parts, true))
+      assert.is_false(oracle.checkCover(frame, { window }, { parts[1], parts[2], parts[3] }))
+      -- the window's two triangles in place of the bottom trapezoid: a piece in the hole
+      local swapped = { parts[2], parts[3], parts[4], { 10, 10, 20, 10, 20, 20 }, { 10, 10, 20, 20, 10, 20 } }
+      assert.is_false(oracle.checkCover(frame, { window }, swapped))
+      -- the same area as the window, placed over the frame's left trapezoid: an overlap
+      local over = { parts[1], parts[2], parts[3], parts[4], { 0, 0, 10, 10, 0, 10 } }
+      assert.is_false(oracle.checkCover(frame, { window }, over))
+    end)
+  end)
 end)

@@ -166,7 +166,7 @@ describe("polygonTriangulate", function()
     it("returns nil and a message for a hole crossing the outline", function()
       local tris, message = triangulate(FRAME, { { 20, 10, 40, 10, 40, 20 } })
       assert.is_nil(tris)
-      assert.are.equal("edges cross", message)
+      assert.are.equal("holes[1] crosses the outline", message)
     end)
 
     it("returns nil and a message for a hole inside another hole", function()

@@ -655,6 +655,107 @@ function oracle.checkPieces(points, holes, pieces, convex)
   return true
 end
 
+--- Checks that pieces cover a polygon with optional holes exactly: oracle.checkPieces, then
+-- the boundary of the pieces taken together is the boundary of the region, edge for edge. Each
+-- edge, of a piece or of a ring, is cut at every input vertex lying inside it; every cut piece
+-- of a piece's edge counts +1 in its direction, of the outline's edges -1, of a hole's edges
+-- +1 (a hole runs against the outline), and the counts of u -> v and v -> u must cancel for
+-- every u, v. Pieces wound like the outline with this boundary add up, point by point, to the
+-- region's winding number: 1 inside, 0 outside and in the holes, so they cover it exactly.
+-- @return true, or false and what failed
+function oracle.checkCover(points, holes, pieces, convex)
+  local ok, why = oracle.checkPieces(points, holes, pieces, convex)
+  if not ok then
+    return false, why
+  end
+  holes = holes or {}
+  local winding = oracle.winding(points)
+  local vx, vy, seen = {}, {}, {}
+  local function keyOf(x, y)
+    return ("%.17g %.17g"):format(x, y)
+  end
+  local rings = { points }
+  for h = 1, #holes do
+    rings[h + 1] = holes[h]
+  end
+  for _, ring in ipairs(rings) do
+    for i = 1, #ring - 1, 2 do
+      local key = keyOf(ring[i], ring[i + 1])
+      if not seen[key] then
+        seen[key] = true
+        vx[#vx + 1], vy[#vy + 1] = ring[i], ring[i + 1]
+      end
+    end
+  end
+  local order = {}
+  for i = 1, #vx do
+    order[i] = i
+  end
+  table.sort(order, function(a, b)
+    return vx[a] < vx[b] or (vx[a] == vx[b] and vy[a] < vy[b])
+  end)
+  local count = {}
+  local function add(ax, ay, bx, by, weight)
+    local x0, x1 = math.min(ax, bx), math.max(ax, bx)
+    local y0, y1 = math.min(ay, by), math.max(ay, by)
+    local lo, hi = 1, #order + 1
+    while lo < hi do
+      local mid = math.floor((lo + hi) / 2)
+      if vx[order[mid]] < x0 then
+        lo = mid + 1
+      else
+        hi = mid
+      end
+    end
+    local cuts = { { ax, ay, 0 }, { bx, by, math.huge } }
+    for k = lo, #order do
+      local v = order[k]
+      local x, y = vx[v], vy[v]
+      if x > x1 then
+        break
+      end
+      if y >= y0 and y <= y1 and not (x == ax and y == ay) and not (x == bx and y == by)
+        and orientFiltered(ax, ay, bx, by, x, y) == 0 then
+        cuts[#cuts + 1] = { x, y, ax ~= bx and math.abs(x - ax) or math.abs(y - ay) }
+      end
+    end
+    table.sort(cuts, function(a, b)
+      return a[3] < b[3]
+    end)
+    for c = 1, #cuts - 1 do
+      local u, w = keyOf(cuts[c][1], cuts[c][2]), keyOf(cuts[c + 1][1], cuts[c + 1][2])
+      if u ~= w then
+        local key, sign = u .. ">" .. w, weight
+        if u > w then
+          key, sign = w .. ">" .. u, -weight
+        end
+        count[key] = (count[key] or 0) + sign
+      end
+    end
+  end
+  local function addRing(ring, weight)
+    local n = #ring / 2
+    for i = 1, n do
+      local j = i % n + 1
+      add(ring[2 * i - 1], ring[2 * i], ring[2 * j - 1], ring[2 * j], weight)
+    end
+  end
+  for _, piece in ipairs(pieces) do
+    addRing(piece, 1)
+  end
+  addRing(points, -1)
+  for _, hole in ipairs(holes) do
+    local w = oracle.winding(hole)   -- nil: the hole encloses nothing and is skipped
+    if w then addRing(hole, w == winding and 1 or -1) end
+  end
+  for key, c in pairs(count) do
+    if c ~= 0 then
+      return false, ("the pieces' boundary differs from the region's along %s (%d)"):format(key, c)
+    end
+  end
+  return true
+end
+
 --- The number of reflex vertices of a polygon (turning against its winding), exactly; repeated
 -- consecutive vertices are skipped.
 function oracle.reflexCount(points)
@@ -736,6 +837,100 @@ function oracle.circlesDepthAtLeast(x1, y1, r1, x2, y2, r2, a, b)
   return exact.compare(distanceSquared(new(x2), new(y2), new(x1), new(y1)), mul(s, s)) <= 0
 end
 
+-- The verdict at place (px, py) of the edges `near` (edge i runs from vertex i to nextOf[i];
+-- every edge holding the place, maybe others): "cross", "undecided" or nil (see outlineCrossing).
+local function placeVerdict(xs, ys, nextOf, near, px, py)
+  local n = #xs
+  -- entries: { target vertex, 1 leaving or -1 reaching, chain }
+  local entries = {}
+  for _, i in ipairs(near) do
+    local j = nextOf[i]
+    if xs[i] == px and ys[i] == py then
+      entries[#entries + 1] = { j, 1, i }
+    elseif xs[j] == px and ys[j] == py then
+      entries[#entries + 1] = { i, -1, j }
+    elseif oracle.onSegment(xs[i], ys[i], xs[j], ys[j], px, py) then
+      entries[#entries + 1] = { j, 1, n + i }
+      entries[#entries + 1] = { i, -1, n + i }
+    end
+  end
+  if #entries <= 2 then
+    return nil
+  end
+  -- by angle from +x about p: the upper half (y > py, or y == py and x > px) first
+  local function upper(v)
+    return ys[v] > py or (ys[v] == py and xs[v] > px)
+  end
+  local function before(u, v)
+    if upper(u[1]) ~= upper(v[1]) then
+      return upper(u[1])
+    end
+    return oracle.orient(px, py, xs[u[1]], ys[u[1]], xs[v[1]], ys[v[1]]) > 0
+  end
+  -- insertion sort: no sort with a comparator that may call equal entries unequal
+  for i = 2, #entries do
+    local e, j = entries[i], i - 1
+    while j >= 1 and before(e, entries[j]) do
+      entries[j + 1] = entries[j]
+      j = j - 1
+    end
+    entries[j + 1] = e
+  end
+  -- edges in one direction: more than one more leaving than reaching (or the other way)
+  -- crosses; one each way may lie in either order (both are tried); more are not decided
+  local pairsAt, many = {}, false
+  for i = 1, #entries do
+    local balance, alike = 0, 0
+    for j = 1, #entries do
+      if not before(entries[i], entries[j]) and not before(entries[j], entries[i]) then
+        balance, alike = balance + entries[j][2], alike + 1
+      end
+    end
+    if math.abs(balance) >= 2 then
+      return "cross"
+    end
+    many = many or alike > 2
+    if alike == 2 and i < #entries and not before(entries[i], entries[i + 1]) then
+      pairsAt[#pairsAt + 1] = i
+    end
+  end
+  local function nested(list)
+    local stack = {}
+    for i = 1, #list do
+      local e, f = list[i], list[i % #list + 1]
+      if e[2] == f[2] then
+        return false
+      end
+      if stack[#stack] == e[3] then
+        stack[#stack] = nil
+      else
+        stack[#stack + 1] = e[3]
+      end
+    end
+    return #stack == 0
+  end
+  if many then
+    return "undecided"
+  end
+  local found = false
+  for orders = 0, 2 ^ #pairsAt - 1 do
+    local list = {}
+    for i = 1, #entries do
+      list[i] = entries[i]
+    end
+    for t, i in ipairs(pairsAt) do
+      if math.floor(orders / 2 ^ (t - 1)) % 2 == 1 then
+        list[i], list[i + 1] = list[i + 1], list[i]
+      end
+    end
+    found = found or nested(list)
+  end
+  if not found then
+    return "cross"
+  end
+  return #pairsAt > 0 and "undecided" or nil
+end
+
 --- Whether a closed outline (a flat array; consecutive repeats are ignored) crosses or overlaps
 -- itself, by brute force over every pair of edges and every vertex, with exact signs:
 -- "cross" when two edges cross at a point inside both, or when, at a vertex (or a vertex lying
@@ -749,15 +944,16 @@ end
 function oracle.outlineCrossing(points)
   local xs, ys = distinctDoubles(points)
   local n = #xs
+  local nextOf, all = {}, {}
+  for i = 1, n do
+    nextOf[i], all[i] = i % n + 1, i
+  end
   local function orient(a, b, c)   -- vertex indices
     return oracle.orient(xs[a], ys[a], xs[b], ys[b], xs[c], ys[c])
   end
-  local function nextOf(i)
-    return i % n + 1
-  end
   for i = 1, n do
     for j = i + 1, n do
-      local a, b, c, d = i, nextOf(i), j, nextOf(j)
+      local a, b, c, d = i, nextOf[i], j, nextOf[j]
       if orient(a, b, c) * orient(a, b, d) < 0 and orient(c, d, a) * orient(c, d, b) < 0 then
         return "cross"
       end
@@ -765,97 +961,181 @@ function oracle.outlineCrossing(points)
   end
   local undecided = false
   for p = 1, n do
-    local px, py = xs[p], ys[p]
-    -- entries: { target vertex, 1 leaving or -1 reaching, chain }
-    local entries = {}
-    for i = 1, n do
-      local j = nextOf(i)
-      if xs[i] == px and ys[i] == py then
-        entries[#entries + 1] = { j, 1, i }
-      elseif xs[j] == px and ys[j] == py then
-        entries[#entries + 1] = { i, -1, j }
-      elseif oracle.onSegment(xs[i], ys[i], xs[j], ys[j], px, py) then
-        entries[#entries + 1] = { j, 1, n + i }
-        entries[#entries + 1] = { i, -1, n + i }
+    local verdict = placeVerdict(xs, ys, nextOf, all, xs[p], ys[p])
+    if verdict == "cross" then
+      return "cross"
+    end
+    undecided = undecided or verdict == "undecided"
+  end
+  return undecided and "unknown" or "simple"
+end
+
+--- Whether an outline with holes (flat arrays; consecutive repeats ignored) is a valid region:
+-- the outline and the holes, each hole turned to run against the outline, taken together as
+-- one set of edges, pass outlineCrossing's tests (no two edges cross at a point inside both,
+-- and at every place where vertices meet or a vertex lies inside an edge the edges alternate
+-- and the chains nest), and each hole lies inside the outline and outside every other hole (a
+-- vertex of it off the other ring's boundary decides: rings that do not cross keep all their
+-- other points on one side). Edges are paired only when their boxes overlap (a sweep in x).
+-- A hole enclosing nothing (fewer than 3 points, or zero area without crossing itself) is
+-- skipped: it takes nothing away.
+-- @return "valid"; "cross", i, j (rings i and j cross or overlap: 1 the outline, h + 1 hole h);
+--   "outside", h (hole h not inside the outline); "inside", h, g (hole h inside hole g);
+--   "degenerate", 1 (the outline has fewer than 3 distinct vertices or zero area); "unknown"
+--   when a place's order is not decided or a hole has every vertex on another ring
+function oracle.regionCrossing(points, holes)
+  holes = holes or {}
+  local rings = { points }
+  for h = 1, #holes do
+    rings[h + 1] = holes[h]
+  end
+  local outerWinding = oracle.winding(points)
+  local xs, ys, nextOf, ringOf, first, last, skipped = {}, {}, {}, {}, {}, {}, {}
+  for r, ring in ipairs(rings) do
+    local w = oracle.winding(ring)
+    local rx, ry = distinctDoubles(ring)
+    if r > 1 and not w and #rx >= 3 and oracle.outlineCrossing(ring) == "cross" then
+      return "cross", r, r
+    end
+    if r == 1 and (#rx < 3 or not w) then
+      return "degenerate", 1
+    end
+    if not w then   -- a hole enclosing nothing: skipped
+      rx, ry, skipped[r] = {}, {}, true
+    end
+    local reversed = r > 1 and w == outerWinding
+    local base = #xs
+    first[r], last[r] = base + 1, base + #rx
+    for i = 1, #rx do
+      local s = reversed and #rx + 1 - i or i
+      xs[base + i], ys[base + i], ringOf[base + i] = rx[s], ry[s], r
+      nextOf[base + i] = base + i % #rx + 1
+    end
+  end
+  local n = #xs
+  local function orient(a, b, c)   -- vertex indices
+    return orientFiltered(xs[a], ys[a], xs[b], ys[b], xs[c], ys[c])
+  end
+  -- edges by the left end of their box; each paired with the earlier ones still reaching it
+  local x0, x1, y0, y1, byLeft = {}, {}, {}, {}, {}
+  for i = 1, n do
+    local j = nextOf[i]
+    x0[i], x1[i] = math.min(xs[i], xs[j]), math.max(xs[i], xs[j])
+    y0[i], y1[i] = math.min(ys[i], ys[j]), math.max(ys[i], ys[j])
+    byLeft[i] = i
+  end
+  table.sort(byLeft, function(a, b)
+    return x0[a] < x0[b] or (x0[a] == x0[b] and a < b)
+  end)
+  local near = {}   -- near[v]: the edges whose box holds vertex v
+  for i = 1, n do
+    near[i] = {}
+  end
+  local active = {}
+  for _, e in ipairs(byLeft) do
+    local kept = {}
+    for _, f in ipairs(active) do
+      if x1[f] >= x0[e] then
+        kept[#kept + 1] = f
+        if y1[f] >= y0[e] and y1[e] >= y0[f] then
+          local a, b, c, d = e, nextOf[e], f, nextOf[f]
+          if orient(a, b, c) * orient(a, b, d) < 0 and orient(c, d, a) * orient(c, d, b) < 0 then
+            return "cross", math.min(ringOf[e], ringOf[f]), math.max(ringOf[e], ringOf[f])
+          end
+        end
       end
     end
-    if #entries > 2 then
-      -- by angle from +x about p: the upper half (y > py, or y == py and x > px) first
-      local function upper(v)
-        return ys[v] > py or (ys[v] == py and xs[v] > px)
-      end
-      local function before(u, v)
-        if upper(u[1]) ~= upper(v[1]) then
-          return upper(u[1])
-        end
-        return oracle.orient(px, py, xs[u[1]], ys[u[1]], xs[v[1]], ys[v[1]]) > 0
-      end
-      -- insertion sort: no sort with a comparator that may call equal entries unequal
-      for i = 2, #entries do
-        local e, j = entries[i], i - 1
-        while j >= 1 and before(e, entries[j]) do
-          entries[j + 1] = entries[j]
-          j = j - 1
-        end
-        entries[j + 1] = e
-      end
-      -- edges in one direction: more than one more leaving than reaching (or the other way)
-      -- crosses; one each way may lie in either order (both are tried); more are not decided
-      local pairsAt, many = {}, false
-      for i = 1, #entries do
-        local balance, alike = 0, 0
-        for j = 1, #entries do
-          if not before(entries[i], entries[j]) and not before(entries[j], entries[i]) then
-            balance, alike = balance + entries[j][2], alike + 1
-          end
-        end
-        if math.abs(balance) >= 2 then
-          return "cross"
-        end
-        many = many or alike > 2
-        if alike == 2 and i < #entries and not before(entries[i], entries[i + 1]) then
-          pairsAt[#pairsAt + 1] = i
-        end
-      end
-      local function nested(list)
-        local stack = {}
-        for i = 1, #list do
-          local e, f = list[i], list[i % #list + 1]
-          if e[2] == f[2] then
-            return false
-          end
-          if stack[#stack] == e[3] then
-            stack[#stack] = nil
-          else
-            stack[#stack + 1] = e[3]
-          end
-        end
-        return #stack == 0
-      end
-      if many then
-        undecided = true
+    kept[#kept + 1] = e
+    active = kept
+  end
+  -- the vertices in x order, to find the edges whose box holds each
+  local vs = {}
+  for i = 1, n do
+    vs[i] = i
+  end
+  table.sort(vs, function(a, b)
+    return xs[a] < xs[b] or (xs[a] == xs[b] and a < b)
+  end)
+  for e = 1, n do
+    local lo, hi = 1, n + 1   -- the first vertex with x >= x0[e]
+    while lo < hi do
+      local mid = math.floor((lo + hi) / 2)
+      if xs[vs[mid]] < x0[e] then
+        lo = mid + 1
       else
-        local found = false
-        for orders = 0, 2 ^ #pairsAt - 1 do
-          local list = {}
-          for i = 1, #entries do
-            list[i] = entries[i]
-          end
-          for t, i in ipairs(pairsAt) do
-            if math.floor(orders / 2 ^ (t - 1)) % 2 == 1 then
-              list[i], list[i + 1] = list[i + 1], list[i]
-            end
-          end
-          found = found or nested(list)
-        end
-        if not found then
-          return "cross"
-        end
-        undecided = undecided or #pairsAt > 0
+        hi = mid
+      end
+    end
+    for k = lo, n do
+      local v = vs[k]
+      if xs[v] > x1[e] then
+        break
+      end
+      if ys[v] >= y0[e] and ys[v] <= y1[e] then
+        local list = near[v]
+        list[#list + 1] = e
       end
     end
   end
-  return undecided and "unknown" or "simple"
+  local undecided, done = false, {}
+  for v = 1, n do
+    local key = ("%.17g %.17g"):format(xs[v], ys[v])
+    if not done[key] then
+      done[key] = true
+      local verdict = placeVerdict(xs, ys, nextOf, near[v], xs[v], ys[v])
+      if verdict == "cross" then
+        local lowest, highest = math.huge, -math.huge
+        for _, e in ipairs(near[v]) do
+          if oracle.onSegment(xs[e], ys[e], xs[nextOf[e]], ys[nextOf[e]], xs[v], ys[v]) then
+            lowest, highest = math.min(lowest, ringOf[e]), math.max(highest, ringOf[e])
+          end
+        end
+        return "cross", lowest, highest
+      end
+      undecided = undecided or verdict == "undecided"
+    end
+  end
+  -- where the rings lie against each other: a vertex of ring r off ring g's boundary
+  local function sideOf(r, g)   -- true inside g, false outside, nil: every vertex on g
+    for v = first[r], last[r] do
+      if not oracle.onBoundary(rings[g], xs[v], ys[v]) then
+        return oracle.contains(rings[g], xs[v], ys[v])
+      end
+    end
+    return nil
+  end
+  local function boxesMeet(r, g)
+    local ax0, ay0, ax1, ay1 = math.huge, math.huge, -math.huge, -math.huge
+    local bx0, by0, bx1, by1 = math.huge, math.huge, -math.huge, -math.huge
+    for v = first[r], last[r] do
+      ax0, ax1, ay0, ay1 = math.min(ax0, xs[v]), math.max(ax1, xs[v]), math.min(ay0, ys[v]), math.max(ay1, ys[v])
+    end
+    for v = first[g], last[g] do
+      bx0, bx1, by0, by1 = math.min(bx0, xs[v]), math.max(bx1, xs[v]), math.min(by0, ys[v]), math.max(by1, ys[v])
+    end
+    return ax0 <= bx1 and bx0 <= ax1 and ay0 <= by1 and by0 <= ay1
+  end
+  for r = 2, #rings do
+    local inside = skipped[r] or sideOf(r, 1)
+    if inside == nil then
+      undecided = true
+    elseif not inside then
+      return "outside", r - 1
+    end
+  end
+  for r = 2, #rings do
+    for g = 2, #rings do
+      if g ~= r and not skipped[r] and not skipped[g] and boxesMeet(r, g) then
+        local inside = sideOf(r, g)
+        if inside == nil then
+          undecided = true
+        elseif inside then
+          return "inside", r - 1, g - 1
+        end
+      end
+    end
+  end
+  return undecided and "unknown" or "valid"
 end
 
 return oracle

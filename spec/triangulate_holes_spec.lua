@@ -1,0 +1,76 @@
+-- polygonTriangulate and polygonConvexParts on random outlines with random holes (issue 28):
+-- triangles with a small hole, star-shaped outlines with a few small holes, some snapped onto
+-- a vertex of the outline or of another hole, and tile maps with their enclosed gaps, at
+-- offsets up to 1e9 + 0.375 (spec/support/holes.lua). The independent oracle decides each
+-- case's validity exactly (oracle.regionCrossing) and checks every answer (oracle.checkCover:
+-- input vertices, winding, no overlap, and the pieces' boundary is the region's, so they cover
+-- the outline minus the holes exactly). Each interpreter runs its own range of seeds: together
+-- the five cover 11,200 different cases (LuaJIT fewer: compiling the oracle's and the library's
+-- many paths makes it the slowest of the five here).
+
+local polygon = require "polygon"
+local oracle = require "oracle"
+local prng = require "prng"
+local holes = require "holes"
+
+local triangulate, convexParts = polygon.polygonTriangulate, polygon.polygonConvexParts
+
+local JIT = rawget(_G, "jit") ~= nil
+local CASES = JIT and 1200 or 2500   -- this interpreter's share
+
+-- The interpreter's own range of seeds: LuaJIT, then Lua 5.1 to 5.4 (apart by more than CASES).
+local function firstSeed()
+  local index = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
+    ["Lua 5.4"] = 4 })[_VERSION] or 5
+  return 280000 + index * 3000
+end
+
+-- What the message must name for each kind of invalid input.
+local EXPECTED = {
+  cross = { "cross" },
+  outside = { "outside" },
+  inside = { "inside" },
+  degenerate = { "zero area", "cross" },
+}
+
+local function describeCase(points, list)
+  local parts = {}
+  for h, hole in ipairs(list) do parts[h] = "{" .. table.concat(hole, ",") .. "}" end
+  return "{" .. table.concat(points, ",") .. "}, {" .. table.concat(parts, ",") .. "}"
+end
+
+describe("polygonTriangulate and polygonConvexParts with holes", function()
+  describe("when given random outlines with random holes", function()
+    it("cover every valid one exactly and refuse every invalid one, naming the trouble", function()
+      local seen = {}
+      local first = firstSeed()
+      for seed = first, first + CASES - 1 do
+        local points, list, kind = holes.case(prng.new(seed))
+        local verdict = oracle.regionCrossing(points, list)
+        seen[verdict] = (seen[verdict] or 0) + 1
+        seen[kind] = (seen[kind] or 0) + 1
+        local tris, message = triangulate(points, list)
+        local parts, partsMessage = convexParts(points, list)
+        local where = ("seed %d (%s, %s): %s"):format(seed, kind, verdict, describeCase(points, list))
+        if verdict == "valid" or (verdict == "unknown" and tris) then
+          assert(tris, where .. " refused: " .. tostring(message))
+          local ok, why = oracle.checkCover(points, list, tris)
+          assert(ok, where .. " triangles: " .. tostring(why))
+          assert(parts, where .. " parts refused: " .. tostring(partsMessage))
+          ok, why = oracle.checkCover(points, list, parts, true)
+          assert(ok, where .. " parts: " .. tostring(why))
+        elseif verdict ~= "unknown" then
+          assert(tris == nil and parts == nil, where .. " accepted")
+          assert(message == partsMessage, where)
+          local named = false
+          for _, word in ipairs(EXPECTED[verdict]) do named = named or message:find(word) ~= nil end
+          assert(named, where .. " message: " .. message)
+        end
+      end
+      -- the cases are of every kind, most of them valid, and invalid ones of each sort came up
+      assert.is_true(seen.valid > CASES / 2, tostring(seen.valid))
+      assert.is_true(seen.cross > CASES / 20 and seen.outside > CASES / 50, tostring(seen.cross))
+      assert.is_true(seen.triangle > CASES / 5 and seen.star > CASES / 3 and seen.tiles > CASES / 10)
+    end)
+  end)
+end)
