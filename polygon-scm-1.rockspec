@@ -31,6 +31,7 @@ build = {
     ["polygon.circle"] = "polygon/circle.lua",
     ["polygon.object"] = "polygon/object.lua",
     ["polygon.convex"] = "polygon/convex.lua",
+    ["polygon.sweep"] = "polygon/sweep.lua",
     ["polygon.triangulate"] = "polygon/triangulate.lua",
     ["polygon.views"] = "polygon/views.lua",
     ["polygon.faces"] = "polygon/faces.lua",

@@ -1,0 +1,653 @@
+-- polygon/sweep.lua: whether the rings of a polygon with holes are a valid input for the
+-- triangulation (no two edges cross, no ring overlaps another, every hole inside the outline and
+-- outside the other holes), by a sweep over the node rings that polygon/triangulate.lua builds,
+-- and the exact orientation test over those nodes that both files use. Every decision is one of
+-- kernel's exact signs.
+
+local _PACKAGE = (...):match("^(.+)%.[^%.]+")
+local kernel = require(_PACKAGE .. ".kernel")
+
+local abs, huge, min, max = math.abs, math.huge, math.min, math.max
+local floor, sort = math.floor, table.sort
+local CROSS_BOUND, crossExact, JIT = kernel.CROSS_BOUND, kernel.crossExact, kernel.JIT
+local cross = kernel.cross
+
+local M = {}
+
+-- The node arrays of the triangulation under way, bound by polygon/triangulate.lua at the start
+-- of each call (see M.bind) and dropped at its end. They are upvalues here, as there, so the hot
+-- loops of both files read them as cheaply: a table of state would cost a lookup per read.
+local nodeX, nodeY      -- coordinates as doubles, for the predicates
+local nextNode, prevNode
+local nodeRing          -- the ring a node was made for: 1 the outline, h + 1 hole h
+local capacity          -- the number of nodes the call can make, at most
+local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
+
+-- An empty table with room for `size` array entries: LuaJIT's table.new, {} elsewhere. The
+-- node arrays are filled in order up to tens of thousands of entries; grown one entry at a
+-- time, each is copied at every doubling and leaves its old parts as garbage.
+local newArray = function() return {} end
+do
+  local found, tableNew = pcall(require, "table.new")
+  if found then newArray = function(size) return tableNew(size, 0) end end
+end
+-- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
+local sortKey
+local function bySortKey(a, b) return sortKey[a] < sortKey[b] end
+local function leftmostFirst(a, b)
+  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
+end
+
+-- A number with the sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the
+-- interior side of the directed edge a -> b of a ring wound like the outer one. Only its sign
+-- means anything.
+local function orient(a, b, c)
+  local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
+  -- c at b is common (edges meeting at a vertex): 0 at once, as the filter would go exact
+  if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
+  -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
+  -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
+  -- too complex"), as did branches taken half the time
+  local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
+  local s = l - r
+  local e = CROSS_BOUND * abs(l + r)
+  -- one test of |s|, not one per sign: a branch taken for half the nodes (convex or reflex)
+  -- made side traces that aborted until LuaJIT flushed all its traces
+  if abs(s) < e or s ~= s then   -- also when l and r differ in sign and s is 0: exact, rare
+    s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
+  end
+  return s * turn
+end
+
+local function same(a, b)
+  return nodeX[a] == nodeX[b] and nodeY[a] == nodeY[b]
+end
+
+-- Binds the node arrays of a triangulation (nil to drop them).
+function M.bind(x, y, nextN, prevN, ring, cap, sign)
+  nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn = x, y, nextN, prevN, ring, cap, sign
+end
+
+
+-- The ring node k was made for: 1 the outline, h + 1 hole h.
+local crossedA, crossedB   -- nodes of the two edges found crossing (or meeting wrongly), for
+                           -- the message naming their rings
+local function ringOf(k)
+  return nodeRing[k]
+end
+
+-- The message for two rings found crossing or meeting wrongly (crossedA, crossedB).
+local function crossingMessage()
+  local r, g = ringOf(crossedA), ringOf(crossedB)
+  if r > g then r, g = g, r end
+  if g == 1 then return "edges cross" end
+  if r == g then return ("holes[%d] crosses itself"):format(g - 1) end
+  if r == 1 then return ("holes[%d] crosses the outline"):format(g - 1) end
+  return ("holes[%d] and holes[%d] cross"):format(r - 1, g - 1)
+end
+
+-- Whether segments a-b and c-d cross at one point inside both (a proper crossing): c and d
+-- strictly on opposite sides of a-b, and a and b of c-d. Each side test is one comparison,
+-- min(max(s1, s2), -min(s1, s2)) > 0, rarely true: sign tests that went both ways made LuaJIT
+-- grow side traces in the sweep until its machine-code area ran out.
+local function properlyCross(a, b, c, d)
+  local s1, s2 = orient(a, b, c), orient(a, b, d)
+  if min(max(s1, s2), -min(s1, s2)) <= 0 then return false end
+  local s3, s4 = orient(c, d, a), orient(c, d, b)
+  if min(max(s3, s4), -min(s3, s4)) <= 0 then return false end
+  crossedA, crossedB = a, c
+  return true
+end
+
+-- Shamos and Hoey's sweep: the edges in order along a vertical line moving right; a proper
+-- crossing shows up between two edges next to each other in that order before the line reaches
+-- it, so each edge is tested only against its neighbours when it comes in and when it leaves.
+-- Edge k runs from node k to nextNode[k]; sweepLeft[k] and sweepRight[k] are its ends in (x, y)
+-- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
+-- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces);
+-- the order along the line is a sorted array, searched by halving. (A skip list, which spares
+-- the array's shifts, made LuaJIT grow traces until its machine-code area ran out.)
+local sweepLeft, sweepRight
+local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
+local placeOrder, placeCount   -- the nodes in (x, y) order (see sortPlaces), and their count
+
+-- > 0 when edge s lies above edge t where the line meets both (in y-up terms), < 0 below, 0 for
+-- edges in line: the later left end tested against the other edge, then its right end.
+local function edgeOrder(s, t)
+  local flip = 1
+  if rank[sweepLeft[s]] < rank[sweepLeft[t]] then s, t, flip = t, s, -1 end
+  local a, b = sweepLeft[t], sweepRight[t]
+  local side = orient(a, b, sweepLeft[s])
+  if side == 0 then side = orient(a, b, sweepRight[s]) end
+  return side * turn * flip
+end
+
+local BUCKET_RUN = 24   -- a bucket holding more nodes than this is sorted by table.sort
+                        -- (many vertices on one vertical line), fewer by insertion
+
+-- The nodes of the rings at `starts` in (x, y) order, and their count: counted into as many
+-- buckets as nodes by x (the bucket is monotone in x), then each bucket sorted. Sets rank.
+local function sortPlaces(starts)
+  local x0, x1, count = huge, -huge, 0
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      x0, x1, count = min(x0, nodeX[k]), max(x1, nodeX[k]), count + 1
+      k = nextNode[k]
+    until k == s
+  end
+  local scale = count / (x1 - x0)   -- x1 > x0: the outer ring has area
+  local bucketOf, first = newArray(capacity), newArray(count + 1)
+  for b = 1, count + 1 do first[b] = 0 end
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local b = min(floor((nodeX[k] - x0) * scale), count - 1) + 1
+      bucketOf[k] = b
+      first[b] = first[b] + 1
+      k = nextNode[k]
+    until k == s
+  end
+  local at = 1   -- first[b]: where bucket b starts in the order; then where its next node goes
+  for b = 1, count + 1 do first[b], at = at, at + first[b] end
+  local order, fill = newArray(count), newArray(count)
+  for b = 1, count do fill[b] = first[b] end
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local b = bucketOf[k]
+      order[fill[b]] = k
+      fill[b] = fill[b] + 1
+      k = nextNode[k]
+    until k == s
+  end
+  for b = 1, count do
+    local lo, hi = first[b], first[b + 1] - 1
+    if hi - lo >= BUCKET_RUN then
+      local run = {}
+      for i = lo, hi do run[i - lo + 1] = order[i] end
+      sort(run, leftmostFirst)
+      for i = lo, hi do order[i] = run[i - lo + 1] end
+    else
+      for i = lo + 1, hi do
+        local k, j = order[i], i - 1
+        while j >= lo and leftmostFirst(k, order[j]) do order[j + 1] = order[j]; j = j - 1 end
+        order[j + 1] = k
+      end
+    end
+  end
+  rank = newArray(capacity)
+  local place = 0
+  for i = 1, count do
+    local k = order[i]
+    if i == 1 or not same(k, order[i - 1]) then place = place + 1 end
+    rank[k] = place
+  end
+  placeOrder, placeCount = order, count
+  return order, count
+end
+
+-- The events in order: by place, and at one place every edge leaving before any coming in.
+local function sweepEvents(starts)
+  local order, count = sortPlaces(starts)
+  sweepLeft, sweepRight = newArray(capacity), newArray(capacity)
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local q = nextNode[k]
+      if rank[k] < rank[q] then sweepLeft[k], sweepRight[k] = k, q else sweepLeft[k], sweepRight[k] = q, k end
+      k = q
+    until k == s
+  end
+  local events, e = newArray(2 * count), 0
+  local i = 1
+  while i <= count do
+    local last = i   -- the nodes at one place are order[i..last]
+    while last < count and rank[order[last + 1]] == rank[order[i]] do last = last + 1 end
+    for g = i, last do
+      local v = order[g]
+      local p = prevNode[v]
+      if sweepRight[p] == v then e = e + 1; events[e] = -p end
+      if sweepRight[v] == v then e = e + 1; events[e] = -v end
+    end
+    for g = i, last do
+      local v = order[g]
+      local p = prevNode[v]
+      if sweepLeft[p] == v then e = e + 1; events[e] = p end
+      if sweepLeft[v] == v then e = e + 1; events[e] = v end
+    end
+    i = last + 1
+  end
+  return events, e
+end
+
+local status, lastPlace   -- the edges in order along the line; where the last event's edge was
+local touchedAt         -- touchedAt[r]: the edges whose inside holds the place of rank r, or nil
+
+-- Notes the edges next to place `from` of the order, going `step` (-1 or 1), that hold node p:
+-- a run of edges through p's place, each ending there or holding it inside (noted in
+-- touchedAt, for placesCross). An edge holding p inside lies next to an edge ending at p, or
+-- next to another edge through p, when an edge ending at p comes in or leaves.
+local function noteTouches(p, from, step)
+  local px, py = nodeX[p], nodeY[p]
+  local j = from + step
+  local f = status[j]
+  while f do
+    local q = nextNode[f]
+    if orient(f, q, p) ~= 0 or px < min(nodeX[f], nodeX[q]) or px > max(nodeX[f], nodeX[q])
+      or py < min(nodeY[f], nodeY[q]) or py > max(nodeY[f], nodeY[q]) then
+      return
+    end
+    if not same(p, f) and not same(p, q) then
+      local r = rank[p]
+      local list = touchedAt[r] or {}
+      touchedAt[r] = list
+      local known = false
+      for g = 1, #list do known = known or list[g] == f end
+      if not known then list[#list + 1] = f end
+    end
+    j = j + step
+    f = status[j]
+  end
+end
+
+-- Where edge s goes or is, when next to the last event's edge, or 0: most vertices of an
+-- outline that are not passed by an edge coming in where another leaves (see sweep) start two
+-- edges or end two, one event after the other, next to each other along the line. An edge
+-- coming in goes beside the edge that came in last from the same vertex when two tests vouch
+-- for it (as for an edge taking another's place); an edge leaving is found by identity. Spares
+-- most searches of a noisy circle, whose order holds hundreds of edges.
+local function besideLast(s, coming)
+  local t = status[lastPlace]
+  if coming then
+    if not t or rank[sweepLeft[t]] ~= rank[sweepLeft[s]] then return 0 end
+    if edgeOrder(s, t) > 0 then
+      local above = status[lastPlace + 1]
+      return (not above or edgeOrder(s, above) <= 0) and lastPlace + 1 or 0
+    end
+    local below = status[lastPlace - 1]
+    return (not below or edgeOrder(s, below) > 0) and lastPlace or 0
+  end
+  if t == s then return lastPlace end
+  return status[lastPlace - 1] == s and lastPlace - 1 or 0
+end
+
+-- Where each ring lies, read off the order at its leftmost place: the edge just below the
+-- ring's lowest edge there bounds the region the ring starts in. Every edge has the inside on
+-- one side (the holes run against the outline), so a hole starts in the polygon's inside
+-- exactly when that edge has the inside above it, and rings that do not cross keep all their
+-- other points on that side too. An edge has the inside above it (in y-up terms, as edgeOrder)
+-- when it runs rightwards and the rings turn positively, or leftwards and they turn negatively.
+-- ringStart[r]: 1 when ring r starts inside the polygon, -1 outside, 0 undecided (its lowest
+-- edge runs along the edge below: their order there is not known); ringBelow[r]: the edge below,
+-- or false for none.
+local ringStart, ringBelow, leftRank
+
+-- Notes edge `below` (or nil) as the edge just below edge s, when s starts at its ring's
+-- leftmost place and `below` is not the ring's own (another of its edges from that place).
+-- Whether edge t runs along edge s where s starts (both ends of s on t's line).
+local function alongside(t, s)
+  return t and orient(sweepLeft[t], sweepRight[t], sweepLeft[s]) == 0
+    and orient(sweepLeft[t], sweepRight[t], sweepRight[s]) == 0
+end
+
+local function noteBelow(s, below, above)
+  local v = sweepLeft[s]
+  local r = nodeRing[v]
+  if rank[v] ~= leftRank[r] then return end
+  if below and nodeRing[below] == r and rank[sweepLeft[below]] == rank[v] then return end
+  ringBelow[r] = below or false
+  -- an edge along s, on either side of it in the order, leaves the order there undecided
+  if alongside(below, s) or (above and nodeRing[above] ~= r and alongside(above, s)) then
+    ringStart[r] = 0
+  elseif not below then
+    ringStart[r] = -1
+  else
+    ringStart[r] = ((sweepLeft[below] == below) == (turn > 0)) and 1 or -1
+  end
+end
+
+-- Notes where edge s, now at place `at` of the order, lies: above the edge below it, and below
+-- the edge above it (which may start at its ring's leftmost place, where s comes in too).
+local function noteRings(s, at)
+  local above = status[at + 1]
+  noteBelow(s, status[at - 1], above)
+  if above and rank[sweepLeft[above]] == rank[sweepLeft[s]] then noteBelow(above, s, status[at + 2]) end
+end
+
+-- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
+-- order came out inconsistent (then the caller asks anyCrossing).
+local function sweep(starts)
+  local events, eventCount = sweepEvents(starts)
+  ringStart, ringBelow, leftRank = {}, {}, {}
+  for i = placeCount, 1, -1 do
+    local k = placeOrder[i]
+    leftRank[nodeRing[k]] = rank[k]
+  end
+  -- the order is status[bottom + 1 .. bottom + m]. On LuaJIT an edge coming in or leaving
+  -- shifts the shorter side, so bottom moves, by one per event at most: starting it half the
+  -- events up keeps it in the array. (A vertical line meets some 650 edges of a noisy circle
+  -- of 10,000 vertices: the shorter side moves 200 entries a vertex where one side moved 440.)
+  local m, bottom = 0, JIT and eventCount or 0
+  status, touchedAt = newArray(2 * eventCount + 2), {}
+  lastPlace = bottom + 1
+  local i = 1
+  while i <= eventCount do
+    local e = events[i]
+    local s = e > 0 and e or -e
+    local lo = besideLast(s, e > 0)
+    if lo == 0 then   -- the first place whose edge does not lie below s
+      local hi
+      lo, hi = bottom + 1, bottom + m + 1
+      while lo < hi do
+        local mid = (lo + hi - (lo + hi) % 2) / 2
+        if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
+      end
+    end
+    if e > 0 then
+      if not JIT then   -- on PUC Lua table.insert's C loop is faster than a loop in Lua
+        table.insert(status, lo, s)
+      elseif lo - bottom - 1 < bottom + m + 1 - lo then   -- fewer entries below: shift those down
+        for j = bottom + 1, lo - 1 do status[j - 1] = status[j] end
+        bottom, lo = bottom - 1, lo - 1
+        status[lo] = s
+      else
+        for j = bottom + m, lo, -1 do status[j + 1] = status[j] end
+        status[lo] = s
+      end
+      m = m + 1
+      lastPlace = lo
+      noteTouches(sweepLeft[s], lo, -1)
+      noteTouches(sweepLeft[s], lo, 1)
+      noteRings(s, lo)
+      local below, above = status[lo - 1], status[lo + 1]
+      if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
+      if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
+    else
+      while lo <= bottom + m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
+      if status[lo] ~= s then return nil end
+      lastPlace = lo
+      noteTouches(sweepRight[s], lo, -1)
+      noteTouches(sweepRight[s], lo, 1)
+      local below, above = status[lo - 1], status[lo + 1]
+      -- an edge coming in where s leaves (a vertex along the outline) most often takes its
+      -- place: two tests vouch for it, and the list is not shifted twice
+      local t = events[i + 1]
+      if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
+        and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
+        status[lo] = t
+        noteRings(t, lo)
+        i = i + 1
+        if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
+        if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
+      else
+        if not JIT then   -- as for table.insert above (on LuaJIT the loop is faster)
+          table.remove(status, lo)
+        elseif lo - bottom - 1 < bottom + m - lo then   -- the entries below s move up
+          for j = lo, bottom + 2, -1 do status[j] = status[j - 1] end
+          status[bottom + 1] = nil
+          bottom = bottom + 1
+          lastPlace = lo + 1   -- as when the entries above move down: the two ends are at
+        else                   -- lastPlace - 1 and lastPlace
+          for j = lo, bottom + m - 1 do status[j] = status[j + 1] end
+          status[bottom + m] = nil
+        end
+        m = m - 1
+        if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
+          return true
+        end
+      end
+    end
+    i = i + 1
+  end
+  return false
+end
+
+-- Where several vertices meet, or a vertex lies inside an edge, the outline may cross or
+-- overlap itself without two edges crossing properly (the sweep's test). Around such a place
+-- each vertex is a chain: an edge coming in (from its node's predecessor) and one going out
+-- (to its successor); an edge holding the place inside is a chain too. Sorted by angle, the
+-- edges must alternate, in, out, in, out: crossing an edge changes the winding number by one,
+-- up for one kind and down for the other, so two of a kind in a row make a sector covered
+-- twice (or wound the wrong way). And no two chains may interleave (the in-out pairs must nest
+-- like brackets): chains that interleave cross there, whatever is done near the place. Edges
+-- in one direction overlap along it: crossing them all changes the winding number by those
+-- leaving less those reaching, which must be -1, 0 or 1 (two edges leaving in one direction,
+-- none reaching: the region between them is inside one and outside the other); past that
+-- their order across the direction is not known there (a slit, a bridge, a spike along an
+-- edge): one edge each way may go in either order (each is tried), more leave the place
+-- untested. An entry is 2k for the edge from node k to its
+-- successor, 2k + 1 for the edge from its predecessor; an edge f holding the place inside is
+-- chain k = capacity + f, its ends f (before) and f's successor (after).
+local placeX, placeY        -- the place being tested, for byAngle
+local function entryTarget(entry)
+  local k = (entry - entry % 2) / 2
+  if k > capacity then
+    local f = k - capacity
+    return entry % 2 == 0 and nextNode[f] or f
+  end
+  return entry % 2 == 0 and nextNode[k] or prevNode[k]
+end
+-- Whether the entry u's edge comes before v's by angle about the place, from the +x axis
+-- (exact: the side of the x axis, then the sign of a cross product).
+local function byAngle(u, v)
+  local a, b = entryTarget(u), entryTarget(v)
+  local ax, ay, bx, by = nodeX[a], nodeY[a], nodeX[b], nodeY[b]
+  local lowerA = ay < placeY or (ay == placeY and ax < placeX)
+  local lowerB = by < placeY or (by == placeY and bx < placeX)
+  if lowerA ~= lowerB then return lowerB end
+  return cross(placeX, placeY, ax, ay, placeX, placeY, bx, by) > 0
+end
+
+-- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
+-- `touched` holding it inside (or nil), cross or overlap there (see above).
+local TIED_PAIRS = 4      -- pairs of edges along one another (both ways) at a place, at most,
+                        -- whose 2^pairs orders are tried; past that the place is not tested
+
+-- Whether entries[1..count], sorted by angle, alternate in and out and nest like brackets.
+local function alternateAndNest(entries, count)
+  local open, depth = {}, 0   -- the chains' pairs, as brackets
+  for j = 1, count do
+    local u = entries[j]
+    if u % 2 == entries[j % count + 1] % 2 then return false end   -- two of a kind in a row
+    local chain = (u - u % 2) / 2
+    if depth > 0 and open[depth] == chain then
+      open[depth] = nil
+      depth = depth - 1
+    else
+      depth = depth + 1
+      open[depth] = chain
+    end
+  end
+  return depth == 0
+end
+
+local function chainsCross(first, last, touched)
+  local entries, count = {}, 0
+  for g = first, last do
+    local k = placeOrder[g]
+    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
+    count = count + 2
+  end
+  for g = 1, touched and #touched or 0 do
+    local k = capacity + touched[g]
+    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
+    count = count + 2
+  end
+  placeX, placeY = nodeX[placeOrder[first]], nodeY[placeOrder[first]]
+  sort(entries, byAngle)
+  local at, tied = 1, {}
+  while at <= count do   -- the runs of edges in one direction: count those leaving, reaching
+    local u, runEnd, balance = entries[at], at, 0
+    while runEnd < count and not byAngle(u, entries[runEnd + 1]) do runEnd = runEnd + 1 end
+    for j = at, runEnd do balance = balance + (entries[j] % 2 == 0 and 1 or -1) end
+    if balance > 1 or balance < -1 then return true end
+    if runEnd > at + 1 then return false end   -- three or more: not decided here
+    if runEnd == at + 1 then tied[#tied + 1] = at end   -- one each way: either order
+    at = runEnd + 1
+  end
+  if #tied > TIED_PAIRS then return false end
+  for orders = 0, 2 ^ #tied - 1 do   -- bit t of orders: swap the t-th tied pair
+    local swapped = orders
+    for t = 1, #tied do
+      local j = tied[t]
+      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
+      swapped = (swapped - swapped % 2) / 2
+    end
+    if alternateAndNest(entries, count) then return false end
+    swapped = orders
+    for t = 1, #tied do
+      local j = tied[t]
+      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
+      swapped = (swapped - swapped % 2) / 2
+    end
+  end
+  return true
+end
+
+-- Whether the chains cross or overlap at some place where several vertices meet, or where a
+-- vertex lies inside an edge.
+local function placesCross()
+  local i = 1
+  while i <= placeCount do
+    local r, last = rank[placeOrder[i]], i
+    while last < placeCount and rank[placeOrder[last + 1]] == r do last = last + 1 end
+    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then
+      -- the rings meeting there: two of the nodes, or a node and an edge through the place
+      local touched = touchedAt[r]
+      crossedA, crossedB = placeOrder[i], touched and touched[1] or placeOrder[last]
+      for g = i + 1, last do
+        if ringOf(placeOrder[g]) ~= ringOf(crossedA) then crossedB = placeOrder[g] end
+      end
+      return true
+    end
+    i = last + 1
+  end
+  return false
+end
+
+local function sweepCrossing(starts)
+  local crossing = sweep(starts)
+  if crossing == false and placesCross() then crossing = true end
+  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt = nil, nil, nil, nil, nil, nil
+  return crossing
+end
+
+-- The same answer by a plainer sweep, should sweepCrossing find its order inconsistent: the
+-- edges sorted by their left end, each compared with the earlier ones still reaching it.
+local function anyCrossing(starts)
+  local edges, left = {}, {}
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat
+      local q = nextNode[k]
+      edges[#edges + 1] = k
+      left[k] = min(nodeX[k], nodeX[q])
+      k = q
+    until k == s
+  end
+  sortKey = left
+  sort(edges, bySortKey)
+  local active, count = {}, 0
+  for e = 1, #edges do
+    local a = edges[e]
+    local b = nextNode[a]
+    local x0 = left[a]
+    local y0, y1 = min(nodeY[a], nodeY[b]), max(nodeY[a], nodeY[b])
+    local j = 1
+    while j <= count do
+      local c = active[j]
+      local d = nextNode[c]
+      if max(nodeX[c], nodeX[d]) < x0 then   -- ends before this edge begins: drop it
+        active[j] = active[count]; active[count] = nil; count = count - 1
+      else
+        if max(nodeY[c], nodeY[d]) >= y0 and min(nodeY[c], nodeY[d]) <= y1
+          and properlyCross(a, b, c, d) then
+          return true
+        end
+        j = j + 1
+      end
+    end
+    count = count + 1; active[count] = a
+  end
+  return false
+end
+
+-- -1, 0 or 1: where (x, y) lies against the ring at node s (outside, on it, strictly inside),
+-- by the crossing rule with the exact side test and an exact test for the boundary.
+local function ringSide(s, x, y)
+  local inside = false
+  local k = s
+  repeat
+    local q = nextNode[k]
+    local x1, y1, x2, y2 = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+    local c = cross(x1, y1, x2, y2, x1, y1, x, y)
+    if c == 0 and min(x1, x2) <= x and x <= max(x1, x2) and min(y1, y2) <= y and y <= max(y1, y2) then
+      return 0
+    end
+    if (y1 > y) ~= (y2 > y) and (y2 > y1) == (c > 0) then inside = not inside end
+    k = q
+  until k == s
+  return inside and 1 or -1
+end
+
+-- Where hole h lies, by the crossing rule from its vertices (the rings do not cross: the first
+-- vertex off another ring decides), when the sweep could not tell: a message when it is outside
+-- the polygon or inside another hole, else nil.
+local function holeMisplaced(starts, h)
+  local k, side = starts[h]
+  repeat
+    side = ringSide(starts[1], nodeX[k], nodeY[k])
+    k = nextNode[k]
+  until side ~= 0 or k == starts[h]
+  local name = nodeRing[starts[h]] - 1
+  if side < 0 then return ("holes[%d] is outside the polygon"):format(name) end
+  for g = 2, #starts do
+    if g ~= h then
+      k = starts[h]
+      repeat
+        side = ringSide(starts[g], nodeX[k], nodeY[k])
+        k = nextNode[k]
+      until side ~= 0 or k == starts[h]
+      if side > 0 then
+        return ("holes[%d] is inside holes[%d]"):format(name, nodeRing[starts[g]] - 1)
+      end
+    end
+  end
+  return nil
+end
+
+-- nil when the rings at starts (starts[1] the outline, then the holes with area) are a valid
+-- input, else the message naming the trouble: which rings cross, or a hole outside the polygon
+-- or inside another hole.
+local function trouble(starts)
+  local crossing = sweepCrossing(starts)
+  local ordered = crossing ~= nil   -- the sweep's order held: ringStart is known
+  if crossing == nil then crossing = anyCrossing(starts) end
+  if crossing then return crossingMessage() end
+  for i = 2, #starts do
+    local h = nodeRing[starts[i]]   -- hole h - 1
+    local start = ordered and ringStart[h] or 0
+    if start < 0 then
+      local g = ringBelow[h] and nodeRing[ringBelow[h]] or 1
+      if g == 1 then return ("holes[%d] is outside the polygon"):format(h - 1) end
+      return ("holes[%d] is inside holes[%d]"):format(h - 1, g - 1)
+    end
+    if start == 0 then
+      local misplaced = holeMisplaced(starts, i)
+      if misplaced then return misplaced end
+    end
+  end
+  return nil
+end
+
+function M.ringsTrouble(starts)
+  local message = trouble(starts)
+  ringStart, ringBelow, leftRank = nil, nil, nil
+  return message
+end
+
+M.anyCrossing = anyCrossing
+M.orient, M.same, M.leftmostFirst, M.newArray = orient, same, leftmostFirst, newArray
+
+return M
