@@ -325,6 +325,13 @@ local function blocks(k, a, b, c)
   if s3 < 0 then return false end
   if s1 > 0 and s2 > 0 and s3 > 0 then return true end
   if strict and s3 == 0 and not same(k, a) and not same(k, c) then return true end
+  -- an edge of another node running along a side of the triangle the same way: it has the
+  -- triangle's side as its inside too, which cutting the ear off would leave behind (two cuts
+  -- meeting along one diagonal both ways, at pinch points, leave such an edge)
+  local q = nextNode[k]
+  if (same(k, c) and same(q, a)) or (same(k, a) and same(q, b)) or (same(k, b) and same(q, c) and k ~= b) then
+    return true
+  end
   for side = 1, 2 do
     local t = side == 1 and prevNode[k] or nextNode[k]
     if same(k, a) then

@@ -1,0 +1,169 @@
+-- Triangulation with holes against earcut (issue 28): earcut's fixtures with holes, tile maps
+-- with 100+ holes and hole-free outlines of 100 to 10,000 vertices, polygonTriangulate's exact
+-- validity check included. One table, side by side: LuaJIT and Lua 5.4, each warm (the best of
+-- three rounds of 0.2 s after a warm-up of 0.5 s, in milliseconds per call) and on its first call
+-- in a fresh process (what a level load pays), against earcut in node likewise.
+-- From the repository root: `luajit bench/holes.lua` (node and `npm install --prefix /tmp/earcut
+-- earcut` for the earcut columns; EARCUT=file names another copy). Each measurement runs in its
+-- own process: `lua5.4 bench/holes.lua warm tiles-40` or `... first tiles-40`.
+package.path = "./?.lua;./spec/support/?.lua;" .. package.path
+local polygon = require "polygon"
+local prng = require "prng"
+local shapes = require "shapes"
+local tiles = require "tiles"
+local earcut = require "earcut"
+
+-- A tile map of size x size tiles, each filled with probability 0.85, its border filled: the
+-- largest outline and its enclosed gaps as holes.
+local function tileMap(size)
+  local rng = prng.new(size)
+  local set = tiles.random(rng, size, size, 0.85)
+  for c = 1, size do set[1][c], set[size][c], set[c][1], set[c][size] = true, true, true, true end
+  local best
+  for _, shape in ipairs(tiles.shapes(set, 10, 0, 0)) do
+    if not best or #shape[1] > #best[1] then best = shape end
+  end
+  return best[1], best[2]
+end
+
+-- name, and a function making points, holes
+local CASES = {
+  { "eberly-6", function() return earcut.load("eberly-6") end },
+  { "rain", function() return earcut.load("rain") end },
+  { "self-tangent-4", function() return earcut.load("self-tangent-4") end },
+  { "touching-holes6", function() return earcut.load("touching-holes6") end },
+  { "water2", function() return earcut.load("water2") end },
+  { "water-huge3", function() return earcut.load("water-huge3") end },
+  { "tiles-8", function() return tileMap(8) end },
+  { "tiles-40", function() return tileMap(40) end },
+  { "tiles-120", function() return tileMap(120) end },
+  { "noisy-circle-100", function() return shapes.noisyCircle(100, prng.new(100)), {} end },
+  { "noisy-circle-1000", function() return shapes.noisyCircle(1000, prng.new(1000)), {} end },
+  { "noisy-circle-10000", function() return shapes.noisyCircle(10000, prng.new(10000)), {} end },
+}
+
+local function find(name)
+  for _, case in ipairs(CASES) do
+    if case[1] == name then return case[2]() end
+  end
+  error("no case " .. tostring(name))
+end
+
+local function vertexCount(points, holes)
+  local n = #points / 2
+  for _, hole in ipairs(holes) do n = n + #hole / 2 end
+  return n
+end
+
+local mode, name = arg[1], arg[2]
+if mode == "first" then
+  local points, holes = find(name)
+  local start = os.clock()
+  local tris, message = polygon.polygonTriangulate(points, holes)
+  local ms = (os.clock() - start) * 1e3
+  print(name, ms, tris and #tris or -1, message or "")
+  return
+elseif mode == "warm" then
+  local points, holes = find(name)
+  local best, tris, message = math.huge, nil, nil
+  for round = 0, 3 do
+    local runs, start = 0, os.clock()
+    repeat
+      tris, message = polygon.polygonTriangulate(points, holes)
+      runs = runs + 1
+    until runs >= 2 and os.clock() - start > (round == 0 and 0.5 or 0.2)
+    if round > 0 then best = math.min(best, (os.clock() - start) / runs * 1e3) end
+  end
+  print(name, best, tris and #tris or -1, message or "")   -- the count: the checksum
+  return
+elseif mode == "export" then
+  -- earcut's input: the vertices flat, the holes as the indices where they start
+  for _, case in ipairs(CASES) do
+    local points, holes = case[2]()
+    local flat, starts = {}, {}
+    for i, v in ipairs(points) do flat[i] = ("%.17g"):format(v) end
+    for _, hole in ipairs(holes) do
+      starts[#starts + 1] = #flat / 2
+      for _, v in ipairs(hole) do flat[#flat + 1] = ("%.17g"):format(v) end
+    end
+    local f = assert(io.open(("%s/%s.json"):format(name, case[1]), "w"))
+    f:write('{"vertices":[', table.concat(flat, ","), '],"holes":[', table.concat(starts, ","), "]}\n")
+    f:close()
+  end
+  return
+end
+
+local function run(command)
+  local pipe = assert(io.popen(command))
+  local fields = {}
+  for word in pipe:read("*a"):gmatch("%S+") do fields[#fields + 1] = word end
+  pipe:close()
+  return fields
+end
+local function shell(command)
+  local ok = os.execute(command)
+  return ok == true or ok == 0
+end
+local function have(command) return shell("command -v " .. command .. " >/dev/null 2>&1") end
+
+local dir = os.tmpname()
+os.remove(dir)
+assert(shell("mkdir -p " .. dir))
+local self = arg[-1] or "lua"
+assert(shell(("%s bench/holes.lua export %s"):format(self, dir)))
+local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
+local warmEarcut = {}
+local withEarcut = have("node") and io.open(earcutFile) ~= nil
+if withEarcut then
+  local pipe = assert(io.popen(("EARCUT=%s node bench/earcut-holes.js %s"):format(earcutFile, dir)))
+  for line in pipe:lines() do
+    local n, ms = line:match("^(%S+) %S+ (%S+)")
+    if n then warmEarcut[n] = tonumber(ms) end
+  end
+  pipe:close()
+else
+  print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
+end
+
+local luas = {}
+for _, lua in ipairs({ "luajit", "lua5.4" }) do if have(lua) then luas[#luas + 1] = lua end end
+print(("polygonTriangulate (its exact validity check included) against earcut %s; milliseconds per call")
+  :format(withEarcut and "in node" or "(skipped)"))
+print("warm: the best of three rounds after a warm-up; first: the first call in a fresh process")
+print(("%-19s %6s %5s | %9s %9s %6s | %9s %9s %6s | %9s %9s"):format("input", "n", "holes",
+  "LuaJIT", "earcut", "ratio", "LuaJIT 1st", "earcut 1st", "ratio", "Lua 5.4", "5.4 1st"))
+local perVertex = {}
+for _, case in ipairs(CASES) do
+  local name = case[1]
+  local points, holes = case[2]()
+  local n = vertexCount(points, holes)
+  local cells = {}
+  for _, lua in ipairs(luas) do
+    local warm = run(("%s bench/holes.lua warm %s"):format(lua, name))
+    local first = run(("%s bench/holes.lua first %s"):format(lua, name))
+    if tonumber(warm[3]) < 0 then warm[2] = "refused" end
+    cells[lua] = { tonumber(warm[2]), tonumber(first[2]) }
+  end
+  local ew, ef = warmEarcut[name], nil
+  if withEarcut then
+    ef = tonumber(run(("EARCUT=%s node bench/earcut-holes.js %s %s"):format(earcutFile, dir, name))[3])
+  end
+  local jit, puc = cells.luajit or {}, cells["lua5.4"] or {}
+  local function ms(v) return v and ("%.3f"):format(v) or "-" end
+  local function ratio(a, b) return a and b and b > 0 and ("%.1fx"):format(a / b) or "-" end
+  print(("%-19s %6d %5d | %9s %9s %6s | %9s %9s %6s | %9s %9s"):format(name, n, #holes,
+    ms(jit[1]), ms(ew), ratio(jit[1], ew), ms(jit[2]), ms(ef), ratio(jit[2], ef), ms(puc[1]), ms(puc[2])))
+  perVertex[name] = { jit[1] and jit[1] / n, puc[1] and puc[1] / n }
+end
+local function growth(small, large, which)
+  local a, b = perVertex[small] and perVertex[small][which], perVertex[large] and perVertex[large][which]
+  return a and b and ("%.2f"):format(b / a) or "-"
+end
+print()
+print("cost per vertex, the largest input's over the smallest's (target: at most 2)")
+print(("%-40s %8s %8s"):format("", "LuaJIT", "Lua 5.4"))
+print(("%-40s %8s %8s"):format("noisy-circle-10000 / noisy-circle-100", growth("noisy-circle-100", "noisy-circle-10000", 1),
+  growth("noisy-circle-100", "noisy-circle-10000", 2)))
+print(("%-40s %8s %8s"):format("tiles-120 / tiles-8 (holes included)", growth("tiles-8", "tiles-120", 1),
+  growth("tiles-8", "tiles-120", 2)))
+shell("rm -rf " .. dir)
