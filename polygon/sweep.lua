@@ -22,6 +22,7 @@ local nextNode, prevNode
 local nodeRing          -- the ring a node was made for: 1 the outline, h + 1 hole h
 local capacity          -- the number of nodes the call can make, at most
 local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
+local twin              -- filled by the sweep: twin[k], the next node at node k's place
 
 -- An empty table with room for `size` array entries: LuaJIT's table.new, {} elsewhere. The
 -- node arrays are filled in order up to tens of thousands of entries; grown one entry at a
@@ -43,8 +44,6 @@ end
 -- means anything.
 local function orient(a, b, c)
   local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
-  -- c at b is common (edges meeting at a vertex): 0 at once, as the filter would go exact
-  if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
   -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
   -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
   -- too complex"), as did branches taken half the time
@@ -54,18 +53,26 @@ local function orient(a, b, c)
   -- one test of |s|, not one per sign: a branch taken for half the nodes (convex or reflex)
   -- made side traces that aborted until LuaJIT flushed all its traces
   if abs(s) < e or s ~= s then   -- also when l and r differ in sign and s is 0: exact, rare
+    -- c at a or b (edges meeting at a vertex, common) gives 0 at once. Tested only here: its
+    -- four comparisons in the common path, each going either way on shared coordinates, grew
+    -- a side trace per caller until LuaJIT's machine-code area ran out and it flushed
+    if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
     s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
   end
   return s * turn
 end
 
+-- Whether nodes a and b lie at one place. One comparison, not two: with `and`, the second
+-- went either way on shared coordinates (tile maps, map data) and grew a side trace in every
+-- caller. (A difference of doubles is 0 only for equal ones: subnormals, not flushed to zero.)
 local function same(a, b)
-  return nodeX[a] == nodeX[b] and nodeY[a] == nodeY[b]
+  return abs(nodeX[a] - nodeX[b]) + abs(nodeY[a] - nodeY[b]) == 0
 end
 
 -- Binds the node arrays of a triangulation (nil to drop them).
-function M.bind(x, y, nextN, prevN, ring, cap, sign)
+function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn = x, y, nextN, prevN, ring, cap, sign
+  twin = twins
 end
 
 
@@ -529,6 +536,16 @@ end
 local function sweepCrossing(starts)
   local crossing = sweep(starts)
   if crossing == false and placesCross() then crossing = true end
+  -- the nodes at one place, linked in a circle (twin[k]: the next; k alone: itself), for the
+  -- bridges to find a pinch point's nodes without walking the ring
+  local i = 1
+  while i <= placeCount do
+    local first, last = i, i
+    while last < placeCount and rank[placeOrder[last + 1]] == rank[placeOrder[first]] do last = last + 1 end
+    for g = first, last - 1 do twin[placeOrder[g]] = placeOrder[g + 1] end
+    twin[placeOrder[last]] = placeOrder[first]
+    i = last + 1
+  end
   sweepLeft, sweepRight, rank, status, placeOrder, touchedAt = nil, nil, nil, nil, nil, nil
   return crossing
 end

@@ -39,6 +39,8 @@ local origin            -- the input vertex a node stands for (a bridge copies t
 local nodeRing          -- the ring a node was made for: 1 the outline, h + 1 hole h
 local nextNode, prevNode, nodeCount
 local gone              -- gone[k]: node k has been unlinked
+local twin              -- twin[k]: the next node at node k's place, in a circle (see sweep.lua)
+local joined            -- joined[r]: ring r is part of the ring being clipped (1, the outline)
 local cellStart         -- the ear test's grid (see buildGrid): where cell c's entries begin
 local entryX, entryY, entryNode   -- its entries, cell by cell: a node's place and number
 local entryOf           -- entryOf[k]: node k's entry
@@ -97,15 +99,29 @@ local function sectorHolds(k, t)
   return s1 > 0 or s2 > 0
 end
 
--- Among the nodes of the ring at s at the place of node m, one whose interior holds the
--- direction towards node t (a pinch point has several; each sees a different side).
-local function copyFacing(s, m, t)
-  local k, found = s, m
+-- Whether the direction from node k to node w lies strictly inside the wedge from the
+-- direction k -> u to the direction k -> t, turning towards the interior side of k -> u.
+local function wedgeHolds(k, u, t, w)
+  if orient(k, u, t) > 0 then return orient(k, u, w) > 0 and orient(k, w, t) > 0 end
+  return orient(k, u, w) > 0 or orient(k, w, t) > 0
+end
+
+-- Among the nodes of the joined ring at the place of node m, the one to bridge from towards
+-- node t: its sector holds the direction, and where several do (a pinch point where joined
+-- rings pass through one place, their sectors nested), the one whose outgoing edge comes last
+-- before the direction, turning towards the inside: the bridge then goes into the gap between
+-- that edge and the next ring's. The place's nodes come from the sweep (twin), those of holes
+-- yet to join left out.
+local function copyFacing(m, t)
+  local k, found = m, nil
   repeat
-    if same(k, m) and sectorHolds(k, t) then found = k end
-    k = nextNode[k]
-  until k == s
-  return found
+    if not gone[k] and joined[nodeRing[k]] and sectorHolds(k, t)
+      and (not found or wedgeHolds(k, nextNode[found], t, nextNode[k])) then
+      found = k
+    end
+    k = twin[k]
+  until k == m
+  return found or m
 end
 
 -- Which of two edges, each crossing the line y = hy strictly between its ends, meets it further
@@ -127,45 +143,106 @@ local function between(hx, hy, x, y, bx, by)
   return (hy < y) == (y < by) and y ~= hy
 end
 
--- The node of the ring at s that the hole's leftmost node h joins: the nearest point hit by the
--- ray from h to the left is a vertex, or lies on an edge whose left end P is seen from h unless
--- another vertex in the triangle (h, hit, P) is: the one there at the least angle from the ray
--- (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside).
-local function bridgeTarget(s, h)
+-- The bridges' index: horizontal bands over the rings' box, each listing the nodes whose edge
+-- (k -> nextNode[k]) reaches into it, so that a hole's ray and triangle look at the edges near
+-- their rows instead of walking the whole joined ring for each hole (which made tile maps with a
+-- thousand holes quadratic). A node is listed again when its edge changes (at a bridge); an
+-- entry whose node is gone, not yet joined, or whose edge no longer reaches the band, is passed
+-- over. Entries are singly linked from their band's head.
+local BAND_LOAD = 4     -- entries per node at most; fewer bands when the edges span more
+local bandHead, bandNext, bandNode, bandCount, bandTop, bandScale, bandEntries
+
+-- The band of a y coordinate: monotone in y (the scaling rounds monotonically), so an edge's
+-- ends' bands bound the bands of every point of it.
+local function bandOf(y)
+  return min(max(floor((y - bandTop) * bandScale), 0), bandCount - 1) + 1
+end
+
+local function listEdge(k)
+  local y0, y1 = nodeY[k], nodeY[nextNode[k]]
+  if y0 > y1 then y0, y1 = y1, y0 end
+  for b = bandOf(y0), bandOf(y1) do
+    bandEntries = bandEntries + 1
+    bandNode[bandEntries], bandNext[bandEntries], bandHead[b] = k, bandHead[b], bandEntries
+  end
+end
+
+-- Builds the index over the rings at starts: about sqrt(n) bands, halved until the entries
+-- are at most BAND_LOAD per node (edges as tall as the box make every band list them).
+local function buildBands(starts)
+  local top, bottom, n = huge, -huge, 0
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat top, bottom, n = min(top, nodeY[k]), max(bottom, nodeY[k]), n + 1; k = nextNode[k] until k == s
+  end
+  bandTop, bandCount = top, max(floor(sqrt(n)), 1)
+  while true do
+    bandScale = bottom > top and bandCount / (bottom - top) or 0
+    local total = 0
+    for _, s in ipairs(starts) do
+      local k = s
+      repeat
+        local y0, y1 = nodeY[k], nodeY[nextNode[k]]
+        total = total + abs(bandOf(y1) - bandOf(y0)) + 1
+        k = nextNode[k]
+      until k == s
+    end
+    if total <= BAND_LOAD * n or bandCount == 1 then break end
+    bandCount = max(floor(bandCount / 2), 1)
+  end
+  bandHead, bandEntries = {}, 0
+  bandNext, bandNode = newArray(BAND_LOAD * capacity), newArray(BAND_LOAD * capacity)
+  for b = 1, bandCount do bandHead[b] = 0 end
+  for _, s in ipairs(starts) do
+    local k = s
+    repeat listEdge(k); k = nextNode[k] until k == s
+  end
+end
+
+-- The node of the joined ring that the hole's leftmost node h joins: the nearest point hit by
+-- the ray from h to the left is a vertex, or lies on an edge whose left end P is seen from h
+-- unless another vertex in the triangle (h, hit, P) is: the one there at the least angle from
+-- the ray (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside). The
+-- holes join from left to right, so no hole yet to join reaches left of h: the joined ring's
+-- edges in h's band are all the ray can meet.
+local function bridgeTarget(h)
   local hx, hy = nodeX[h], nodeY[h]
   local vertex, lo, hi   -- the nearest hit so far: a vertex, or an edge lo -> hi (upwards in y)
-  local k = s
-  repeat
-    local q = nextNode[k]
-    local x, y = nodeX[k], nodeY[k]
-    if y == hy and x <= hx then
-      if x == hx then return copyFacing(s, k, nextNode[h]) end   -- the hole touches the ring here
-      if lo then
-        if cross(nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi], nodeX[lo], nodeY[lo], x, y) <= 0 then
-          vertex, lo, hi = k, nil, nil
-        end
-      elseif not vertex or x > nodeX[vertex] then
-        vertex = k
-      end
-    end
-    local qy = nodeY[q]
-    if (y < hy and qy > hy) or (y > hy and qy < hy) then
-      local a, b = k, q
-      if y > qy then a, b = q, k end
-      local ax, ay = nodeX[a], nodeY[a]
-      if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy) <= 0 then   -- meets the ray
-        if vertex then
-          if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
-            vertex, lo, hi = nil, a, b
+  local e = bandHead[bandOf(hy)]
+  while e > 0 do
+    local k = bandNode[e]
+    e = bandNext[e]
+    if not gone[k] and joined[nodeRing[k]] then
+      local q = nextNode[k]
+      local x, y = nodeX[k], nodeY[k]
+      if y == hy and x <= hx then
+        if x == hx then return copyFacing(k, nextNode[h]) end   -- the hole touches the ring here
+        if lo then
+          if cross(nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi], nodeX[lo], nodeY[lo], x, y) <= 0 then
+            vertex, lo, hi = k, nil, nil
           end
-        elseif not lo or rightOf(lo, hi, a, b) > 0 then
-          lo, hi = a, b
+        elseif not vertex or x > nodeX[vertex] then
+          vertex = k
+        end
+      end
+      local qy = nodeY[q]
+      if (y < hy and qy > hy) or (y > hy and qy < hy) then
+        local a, b = k, q
+        if y > qy then a, b = q, k end
+        local ax, ay = nodeX[a], nodeY[a]
+        if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy) <= 0 then   -- meets the ray
+          if vertex then
+            if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
+              vertex, lo, hi = nil, a, b
+            end
+          elseif not lo or rightOf(lo, hi, a, b) > 0 then
+            lo, hi = a, b
+          end
         end
       end
     end
-    k = q
-  until k == s
-  if vertex then return copyFacing(s, vertex, h) end
+  end
+  if vertex then return copyFacing(vertex, h) end
   if not lo then return nil end
   -- the edge's left end: mirrored Eberly (the ray goes left), P.x <= hit.x < hx, so the
   -- triangle (h, hit, P) lies left of h and holds no part of the hole
@@ -173,19 +250,27 @@ local function bridgeTarget(s, h)
   local side = nodeY[p] > hy and 1 or -1   -- the side of the ray the triangle lies on
   local lx, ly, ux, uy = nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi]
   local best = p
-  k = s
-  repeat
-    local x, y = nodeX[k], nodeY[k]
-    if (y - hy) * side > 0 and cross(lx, ly, ux, uy, lx, ly, x, y) <= 0 then
-      local c = cross(hx, hy, nodeX[p], nodeY[p], hx, hy, x, y) * side
-      if c >= 0 then   -- inside the triangle (h, hit, P) or on its sides
-        local t = cross(hx, hy, x, y, hx, hy, nodeX[best], nodeY[best]) * side
-        if t < 0 or (t == 0 and between(hx, hy, x, y, nodeX[best], nodeY[best])) then best = k end
+  -- the triangle's nodes lie in the bands from h's to P's; each node is listed in its own
+  -- edge's bands, which hold its place
+  local b0, b1 = bandOf(hy), bandOf(nodeY[p])
+  if b0 > b1 then b0, b1 = b1, b0 end
+  for b = b0, b1 do
+    e = bandHead[b]
+    while e > 0 do
+      local k = bandNode[e]
+      e = bandNext[e]
+      local x, y = nodeX[k], nodeY[k]
+      if not gone[k] and joined[nodeRing[k]] and (y - hy) * side > 0
+        and cross(lx, ly, ux, uy, lx, ly, x, y) <= 0 then
+        local c = cross(hx, hy, nodeX[p], nodeY[p], hx, hy, x, y) * side
+        if c >= 0 then   -- inside the triangle (h, hit, P) or on its sides
+          local t = cross(hx, hy, x, y, hx, hy, nodeX[best], nodeY[best]) * side
+          if t < 0 or (t == 0 and between(hx, hy, x, y, nodeX[best], nodeY[best])) then best = k end
+        end
       end
     end
-    k = nextNode[k]
-  until k == s
-  return copyFacing(s, best, h)
+  end
+  return copyFacing(best, h)
 end
 
 -- Joins the hole ring at node h to the ring at node m: m -> h ... around the hole ... h' -> m'
@@ -193,12 +278,20 @@ end
 -- repeated vertices, removed at once.
 local function bridge(m, h)
   local m2, h2 = newNode(inX[m], inY[m], origin[m]), newNode(inX[h], inY[h], origin[h])
+  nodeRing[m2], nodeRing[h2] = nodeRing[m], nodeRing[h]
+  twin[m2], twin[m] = twin[m], m2   -- the copies join their places' circles
+  twin[h2], twin[h] = twin[h], h2
+  joined[nodeRing[h]] = true
   local mn, hp = nextNode[m], prevNode[h]
   nextNode[m], prevNode[h] = h, m
   nextNode[hp], prevNode[h2] = h2, hp
   nextNode[h2], prevNode[m2] = m2, h2
   nextNode[m2], prevNode[mn] = mn, m2
   if same(m, h) then unlink(h); unlink(m2) end
+  -- the edges that changed: m -> h, h' -> m' and m' -> (m's old successor), as they are now
+  if not gone[m] then listEdge(m) end
+  if not gone[m2] then listEdge(m2) end
+  if not gone[h2] then listEdge(h2) end
 end
 
 -- The ear test's index: a grid of square cells over the ring's box, each holding entries for the
@@ -560,8 +653,8 @@ local function triangulate(fname, points, holes)
   prevNode, gone = newArray(capacity), newArray(capacity)
   nodeCount = 0
   listed = nil
-  nodeRing = newArray(capacity)
-  sweep.bind(nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn)
+  nodeRing, twin, joined = newArray(capacity), newArray(capacity), { true }
+  sweep.bind(nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn, twin)
   local outer = linkRing(points, n, 1, false, 1)
   if flat then
     if anyCrossing({ outer }) then return nil, "edges cross" end
@@ -599,8 +692,9 @@ local function triangulate(fname, points, holes)
     lefts[#lefts + 1] = best
   end
   sort(lefts, leftmostFirst)
+  if #lefts > 0 then buildBands(starts) end
   for i = 1, #lefts do
-    local m = bridgeTarget(outer, lefts[i])
+    local m = bridgeTarget(lefts[i])
     if not m then return nil, "a hole is outside the polygon" end
     bridge(m, lefts[i])
   end
@@ -614,7 +708,8 @@ end
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
   listed, shared, reflexSeen, nodeRing = nil, nil, nil, nil
-  sweep.bind(nil, nil, nil, nil, nil, nil, nil)
+  twin, joined, bandHead, bandNext, bandNode = nil, nil, nil, nil, nil
+  sweep.bind(nil, nil, nil, nil, nil, nil, nil, nil)
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
 end
 
