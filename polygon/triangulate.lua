@@ -615,9 +615,23 @@ local function clipEars(s, tris)
   return true
 end
 
+-- LuaJIT's room for compiled code, made at the first triangulation: the ear clipping and the
+-- sweep compile to some 1,500 traces and 1.2 MB of machine code on outlines with a thousand
+-- holes, past LuaJIT 2.1's defaults (1,000 traces, 512 KB), and a full area makes LuaJIT throw
+-- away every trace, the game's too, and compile again, each call: 5 to 40 times slower (see
+-- bench/NOTES.md). Raised to 6,000 and 8 MB, which LuaJIT fills only as it needs; a game that
+-- wants other limits sets them with jit.opt.start after its first triangulation.
+local roomMade = not JIT
+local function makeRoom()
+  roomMade = true
+  local jit = rawget(_G, "jit")
+  if jit and jit.opt and jit.opt.start then pcall(jit.opt.start, "maxtrace=6000", "maxmcode=8192") end
+end
+
 -- Checks the arguments and triangulates: the triangles' nodes (a flat array, three per
 -- triangle), or nil and a message. Leaves the node arrays set for the caller to read.
 local function triangulate(fname, points, holes)
+  if not roomMade then makeRoom() end
   local n = checkPoints(points, fname, "points", 4)
   if holes ~= nil and type(holes) ~= "table" then
     error(("%s: holes must be a table, got %s"):format(fname, type(holes)), 3)
