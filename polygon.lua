@@ -251,12 +251,14 @@ polygon.polygonCircleCollideV = collide.polygonCircleCollideV
 -- @function polygonTriangulate
 -- @tparam table points flat array, either winding
 -- @tparam[opt] {table,...} holes flat arrays inside the polygon, either winding; a hole may
--- touch the outline or another hole at a vertex
+-- touch the outline or another hole at a vertex; a hole enclosing nothing (fewer than 3
+-- points, or zero area without crossing itself) is skipped
 -- @treturn[1] {table,...} triangles `{x1, y1, x2, y2, x3, y3}`, copies of input vertices, each
 -- wound like `points`, none of zero area
 -- @return[2] nil
--- @treturn[2] string why: fewer than 3 points, zero area, crossing edges, a hole outside the
--- polygon or inside another hole
+-- @treturn[2] string why: fewer than 3 points, zero area, crossing edges (a bow-tie too), the
+-- rings that cross (`holes[2] crosses the outline`), a hole outside the polygon or inside
+-- another hole
 -- @raise when points or a hole is not an array of finite numbers
 polygon.polygonTriangulate = triangulate.polygonTriangulate
 

@@ -45,6 +45,17 @@ if [ "$quick" != 1 ]; then
   done
 fi
 
+# Outlines with holes against earcut: its fixtures, tile maps with 100+ holes, noisy outlines of
+# 100 to 10,000 vertices, warm and first call, LuaJIT and Lua 5.4 side by side (bench/holes.lua;
+# full run only: about a minute and a half).
+holes=$sections/holes.md
+if [ "$quick" != 1 ] && command -v luajit >/dev/null 2>&1; then
+  { echo "## Outlines with holes against earcut: \`luajit bench/holes.lua\`"; echo; echo '```'
+    luajit bench/holes.lua; rc=$?
+    echo '```'; echo; } >> "$holes"
+  [ "$rc" = 0 ] || { echo "bench.sh: bench/holes.lua failed" >&2; status=1; }
+fi
+
 # Lists of convex parts against the convex pair calls they need (bench/compound.lua), each ratio
 # in 16 processes (full run only: about a minute on LuaJIT, two on Lua 5.4).
 compound=$sections/compound.md
@@ -75,6 +86,7 @@ fi
   echo
   for lua in $ran; do [ -f "$sections/$lua.md" ] && cat "$sections/$lua.md"; done
   [ -f "$concave" ] && cat "$concave"
+  [ -f "$holes" ] && cat "$holes"
   [ -f "$compound" ] && cat "$compound"
 } > "$out/RESULTS.md"
 rm -rf "$sections"

@@ -132,28 +132,31 @@ print(("polygonTriangulate (its exact validity check included) against earcut %s
 print("warm: the best of three rounds after a warm-up; first: the first call in a fresh process")
 print(("%-19s %6s %5s | %9s %9s %6s | %9s %9s %6s | %9s %9s"):format("input", "n", "holes",
   "LuaJIT", "earcut", "ratio", "LuaJIT 1st", "earcut 1st", "ratio", "Lua 5.4", "5.4 1st"))
-local perVertex = {}
+local perVertex, failed = {}, false
 for _, case in ipairs(CASES) do
-  local name = case[1]
+  local label = case[1]
   local points, holes = case[2]()
   local n = vertexCount(points, holes)
   local cells = {}
   for _, lua in ipairs(luas) do
-    local warm = run(("%s bench/holes.lua warm %s"):format(lua, name))
-    local first = run(("%s bench/holes.lua first %s"):format(lua, name))
-    if tonumber(warm[3]) < 0 then warm[2] = "refused" end
+    local warm = run(("%s bench/holes.lua warm %s"):format(lua, label))
+    local first = run(("%s bench/holes.lua first %s"):format(lua, label))
+    if not tonumber(warm[3]) or tonumber(warm[3]) < 0 then   -- a refusal or an error: no time
+      io.stderr:write(("bench/holes.lua: %s on %s: %s\n"):format(label, lua, table.concat(warm, " ")))
+      failed, warm[2] = true, nil
+    end
     cells[lua] = { tonumber(warm[2]), tonumber(first[2]) }
   end
-  local ew, ef = warmEarcut[name], nil
+  local ew, ef = warmEarcut[label], nil
   if withEarcut then
-    ef = tonumber(run(("EARCUT=%s node bench/earcut-holes.js %s %s"):format(earcutFile, dir, name))[3])
+    ef = tonumber(run(("EARCUT=%s node bench/earcut-holes.js %s %s"):format(earcutFile, dir, label))[3])
   end
   local jit, puc = cells.luajit or {}, cells["lua5.4"] or {}
   local function ms(v) return v and ("%.3f"):format(v) or "-" end
   local function ratio(a, b) return a and b and b > 0 and ("%.1fx"):format(a / b) or "-" end
-  print(("%-19s %6d %5d | %9s %9s %6s | %9s %9s %6s | %9s %9s"):format(name, n, #holes,
+  print(("%-19s %6d %5d | %9s %9s %6s | %9s %9s %6s | %9s %9s"):format(label, n, #holes,
     ms(jit[1]), ms(ew), ratio(jit[1], ew), ms(jit[2]), ms(ef), ratio(jit[2], ef), ms(puc[1]), ms(puc[2])))
-  perVertex[name] = { jit[1] and jit[1] / n, puc[1] and puc[1] / n }
+  perVertex[label] = { jit[1] and jit[1] / n, puc[1] and puc[1] / n }
 end
 local function growth(small, large, which)
   local a, b = perVertex[small] and perVertex[small][which], perVertex[large] and perVertex[large][which]
@@ -162,8 +165,9 @@ end
 print()
 print("cost per vertex, the largest input's over the smallest's (target: at most 2)")
 print(("%-40s %8s %8s"):format("", "LuaJIT", "Lua 5.4"))
-print(("%-40s %8s %8s"):format("noisy-circle-10000 / noisy-circle-100", growth("noisy-circle-100", "noisy-circle-10000", 1),
-  growth("noisy-circle-100", "noisy-circle-10000", 2)))
+print(("%-40s %8s %8s"):format("noisy-circle-10000 / noisy-circle-100",
+  growth("noisy-circle-100", "noisy-circle-10000", 1), growth("noisy-circle-100", "noisy-circle-10000", 2)))
 print(("%-40s %8s %8s"):format("tiles-120 / tiles-8 (holes included)", growth("tiles-8", "tiles-120", 1),
   growth("tiles-8", "tiles-120", 2)))
 shell("rm -rf " .. dir)
+if failed then os.exit(1) end
