@@ -398,7 +398,8 @@ describe("oracle", function()
       assert.are.same({ "cross", 2, 2 }, { oracle.regionCrossing(SQUARE, { { 1, 1, 3, 3, 3, 1, 1, 3 } }) })
       assert.are.same({ "degenerate", 1 }, { oracle.regionCrossing({ 1, 1, 2, 2, 3, 3 }) })
       -- a bow-tie outline crosses itself
-      assert.are.same({ "cross", 1, 1 }, { oracle.regionCrossing({ 0, 0, 10, 10, 10, 0, 0, 20, -10, 20, -10, 10 }) })
+      assert.are.same({ "cross", 1, 1 },
+        { oracle.regionCrossing({ 0, 0, 10, 10, 10, 0, 0, 20, -10, 20, -10, 10 }) })
     end)
   end)
 

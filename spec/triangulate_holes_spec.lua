@@ -92,7 +92,8 @@ describe("polygonTriangulate and polygonConvexParts with holes", function()
         for _, shape in ipairs(tiles.shapes(set, 10, 0, 0)) do
           local points, list = shape[1], shape[2]
           local tris, message = triangulate(points, list)
-          assert(tris, ("seed %d (%d tiles a side, %d holes) refused: %s"):format(seed, size, #list, tostring(message)))
+          assert(tris, ("seed %d (%d tiles a side, %d holes) refused: %s")
+            :format(seed, size, #list, tostring(message)))
           local ok, why = oracle.checkCover(points, list, tris)
           assert(ok, ("seed %d triangles: %s"):format(seed, tostring(why)))
           local parts = convexParts(points, list)

@@ -695,7 +695,7 @@ function oracle.checkCover(points, holes, pieces, convex)
     return vx[a] < vx[b] or (vx[a] == vx[b] and vy[a] < vy[b])
   end)
   local count = {}
-  local function add(ax, ay, bx, by, weight)
+  local function addEdge(ax, ay, bx, by, weight)
     local x0, x1 = math.min(ax, bx), math.max(ax, bx)
     local y0, y1 = math.min(ay, by), math.max(ay, by)
     local lo, hi = 1, #order + 1
@@ -725,11 +725,11 @@ function oracle.checkCover(points, holes, pieces, convex)
     for c = 1, #cuts - 1 do
       local u, w = keyOf(cuts[c][1], cuts[c][2]), keyOf(cuts[c + 1][1], cuts[c + 1][2])
       if u ~= w then
-        local key, sign = u .. ">" .. w, weight
+        local key, signed = u .. ">" .. w, weight
         if u > w then
-          key, sign = w .. ">" .. u, -weight
+          key, signed = w .. ">" .. u, -weight
         end
-        count[key] = (count[key] or 0) + sign
+        count[key] = (count[key] or 0) + signed
       end
     end
   end
@@ -737,7 +737,7 @@ function oracle.checkCover(points, holes, pieces, convex)
     local n = #ring / 2
     for i = 1, n do
       local j = i % n + 1
-      add(ring[2 * i - 1], ring[2 * i], ring[2 * j - 1], ring[2 * j], weight)
+      addEdge(ring[2 * i - 1], ring[2 * i], ring[2 * j - 1], ring[2 * j], weight)
     end
   end
   for _, piece in ipairs(pieces) do
@@ -1108,10 +1108,12 @@ function oracle.regionCrossing(points, holes)
     local ax0, ay0, ax1, ay1 = math.huge, math.huge, -math.huge, -math.huge
     local bx0, by0, bx1, by1 = math.huge, math.huge, -math.huge, -math.huge
     for v = first[r], last[r] do
-      ax0, ax1, ay0, ay1 = math.min(ax0, xs[v]), math.max(ax1, xs[v]), math.min(ay0, ys[v]), math.max(ay1, ys[v])
+      ax0, ax1 = math.min(ax0, xs[v]), math.max(ax1, xs[v])
+      ay0, ay1 = math.min(ay0, ys[v]), math.max(ay1, ys[v])
     end
     for v = first[g], last[g] do
-      bx0, bx1, by0, by1 = math.min(bx0, xs[v]), math.max(bx1, xs[v]), math.min(by0, ys[v]), math.max(by1, ys[v])
+      bx0, bx1 = math.min(bx0, xs[v]), math.max(bx1, xs[v])
+      by0, by1 = math.min(by0, ys[v]), math.max(by1, ys[v])
     end
     return ax0 <= bx1 and bx0 <= ax1 and ay0 <= by1 and by0 <= ay1
   end
