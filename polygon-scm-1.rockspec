@@ -32,6 +32,7 @@ build = {
     ["polygon.object"] = "polygon/object.lua",
     ["polygon.convex"] = "polygon/convex.lua",
     ["polygon.sweep"] = "polygon/sweep.lua",
+    ["polygon.rects"] = "polygon/rects.lua",
     ["polygon.triangulate"] = "polygon/triangulate.lua",
     ["polygon.views"] = "polygon/views.lua",
     ["polygon.faces"] = "polygon/faces.lua",

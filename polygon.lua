@@ -270,7 +270,8 @@ polygon.polygonTriangulate = triangulate.polygonTriangulate
 -- @tparam table points flat array, either winding
 -- @tparam[opt] {table,...} holes as in @{polygonTriangulate}
 -- @treturn[1] {table,...} convex flat arrays of input vertices wound like `points`, their
--- interiors disjoint, their union the polygon; one part for a convex polygon
+-- interiors disjoint, their union the polygon; one part for a convex polygon. When every edge
+-- runs along an axis, axis-parallel rectangles whose corners' coordinates are input ones
 -- @return[2] nil
 -- @treturn[2] string why, as in @{polygonTriangulate}
 -- @raise as @{polygonTriangulate}

@@ -7,6 +7,7 @@ local kernel = require(_PACKAGE .. ".kernel")
 local check = require(_PACKAGE .. ".check")
 local object = require(_PACKAGE .. ".object")
 local sweep = require(_PACKAGE .. ".sweep")
+local rects = require(_PACKAGE .. ".rects")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
 local floor, sort = math.floor, table.sort
@@ -630,7 +631,7 @@ end
 
 -- Checks the arguments and triangulates: the triangles' nodes (a flat array, three per
 -- triangle), or nil and a message. Leaves the node arrays set for the caller to read.
-local function triangulate(fname, points, holes)
+local function triangulate(fname, points, holes, checkOnly)
   if not roomMade then makeRoom() end
   local n = checkPoints(points, fname, "points", 4)
   if holes ~= nil and type(holes) ~= "table" then
@@ -695,6 +696,7 @@ local function triangulate(fname, points, holes)
   end
   local trouble = ringsTrouble(starts)
   if trouble then return nil, trouble end
+  if checkOnly then return true end
   -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
   local lefts = {}
   for h = 2, #starts do
@@ -832,6 +834,18 @@ end
 function M.polygonConvexParts(points, holes)
   if type(points) == "table" and type(points[1]) ~= "number" then   -- a Polygon: its points
     points = shapeBehind(points, "polygonConvexParts", "points", 2) or points end      -- (point tables raise)
+  if type(points) == "table" and rects.alongAxes(points, holes) then
+    -- every edge along an axis (checked on the raw arrays: a bad one fails the check below):
+    -- rectangles, once the rings pass the triangulator's check
+    local ok, message = triangulate("polygonConvexParts", points, holes, true)
+    releaseNodes()
+    if not ok then return nil, message end
+    local kept = {}   -- the holes that enclose something (the others are skipped, as there)
+    for h = 1, holes and #holes or 0 do
+      if #holes[h] >= 6 and areaSign(holes[h], #holes[h]) ~= 0 then kept[#kept + 1] = holes[h] end
+    end
+    return rects.rectangles(points, kept, areaSign(points, #points) > 0)
+  end
   local tris, message = triangulate("polygonConvexParts", points, holes)
   if not tris then releaseNodes(); return nil, message end
   -- corners: three per triangle, linked around their part; a part is the triangles joined so far

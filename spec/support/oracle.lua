@@ -565,13 +565,15 @@ end
 -- areas add up to the polygon's (holes subtracted) exactly, and no two pieces' interiors
 -- overlap (two convex polygons are disjoint when an edge of one has the other on its outer
 -- side: tested for every pair whose boxes overlap, found by a sweep in x).
+-- With `grid` (rectangles of an outline along the axes), a piece vertex may be any point whose
+-- x is an input x and whose y an input y, each bit for bit.
 -- @return true, or false and what failed
-function oracle.checkPieces(points, holes, pieces, convex)
+function oracle.checkPieces(points, holes, pieces, convex, grid)
   holes = holes or {}
   local key = function(x, y)
     return ("%.17g %.17g"):format(x, y)
   end
-  local known = {}
+  local known, knownX, knownY = {}, {}, {}
   local rings = { points }
   for _, hole in ipairs(holes) do
     rings[#rings + 1] = hole
@@ -579,13 +581,15 @@ function oracle.checkPieces(points, holes, pieces, convex)
   for _, ring in ipairs(rings) do
     for i = 1, #ring - 1, 2 do
       known[key(ring[i], ring[i + 1])] = true
+      knownX[("%.17g"):format(ring[i])], knownY[("%.17g"):format(ring[i + 1])] = true, true
     end
   end
   local winding = oracle.winding(points)
   local w = winding == "cw" and 1 or -1
   for p, piece in ipairs(pieces) do
     for i = 1, #piece - 1, 2 do
-      if not known[key(piece[i], piece[i + 1])] then
+      local onGrid = grid and knownX[("%.17g"):format(piece[i])] and knownY[("%.17g"):format(piece[i + 1])]
+      if not known[key(piece[i], piece[i + 1])] and not onGrid then
         return false, ("piece %d: vertex %s is not an input vertex"):format(p, key(piece[i], piece[i + 1]))
       end
     end
@@ -655,6 +659,21 @@ function oracle.checkPieces(points, holes, pieces, convex)
   return true
 end
 
+--- Whether every edge of the outline and of the holes runs along an axis (a repeated vertex is
+-- no edge): the inputs whose convex parts are rectangles.
+function oracle.alongAxes(points, holes)
+  local rings = { points }
+  for h, hole in ipairs(holes or {}) do rings[h + 1] = hole end
+  for _, ring in ipairs(rings) do
+    local n = #ring
+    for i = 1, n - 1, 2 do
+      local j = i + 2 <= n and i + 2 or 1
+      if ring[i] ~= ring[j] and ring[i + 1] ~= ring[j + 1] then return false end
+    end
+  end
+  return true
+end
+
 --- Checks that pieces cover a polygon with optional holes exactly: oracle.checkPieces, then
 -- the boundary of the pieces taken together is the boundary of the region, edge for edge. Each
 -- edge, of a piece or of a ring, is cut at every input vertex lying inside it; every cut piece
@@ -663,8 +682,8 @@ end
 -- every u, v. Pieces wound like the outline with this boundary add up, point by point, to the
 -- region's winding number: 1 inside, 0 outside and in the holes, so they cover it exactly.
 -- @return true, or false and what failed
-function oracle.checkCover(points, holes, pieces, convex)
-  local ok, why = oracle.checkPieces(points, holes, pieces, convex)
+function oracle.checkCover(points, holes, pieces, convex, grid)
+  local ok, why = oracle.checkPieces(points, holes, pieces, convex, grid)
   if not ok then
     return false, why
   end
@@ -677,6 +696,9 @@ function oracle.checkCover(points, holes, pieces, convex)
   local rings = { points }
   for h = 1, #holes do
     rings[h + 1] = holes[h]
+  end
+  if grid then   -- the edges are cut at the pieces' vertices too, which need not be input vertices
+    for _, piece in ipairs(pieces) do rings[#rings + 1] = piece end
   end
   for _, ring in ipairs(rings) do
     for i = 1, #ring - 1, 2 do

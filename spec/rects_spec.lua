@@ -1,0 +1,127 @@
+-- polygonConvexParts on outlines whose edges, and their holes' edges, all run along the axes
+-- (issue 28): axis-parallel rectangles, so that pushes against tile levels are exact. Checked
+-- by hand on the README's shapes, and on random tile maps against the exact oracle (cover, no
+-- overlap, every corner's coordinates input ones) and against the fewest rectangles possible
+-- (spec/support/rectmin.lua).
+
+local polygon = require "polygon"
+local oracle = require "oracle"
+local prng = require "prng"
+local tiles = require "tiles"
+local rectmin = require "rectmin"
+
+local convexParts = polygon.polygonConvexParts
+
+-- Whether a part is an axis-parallel rectangle: 4 corners, each edge along an axis.
+local function isRectangle(part)
+  if #part ~= 8 then return false end
+  for i = 1, 7, 2 do
+    local j = (i + 1) % 8 + 1
+    if part[i] ~= part[j] and part[i + 1] ~= part[j + 1] then return false end
+  end
+  return true
+end
+
+-- The parts sorted and printed, so that a list compares whatever its order.
+local function sorted(parts)
+  local out = {}
+  for i, p in ipairs(parts) do
+    local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+    for k = 1, #p - 1, 2 do
+      x0, x1 = math.min(x0, p[k]), math.max(x1, p[k])
+      y0, y1 = math.min(y0, p[k + 1]), math.max(y1, p[k + 1])
+    end
+    out[i] = ("%g %g %g %g"):format(x0, y0, x1, y1)
+  end
+  table.sort(out)
+  return out
+end
+
+local U = { 0,0, 50,0, 50,200, 250,200, 250,0, 300,0, 300,250, 0,250 }   -- the README's floor
+local FRAME = { -50,-50, 450,-50, 450,350, -50,350 }                     -- and its room
+local ROOM = { 0,0, 400,0, 400,200, 200,200, 200,300, 0,300 }
+
+describe("polygonConvexParts on outlines along the axes", function()
+  describe("when given the README's shapes", function()
+    it("splits the U floor into its two arms and the floor under them", function()
+      -- the band y 0..200 holds x 0..50 and 250..300 (the arms); y 200..250 all of 0..300
+      local parts = assert(convexParts(U))
+      assert.are.same({ "0 0 50 200", "0 200 300 250", "250 0 300 200" }, sorted(parts))
+    end)
+
+    it("splits the frame around the L-shaped room into 5 rectangles", function()
+      -- bands: -50..0 the top wall (x -50..450); 0..200 the left wall (-50..0) and the right one
+      -- (400..450); 200..300 the left wall and the corner block (200..450), left wall running on
+      -- from 0 to 300; 300..350 the bottom wall
+      local parts = assert(convexParts(FRAME, { ROOM }))
+      assert.are.same({ "-50 -50 450 0", "-50 0 0 300", "-50 300 450 350", "200 200 450 300",
+        "400 0 450 200" }, sorted(parts))
+      assert.are.equal(5, (rectmin.fewest(FRAME, { ROOM })))   -- the fewest possible
+    end)
+
+    it("winds every rectangle like the outline, either way", function()
+      for _, outline in ipairs({ U, { 0,250, 300,250, 300,0, 250,0, 250,200, 50,200, 50,0, 0,0 } }) do
+        local want = oracle.winding(outline)
+        for _, part in ipairs(assert(convexParts(outline))) do
+          assert.are.equal(want, oracle.winding(part))
+        end
+      end
+    end)
+  end)
+
+  describe("when a box or a ball is pushed out of the parts", function()
+    it("pushes a crate sunk 8 into the U floor up by exactly 8", function()
+      -- the crate's bottom at y 208, the floor's top at 200: (0, -8)
+      local floor = assert(convexParts(U))
+      assert.are.same({ 8, 0, -8 }, { polygon.polygonsCollideV(floor, { 100,192, 120,192, 120,208, 100,208 }) })
+    end)
+
+    it("pushes a box 8 into the room's wall out by exactly 8, and a ball 5 into it by 5", function()
+      -- the left wall ends at x 0: the box from -8 to 12 goes right by 8; the ball at x 0,
+      -- radius 5, right by 5
+      local walls = assert(convexParts(FRAME, { ROOM }))
+      assert.are.same({ 8, 8, 0 }, { polygon.polygonsCollideV(walls, { -8,100, 12,100, 12,120, -8,120 }) })
+      assert.are.same({ 5, 5, 0 }, { polygon.polygonCircleCollideV(walls, 0, 100, 5) })
+    end)
+
+    it("still separates when the exact depth would leave a ball touching two walls' corner", function()
+      -- a ball in the room's inner corner (200, 200): the push is whatever separates
+      local walls = assert(convexParts(FRAME, { ROOM }))
+      local cx, cy, r = 197, 197, 5
+      local _, dx, dy = polygon.polygonCircleCollideV(walls, cx, cy, r)
+      for _, part in ipairs(walls) do assert.is_false(oracle.discMeetsPolygon(part, cx + dx, cy + dy, r)) end
+    end)
+  end)
+
+  describe("when given random tile maps with their enclosed gaps", function()
+    it("covers each exactly with rectangles, near the fewest possible", function()
+      local maps, compared, total, fewest = 0, 0, 0, 0
+      for seed = 1, 300 do
+        local rng = prng.new(seed)
+        local offset = ({ 0, 0, 1e6 + 0.5, 1e9 })[rng:int(1, 4)]
+        local set = tiles.random(rng, rng:int(2, 9), rng:int(2, 9), 0.7)
+        for _, shape in ipairs(tiles.shapes(set, 10, offset, offset)) do
+          local points, holes = shape[1], shape[2]
+          local parts = assert(convexParts(points, holes))
+          for _, part in ipairs(parts) do assert.is_true(isRectangle(part), "seed " .. seed) end
+          local ok, why = oracle.checkCover(points, holes, parts, true, true)
+          assert(ok, ("seed %d: %s"):format(seed, tostring(why)))
+          -- the issue's bound: r + 1 + the holes' vertices
+          local bound = oracle.reflexCount(points) + 1
+          for _, hole in ipairs(holes) do bound = bound + #hole / 2 end
+          assert.is_true(#parts <= bound, ("seed %d: %d parts, bound %d"):format(seed, #parts, bound))
+          local least = rectmin.fewest(points, holes)   -- (nil with pinch points)
+          if least then
+            assert.is_true(#parts >= least, ("seed %d: %d parts, fewer than %d"):format(seed, #parts, least))
+            compared, total, fewest = compared + 1, total + #parts, fewest + least
+          end
+          maps = maps + 1
+        end
+      end
+      assert.is_true(maps > 350 and compared > 150, ("%d maps, %d compared"):format(maps, compared))
+      -- the bands' rectangles against the fewest
+      -- 460 parts where the fewest is 421 (9% more) when written
+      assert.is_true(total <= 1.2 * fewest, ("%d parts for a least of %d"):format(total, fewest))
+    end)
+  end)
+end)
