@@ -1494,7 +1494,8 @@ local function holesRule(name, args, old, new, where)
     end
     local convex = name == "polygonConvexParts"
     -- rectangles where every edge runs along an axis: their corners' coordinates are input ones
-    local ok, why = oracle.checkCover(points, holes, pieces, convex, convex and oracle.alongAxes(points, holes))
+    local grid = convex and oracle.alongAxes(points, holes)
+    local ok, why = oracle.checkCover(points, holes, pieces, convex, grid)
     if not ok then return where .. " (issue 28 rule: NEW's pieces: " .. why .. ")" end
   else
     if not old[1] then return where .. " (issue 28 rule: NEW refused where OLD raised)" end
@@ -1519,7 +1520,11 @@ local exactPushAccepted = 0
 local function largest(shape, m)
   if type(shape) ~= "table" then return m end
   for _, v in ipairs(shape) do
-    if type(v) == "table" then m = largest(v, m) elseif type(v) == "number" then m = math.max(m, math.abs(v)) end
+    if type(v) == "table" then
+      m = largest(v, m)
+    elseif type(v) == "number" then
+      m = math.max(m, math.abs(v))
+    end
   end
   return m
 end
@@ -1530,8 +1535,12 @@ local function exactPushAccepts(name, args, old, new)
   if (ox == 0) ~= (nx == 0) or (oy == 0) ~= (ny == 0) or (ox ~= 0 and oy ~= 0) then return false end
   if (ox < 0) ~= (nx < 0) or (oy < 0) ~= (ny < 0) then return false end
   local oldLength, newLength = math.abs(ox + oy), math.abs(nx + ny)
-  local scale = name == "polygonCircleCollideV" and largest(args[1], math.abs(args[2]) + math.abs(args[3]) + args[4])
-    or largest(args[2], largest(args[1], 0))
+  local scale
+  if name == "polygonCircleCollideV" then
+    scale = largest(args[1], math.abs(args[2]) + math.abs(args[3]) + args[4])
+  else
+    scale = largest(args[2], largest(args[1], 0))
+  end
   if not (newLength <= oldLength and oldLength - newLength <= 2 ^ -40 * scale and new[2] == newLength) then
     return false
   end

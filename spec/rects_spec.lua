@@ -73,7 +73,8 @@ describe("polygonConvexParts on outlines along the axes", function()
     it("pushes a crate sunk 8 into the U floor up by exactly 8", function()
       -- the crate's bottom at y 208, the floor's top at 200: (0, -8)
       local floor = assert(convexParts(U))
-      assert.are.same({ 8, 0, -8 }, { polygon.polygonsCollideV(floor, { 100,192, 120,192, 120,208, 100,208 }) })
+      local crate = { 100,192, 120,192, 120,208, 100,208 }
+      assert.are.same({ 8, 0, -8 }, { polygon.polygonsCollideV(floor, crate) })
     end)
 
     it("pushes a box 8 into the room's wall out by exactly 8, and a ball 5 into it by 5", function()

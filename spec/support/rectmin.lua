@@ -117,11 +117,11 @@ function rectmin.fewest(points, holes)
     return vc[1] >= x0 and vc[1] <= x1 and hc[2] >= y0 and hc[2] <= y1
   end
   local matchOf = {}
-  local function augment(h, seen)
+  local function augment(h, visited)
     for v = 1, #vertical do
-      if not seen[v] and cross(horizontal[h], vertical[v]) then
-        seen[v] = true
-        if not matchOf[v] or augment(matchOf[v], seen) then
+      if not visited[v] and cross(horizontal[h], vertical[v]) then
+        visited[v] = true
+        if not matchOf[v] or augment(matchOf[v], visited) then
           matchOf[v] = h
           return true
         end
