@@ -512,36 +512,6 @@ local function tryCircle(tx, ty, np, need, best, bestX, bestY)
   return best, bestX, bestY
 end
 
--- A push along an axis (the foot on a side of a rectangle, say): the push of exactly the depth
--- instead, when the circle moved by it (the centre rounded as a game moves it) meets no part,
--- by the exact test; so a ball 5 into a wall of rectangles goes out by 5, not 5.0000000000081.
--- The foot is found again among the faces as nearestFreeCircle made it (its line lifted by
--- `lift`). Unscaled shapes only (k = 1): the faces' numbers are then the coordinates' own.
-local function exactFoot(shape, view, cx, cy, r, best, tx, ty, lift, last)
-  local boxes, turns = view.boxes, view.turns
-  for f = 1, last do
-    local ux, uy = faceX[f], faceY[f]
-    local lifted = faceC[f] + r + lift
-    if faceSeam[f] == 0 and ux * lifted == tx and uy * lifted == ty and (ux == 0 or uy == 0) then
-      local d = faceC[f] + r
-      local dx, dy = ux * d + 0.0, uy * d + 0.0
-      if d <= 0 then return best, tx, ty end
-      local mx, my = cx + dx, cy + dy   -- the centre moved as a game moves it
-      local reach = r + lift   -- the box tests widened past their own rounding
-      for i = 1, view.count do
-        local a = 4 * i
-        if turns[i] ~= 0 and boxes[a - 3] < mx + reach and mx - reach < boxes[a - 1]
-            and boxes[a - 2] < my + reach and my - reach < boxes[a]
-            and circleCollision(shape[i], #shape[i], mx, my, r) then
-          return best, tx, ty
-        end
-      end
-      return d, dx, dy
-    end
-  end
-  return best, tx, ty
-end
-
 -- The nearest free candidate for a circle of (scaled) radius r among parts 1 .. np.
 local function nearestFreeCircle(np, r, margin)
   local best, bestX, bestY = huge, 0.0, 0.0
@@ -679,8 +649,6 @@ local function collideCircleParts(fname, shape, cx, cy, r)
   if best == huge then
     -- No candidate checked free (not expected): 2 E along any direction clears every D.
     best, tx, ty = 2 * extent, 0.0, -2 * extent
-  elseif k == 1 and (tx == 0 or ty == 0) then
-    best, tx, ty = exactFoot(shape, view, cx, cy, r, best, tx, ty, 1.25 * margin, last)
   end
   return best / k, tx / k + 0.0, ty / k + 0.0
 end

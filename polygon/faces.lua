@@ -892,7 +892,6 @@ local nearParts = {}     -- scratch: those whose boxes come within the window of
 -- right, 4 bottom, as rectSides numbers them) and its c + lift, which is also the line's
 -- distance from the origin (its reach): the pairs' rectangles overlap, so every c > 0.
 local boxSide, boxLine = {}, {}
-local boxDepth = {}   -- the same lines' c, unlifted: the exact depth of a push along the side
 
 -- Pairs 1 .. found of boxPush: their parts brought up to date (see preparedParts), each pair's
 -- boxes (pairRects, for pushFree) and lines, from the boxes of the part and of the flat
@@ -924,14 +923,14 @@ local function boxLines(info, list, flat, listFirst, found, margin)
     end
     local c, sides, lines = sideConstant, boxSide, boxLine
     c[1], c[2], c[3], c[4] = cLeft, cTop, cRight, cBottom
-    local b, side, depths = 4 * q, order[1], boxDepth
-    sides[b - 3], lines[b - 3], depths[b - 3] = side, c[side] + lift, c[side]
+    local b, side = 4 * q, order[1]
+    sides[b - 3], lines[b - 3] = side, c[side] + lift
     side = order[3]
-    sides[b - 2], lines[b - 2], depths[b - 2] = side, c[side] + lift, c[side]
+    sides[b - 2], lines[b - 2] = side, c[side] + lift
     side = order[5]
-    sides[b - 1], lines[b - 1], depths[b - 1] = side, c[side] + lift, c[side]
+    sides[b - 1], lines[b - 1] = side, c[side] + lift
     side = order[7]
-    sides[b], lines[b], depths[b] = side, c[side] + lift, c[side]
+    sides[b], lines[b] = side, c[side] + lift
     least = max(least, lift + min(cLeft, cTop, cRight, cBottom))
   end
   if found == 1 then
@@ -984,9 +983,9 @@ local function laterFreeFoot(info, flat, listFirst, found, margin, low, last, fo
         end
       end
     end
-    if f == 0 then return huge, 0.0, 0.0, 0 end
+    if f == 0 then return huge, 0.0, 0.0 end
     local free, tx, ty = boxFoot(f, found, margin)
-    if free then return reach, tx, ty, f end
+    if free then return reach, tx, ty end
     triedReach, triedRank = reach, rank
   end
 end
@@ -1030,18 +1029,18 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
       end
     end
   end
-  local best, bestX, bestY, bestLine = huge, 0.0, 0.0, 0
+  local best, bestX, bestY = huge, 0.0, 0.0
   local free, tx, ty = false, 0.0, 0.0
   if footReach < FAR then free, tx, ty = boxFoot(foot, found, margin) end
   if free then
-    best, bestX, bestY, bestLine = footReach, tx, ty, foot
+    best, bestX, bestY = footReach, tx, ty
   else
     if foot2Reach < FAR then free, tx, ty = boxFoot(foot2, found, margin) end
     if free then
-      best, bestX, bestY, bestLine = foot2Reach, tx, ty, foot2
+      best, bestX, bestY = foot2Reach, tx, ty
     elseif foot2Reach < FAR then
-      best, bestX, bestY, bestLine = laterFreeFoot(info, flat, listFirst, found, margin, low, last,
-        foot2, foot2Reach)
+      best, bestX, bestY = laterFreeFoot(info, flat, listFirst, found, margin, low, last, foot2,
+        foot2Reach)
     end
   end
   -- crossings of a vertical line and a horizontal one, both nearer than the best, in the order
@@ -1066,22 +1065,13 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
           local d = sqrt(cx * cx + cy * cy)
           -- below low not tried on PUC Lua, as nearestFree's crossings
           if d < best and (JIT or d >= low) and pushFree(cx, cy, found, margin) then
-            best, bestX, bestY, bestLine = d, cx, cy, 0
+            best, bestX, bestY = d, cx, cy
           end
         end
       end
     end
   end
   if best == huge then return nil end
-  -- a foot: the push of exactly the depth when it already separates the rounded move (pushFree
-  -- is exact for rectangles), as for a pair of rectangles, so that boxes get exact answers (a
-  -- crate sunk 8 into a floor of rectangles goes up by 8, not 8.000000000005)
-  if bestLine > 0 then
-    local d = boxDepth[bestLine]
-    local dx = bestX ~= 0 and (bestX < 0 and -d or d) or 0.0
-    local dy = bestY ~= 0 and (bestY < 0 and -d or d) or 0.0
-    if d >= 0 and pushFree(dx, dy, found, margin) then best, bestX, bestY = d, dx, dy end
-  end
   local near, sx, sy = 4 * margin, bestX, bestY
   if not listFirst then sx, sy = -sx, -sy end   -- the box of D of flat - part: the tests on -t
   local reachX, reachY = sx < 0 and -sx or sx, sy < 0 and -sy or sy
