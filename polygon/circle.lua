@@ -277,16 +277,18 @@ local function distinctNeighbour(points, n, i, dir)
   return j
 end
 
--- Whether the centre (cx, cy) lies in the corner region of the vertex v between its distinct
--- neighbours w and u (indices), and is not v: (c - v).(w - v) <= 0 and (c - v).(u - v) <= 0.
+-- A number < 0 when the centre (cx, cy) lies strictly inside the corner region of the vertex v
+-- between its distinct neighbours w and u (indices): the larger of (c - v).(w - v) and
+-- (c - v).(u - v) (0 when c is v, or on the region's edge, where the edge's line is as near).
 -- w - v and u - v come from the given coordinates, not as differences of c - w and c - v: far
 -- from a large circle's centre those round to multiples of its ulp, which may exceed the
--- whole polygon.
-local function inCorner(points, v, w, u, cx, cy)
+-- whole polygon. No branch: one comparison of the caller decides (on LuaJIT each comparison
+-- that goes both ways grows a side trace).
+local function cornerMargin(points, v, w, u, cx, cy)
   local x, y = points[v] + 0.0, points[v + 1] + 0.0
   local vx, vy = x - cx, y - cy
-  return (vx ~= 0 or vy ~= 0) and vx * (x - points[w]) + vy * (y - points[w + 1]) <= 0
-    and vx * (x - points[u]) + vy * (y - points[u + 1]) <= 0
+  return max(vx * (x - points[w]) + vy * (y - points[w + 1]),
+    vx * (x - points[u]) + vy * (y - points[u + 1]))
 end
 
 local penetration, circlePush
@@ -759,22 +761,34 @@ function circleCollision(points, n, cx, cy, r)
       return false
     end
   end
-  -- The nearest-vertex axis: when the nearest point of the polygon is a vertex v, the centre
+  -- The nearest-vertex axis: when the nearest point of the polygon is a vertex w, the centre
   -- lies in its corner region, behind neither edge meeting there, and the distance to the
-  -- polygon is |c - v|, the push along c - v. Such a v is an end of an edge whose line lies
-  -- farthest behind the centre (the other edges' normals turn farther from c - v), so the ends
-  -- of the walk's edge are tested first; collinear edges tie, so the vertex of the least
-  -- computed distance is tested last, when it is neither. (Far from a large circle's centre
-  -- every squared distance rounds to the same number, and that vertex is any one.)
-  if nearSq > 0 then
-    local b, a = feature, feature == 1 and n - 1 or feature - 2
-    if inCorner(points, b, a, distinctNeighbour(points, n, b, 2), cx, cy) then
-      feature = -b
-    elseif inCorner(points, a, distinctNeighbour(points, n, a, -2), b, cx, cy) then
-      feature = -a
-    elseif near ~= a and near ~= b and inCorner(points, near,
-        distinctNeighbour(points, n, near, -2), distinctNeighbour(points, n, near, 2), cx, cy) then
+  -- polygon is |c - w|, the push along c - w. The vertex of the least computed distance is
+  -- tested. It can be another vertex than w only when rounding hides their difference: every
+  -- squared distance is within 4 eps farSq, and in w's corner region |c - v|^2 >= |c - w|^2 +
+  -- |v - w|^2 for every vertex v, so then |near - w|^2 <= 8 eps farSq (far from a large
+  -- circle's centre every squared distance rounds to the same number). And w is an end of an
+  -- edge whose line lies farthest behind the centre (the other edges' normals turn farther from
+  -- c - w): so the ends of the walk's edge that close to `near` are tested next.
+  do
+    local x, y = points[near] + 0.0, points[near + 1] + 0.0
+    if cornerMargin(points, near, distinctNeighbour(points, n, near, -2),
+        distinctNeighbour(points, n, near, 2), cx, cy) < 0 then
       feature = -near
+    else
+      local b, a = feature, (feature - 3) % n + 1   -- the edge's start, without a branch
+      local close = 2^-48 * farSq   -- 32 eps farSq
+      local dx, dy = points[b] - x, points[b + 1] - y
+      if b ~= near and dx * dx + dy * dy <= close
+          and cornerMargin(points, b, a, distinctNeighbour(points, n, b, 2), cx, cy) < 0 then
+        feature = -b
+      else
+        dx, dy = points[a] - x, points[a + 1] - y
+        if a ~= near and dx * dx + dy * dy <= close
+            and cornerMargin(points, a, distinctNeighbour(points, n, a, -2), b, cx, cy) < 0 then
+          feature = -a
+        end
+      end
     end
   end
   -- On LuaJIT a branch below that goes both ways (as the first two do in a game: circles in
