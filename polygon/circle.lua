@@ -769,8 +769,9 @@ function circleCollision(points, n, cx, cy, r)
   -- |v - w|^2 for every vertex v, so then |near - w|^2 <= 8 eps farSq (far from a large
   -- circle's centre every squared distance rounds to the same number). And w is an end of an
   -- edge whose line lies farthest behind the centre (the other edges' normals turn farther from
-  -- c - w): so the ends of the walk's edge that close to `near` are tested next.
-  do
+  -- c - w): so the ends of the walk's edge that close to `near` are tested next. (Not when the
+  -- least squared distance is 0: the centre on a vertex, or an underflow; the edge decides.)
+  if nearSq > 0 then
     local x, y = points[near] + 0.0, points[near + 1] + 0.0
     if cornerMargin(points, near, distinctNeighbour(points, n, near, -2),
         distinctNeighbour(points, n, near, 2), cx, cy) < 0 then
