@@ -1403,6 +1403,30 @@ local function refusalHolds(name, args, message)
   return false
 end
 
+-- Issue 29, item 4 (circles at every radius): polygonCircleCollideV finds the nearest feature
+-- from the given coordinates, not from their offsets to the centre, and scales a small polygon
+-- against a huge circle differently, so some answers change (by an ulp, or from a wrong push).
+-- NEW's answer for a flat polygon is accepted where the oracle agrees with all of it: the
+-- boolean, and a push that clears and is at most 8 eps M past the exact depth.
+local function circleAnswerHolds(args, new)
+  local points, cx, cy, r = pointsOf(args[1]), args[2], args[3], args[4]
+  if not new[1] or type(points) ~= "table" or type(cx) ~= "number" or type(cy) ~= "number"
+      or type(r) ~= "number" then
+    return false
+  end
+  local m = math.max(math.abs(cx), math.abs(cy))
+  for i = 1, #points do
+    if type(points[i]) ~= "number" then return false end
+    m = math.max(m, math.abs(points[i]))
+  end
+  local overlap, dx, dy = new[2], new[3], new[4]
+  if oracle.discMeetsPolygon(points, cx, cy, r) ~= (overlap ~= false) then return false end
+  if not overlap then return true end
+  if oracle.discMeetsPolygon(points, cx + dx, cy + dy, r) then return false end
+  m = math.max(m, math.abs(cx + dx), math.abs(cy + dy))
+  return oracle.circleDepthAtLeast(points, cx, cy, r, oracle.lengthAbove(dx, dy), 8 * 2^-53 * m)
+end
+
 local function issue29Accepts(name, args, n, old, new)
   -- any function: the odd-count error of a table of point tables now says what it is
   if not old[1] and not new[1] and type(new[2]) == "string"
@@ -1439,6 +1463,7 @@ local function issue29Accepts(name, args, n, old, new)
       end
     end
   end
+  if name == "polygonCircleCollideV" and old[1] and circleAnswerHolds(args, new) then return true end
   -- a NEW Polygon object taken for its points: the same as NEW on the points themselves
   local plain, changed = {}, false
   for i = 1, n do

@@ -277,6 +277,20 @@ local function distinctNeighbour(points, n, i, dir)
   return j
 end
 
+-- A number < 0 when the centre (cx, cy) lies strictly inside the corner region of the vertex v
+-- between its distinct neighbours w and u (indices): the larger of (c - v).(w - v) and
+-- (c - v).(u - v) (0 when c is v, or on the region's edge, where the edge's line is as near).
+-- w - v and u - v come from the given coordinates, not as differences of c - w and c - v: far
+-- from a large circle's centre those round to multiples of its ulp, which may exceed the
+-- whole polygon. No branch: one comparison of the caller decides (on LuaJIT each comparison
+-- that goes both ways grows a side trace).
+local function cornerMargin(points, v, w, u, cx, cy)
+  local x, y = points[v] + 0.0, points[v + 1] + 0.0
+  local vx, vy = x - cx, y - cy
+  return max(vx * (x - points[w]) + vy * (y - points[w + 1]),
+    vx * (x - points[u]) + vy * (y - points[u + 1]))
+end
+
 local penetration, circlePush
 do   -- the push's helpers are local to this block
 -- The push's direction, left here by penetration for circlePush: its unit vector (ux, uy), to
@@ -553,13 +567,15 @@ local function walkGuessed(points, n, cx, cy, guess)
   -- every real edge's key in the range where the walk's answer is used (farSq < 2^1000)
   local bestKey, best = -huge, 1
   local turnSum = 0.0
-  local ax, ay = points[n - 1] - cx, points[n] - cy
+  local px, py = points[n - 1], points[n]
+  local ax, ay = px - cx, py - cy
   for i = 1, n - 1, 2 do
-    local bx, by = points[i] - cx, points[i + 1] - cy
+    local qx, qy = points[i], points[i + 1]
+    local bx, by = qx - cx, qy - cy
     local distSq = bx * bx + by * by
     near = near + (i - near) * min(max(nearSq - distSq, 0) * LIFT * LIFT, 1)
     nearSq, farSq = min(nearSq, distSq), max(farSq, distSq)
-    local ex, ey = bx - ax, by - ay
+    local ex, ey = qx - px, qy - py   -- from the given coordinates (see edgeWalk)
     local lengthSq = ex * ex + ey * ey
     local crossed = ex * ay - ey * ax
     turnSum = turnSum + crossed
@@ -568,7 +584,7 @@ local function walkGuessed(points, n, cx, cy, guess)
       - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
     best = best + (i - best) * min(max(key - bestKey, 0) * LIFT * LIFT, 1)
     bestKey = max(bestKey, key)
-    ax, ay = bx, by
+    px, py, ax, ay = qx, qy, bx, by
   end
   return near, nearSq, farSq, best, bestKey, turnSum
 end
@@ -624,15 +640,17 @@ local function edgeWalkPuc(points, n, cx, cy, r)
   end
   local nearSq, farSq, near = huge, 0.0, 1
   local bestKey, best = -huge, 0
-  local ax, ay = points[n - 1] - cx, points[n] - cy
+  local px, py = points[n - 1] + 0.0, points[n] + 0.0
+  local ax, ay = px - cx, py - cy
   local radiusSq = r * r
   local prevSq = ax * ax + ay * ay
   for i = 1, n - 1, 2 do
-    local bx, by = points[i] - cx, points[i + 1] - cy
+    local qx, qy = points[i], points[i + 1]
+    local bx, by = qx - cx, qy - cy
     local distSq = bx * bx + by * by
     if distSq < nearSq then nearSq, near = distSq, i end
     if distSq > farSq then farSq = distSq end
-    local ex, ey = bx - ax, by - ay
+    local ex, ey = qx - px, qy - py   -- px, py floats: no integer overflow
     local lengthSq = ex * ex + ey * ey
     if lengthSq > 0 then   -- a repeated vertex gives no edge
       local outside = (ex * ay - ey * ax) * sign
@@ -644,7 +662,7 @@ local function edgeWalkPuc(points, n, cx, cy, r)
         end
       end
     end
-    ax, ay, prevSq = bx, by, distSq
+    px, py, ax, ay, prevSq = qx + 0.0, qy + 0.0, bx, by, distSq
   end
   return sign, near, nearSq, farSq, best
 end
@@ -658,13 +676,20 @@ local circleCollision
 -- for a non-finite coordinate. Rare (coordinates beyond 2^500 or all below 2^-400), so this
 -- path allocates the copy.
 local function circleCollisionScaled(points, n, cx, cy, r)
-  local m = max(abs(cx), abs(cy), r)
+  local m, size = max(abs(cx), abs(cy), r), 0.0
   for i = 1, n do
     local v = points[i] + 0.0
     if v ~= v or v == huge or v == -huge then return nil end
-    m = max(m, abs(v))
+    size = max(size, abs(v))
   end
+  m = max(m, size)
   local k = m > 1 and powerScale(m, 2^-32, 2^32) or powerScale(m, 2^-200, 2^-136)
+  if m > 2^500 and size * k < 2^-400 then
+    -- a polygon far smaller than a huge circle: the largest magnitude goes to 2^472 .. 2^480
+    -- instead, the most room for the polygon's squares below it (its own range is 2^-447 up)
+    k = powerScale(m, 2^416, 2^480)
+    while m * k < 2^472 do k = k * 2 end
+  end
   if k == 1 then
     -- Scaling cannot help: sizes more than 2^400 apart (a polygon of size 1e-200 against a
     -- radius of 1), outside the exact range. Decide as exactly as the kernels can, and push
@@ -736,16 +761,35 @@ function circleCollision(points, n, cx, cy, r)
       return false
     end
   end
-  -- The nearest-vertex axis: the centre is in the corner region of the nearest vertex v when
-  -- it lies behind neither edge meeting there, (c - v).(p - v) <= 0 for both distinct
-  -- neighbours p; then the distance to the polygon is |c - v|, and the push goes along c - v.
+  -- The nearest-vertex axis: when the nearest point of the polygon is a vertex w, the centre
+  -- lies in its corner region, behind neither edge meeting there, and the distance to the
+  -- polygon is |c - w|, the push along c - w. The vertex of the least computed distance is
+  -- tested. It can be another vertex than w only when rounding hides their difference: every
+  -- squared distance is within 4 eps farSq, and in w's corner region |c - v|^2 >= |c - w|^2 +
+  -- |v - w|^2 for every vertex v, so then |near - w|^2 <= 8 eps farSq (far from a large
+  -- circle's centre every squared distance rounds to the same number). And w is an end of an
+  -- edge whose line lies farthest behind the centre (the other edges' normals turn farther from
+  -- c - w): so the ends of the walk's edge that close to `near` are tested next. (Not when the
+  -- least squared distance is 0: the centre on a vertex, or an underflow; the edge decides.)
   if nearSq > 0 then
-    local vx, vy = points[near] - cx, points[near + 1] - cy   -- v - c
-    local p = distinctNeighbour(points, n, near, -2)
-    local q = distinctNeighbour(points, n, near, 2)
-    if vx * (vx - (points[p] - cx)) + vy * (vy - (points[p + 1] - cy)) <= 0
-        and vx * (vx - (points[q] - cx)) + vy * (vy - (points[q + 1] - cy)) <= 0 then
+    local x, y = points[near] + 0.0, points[near + 1] + 0.0
+    if cornerMargin(points, near, distinctNeighbour(points, n, near, -2),
+        distinctNeighbour(points, n, near, 2), cx, cy) < 0 then
       feature = -near
+    else
+      local b, a = feature, (feature - 3) % n + 1   -- the edge's start, without a branch
+      local close = 2^-48 * farSq   -- 32 eps farSq
+      local dx, dy = points[b] - x, points[b + 1] - y
+      if b ~= near and dx * dx + dy * dy <= close
+          and cornerMargin(points, b, a, distinctNeighbour(points, n, b, 2), cx, cy) < 0 then
+        feature = -b
+      else
+        dx, dy = points[a] - x, points[a + 1] - y
+        if a ~= near and dx * dx + dy * dy <= close
+            and cornerMargin(points, a, distinctNeighbour(points, n, a, -2), b, cx, cy) < 0 then
+          feature = -a
+        end
+      end
     end
   end
   -- On LuaJIT a branch below that goes both ways (as the first two do in a game: circles in

@@ -62,28 +62,29 @@ local function lowestTurn(points, n, scale)
     points[b + 1] * scale)
 end
 
--- The careful walk: every turn through cross (exact), repeated vertices skipped. Returns nil when
--- the polygon is convex or has no turn at all (every point on one line: zero area, which never
--- collides), else the reason it is not convex, for the message. The reference turn is the one
--- at the lowest vertex (lowestTurn; the first turn when that is zero), so the vertex named is
--- where a walk around the shape turns back against it.
-local function whyNotConvex(points, n)
-  local m = n / 2
-  -- coordinates far outside the exact range are scaled by a power of two first (exact, short
-  -- of underflow), so that no product of differences underflows or overflows
-  local magnitude = largestMagnitude(points, n, 0.0)
-  local scale = 1.0
-  if magnitude < 2^-400 or magnitude > 2^400 then scale = powerScale(magnitude, 2^-64, 1) end
+-- THE CAREFUL WALK, one for the collision functions' check (whyNotConvex) and polygonType
+-- (measures.lua): every turn through cross (exact), repeated vertices skipped, collinear vertices
+-- told apart from spikes (a zero turn that doubles back), the windings counted by the changes of
+-- sign of the edges' x direction (two around a convex polygon; counted along the walk they are
+-- one fewer when the first and last edges differ, and the count around the cycle is even, so
+-- more than two along the walk means more than two around). Coordinates are taken times `scale`
+-- (a power of two; 1 converts Lua 5.3 integers). Returns nil when there is no turn at all (every
+-- point on one line: zero area, which never collides), "convex", or why not: "reflex" or
+-- "spike" and the vertex where the walk first turns back, or "winds" (its turns all agree but it
+-- winds around more than once). The reference turn is the one at the lowest vertex when `named`
+-- (lowestTurn; the first turn when that is zero), so the vertex named is where a walk around
+-- the shape turns back against it; else the first turn (enough for a yes or no).
+local function carefulWalk(points, n, scale, named)
   local cx, cy = points[n - 1] * scale, points[n] * scale
   local j = n - 3
   while j > 0 and points[j] * scale == cx and points[j + 1] * scale == cy do j = j - 2 end
   if j < 0 then return nil end   -- all points are one point
   local px, py = points[j] * scale, points[j + 1] * scale
-  local ref = lowestTurn(points, n, scale)
+  local ref = named and lowestTurn(points, n, scale) or 0
   local turned, flips, dir = false, 0, 0
-  local firstBad, badKind
+  local spikeAt   -- the first spike; the answer once a turn shows the shape is not all on a line
   -- the turn at vertex k is taken at c (vertex m first, then 1, 2, ...)
-  local k = m
+  local k = n / 2
   for i = 1, n - 1, 2 do
     local qx, qy = points[i] * scale, points[i + 1] * scale
     if qx ~= cx or qy ~= cy then
@@ -91,9 +92,12 @@ local function whyNotConvex(points, n)
       if s ~= 0 then
         turned = true
         if ref == 0 then ref = s end
-        if (s > 0) ~= (ref > 0) and not firstBad then firstBad, badKind = k, "reflex" end
-      elseif (cx ~= px and (cx > px) ~= (qx > cx)) or (cx == px and (cy > py) ~= (qy > cy)) then
-        if not firstBad then firstBad, badKind = k, "spike" end
+        if spikeAt then return "spike", spikeAt end
+        if (s > 0) ~= (ref > 0) then return "reflex", k end
+      elseif not spikeAt and
+          ((cx ~= px and (cx > px) ~= (qx > cx)) or (cx == px and (cy > py) ~= (qy > cy))) then
+        spikeAt = k
+        if turned then return "spike", k end
       end
       if qx > cx then
         if dir < 0 then flips = flips + 1 end
@@ -107,11 +111,27 @@ local function whyNotConvex(points, n)
     k = (i + 1) / 2
   end
   if not turned then return nil end
-  if badKind == "reflex" then return ("a reflex turn at vertex %d"):format(firstBad) end
-  if badKind == "spike" then
-    return ("a spike at vertex %d: its edges fold back on one line"):format(firstBad)
+  if spikeAt then return "spike", spikeAt end
+  if flips > 2 then return "winds" end
+  return "convex"
+end
+
+-- Why a polygon is not convex, for the refusal's message, or nil when it is convex or has no
+-- turn at all (the careful walk, the vertex named).
+local function whyNotConvex(points, n)
+  -- coordinates far outside the exact range are scaled by a power of two first (exact, short
+  -- of underflow), so that no product of differences underflows or overflows
+  local magnitude = largestMagnitude(points, n, 0.0)
+  local scale = 1.0
+  if magnitude < 2^-400 or magnitude > 2^400 then scale = powerScale(magnitude, 2^-64, 1) end
+  local kind, vertex = carefulWalk(points, n, scale, true)
+  if kind == "reflex" then return ("a reflex turn at vertex %d"):format(vertex) end
+  if kind == "spike" then
+    return ("a spike at vertex %d: its edges fold back on one line"):format(vertex)
   end
-  if flips > 2 then return "its turns all agree but it winds around more than once: it crosses itself" end
+  if kind == "winds" then
+    return "its turns all agree but it winds around more than once: it crosses itself"
+  end
   return nil
 end
 
@@ -279,6 +299,7 @@ M.SPLIT_FIX = SPLIT_FIX
 M.fewPointsMessage = fewPointsMessage
 M.refuseEntries = refuseEntries
 M.whyNotConvex = whyNotConvex
+M.carefulWalk = carefulWalk
 M.convexFilter = convexFilter
 M.convexFilterJit = convexFilterJit
 M.convexFilterJitLoop = convexFilterJitLoop

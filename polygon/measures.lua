@@ -1,14 +1,15 @@
 -- polygon/measures.lua: winding order, area (fast and accurate), convex or concave, centre and
--- centroid, from kernel's exact signs and sums.
+-- centroid, from kernel's exact signs and sums (polygonType's careful walk is convex.lua's).
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local check = require(_PACKAGE .. ".check")
+local carefulWalk = require(_PACKAGE .. ".convex").carefulWalk
 
 local abs, sqrt, min, max = math.abs, math.sqrt, math.min, math.max
 local CROSS_BOUND, shoelaceExact, expSign = kernel.CROSS_BOUND, kernel.shoelaceExact, kernel.expSign
 local expCompress, JIT, SPLITTER = kernel.expCompress, kernel.JIT, kernel.SPLITTER
-local cross, expClear, expAddTriple = kernel.cross, kernel.expClear, kernel.expAddTriple
+local expClear, expAddTriple = kernel.expClear, kernel.expAddTriple
 local expLength, powerScale = kernel.expLength, kernel.powerScale
 local largestMagnitude = kernel.largestMagnitude
 local checkPoints, checkFinitePoints = check.checkPoints, check.checkFinitePoints
@@ -483,51 +484,14 @@ function M.polygonAreaAccurate(points)
   return (twice < 0 and -twice or twice) * 0.5
 end
 
--- The careful walk for polygonType: every turn through cross's exact fallback, repeated vertices
--- skipped, collinear vertices told apart from spikes. Taken only when the one-pass filter below
--- cannot decide (a turn within rounding of zero, a repeated vertex, an overflow or a non-finite
--- coordinate, which it checks for first). Every coordinate is converted before it is compared.
+-- The careful walk for polygonType (convex.lua's, shared with the collision functions' check):
+-- taken only when the one-pass filter below cannot decide (a turn within rounding of zero, a
+-- repeated vertex, an overflow or a non-finite coordinate, which it checks for first).
 local function typeCareful(points, n)
   checkFinitePoints(points, n, "polygonType", "points", 4)
-  local cx, cy = points[n - 1] + 0.0, points[n] + 0.0
-  local j = n - 3
-  while j > 0 and points[j] + 0.0 == cx and points[j + 1] + 0.0 == cy do j = j - 2 end
-  if j < 0 then return nil end   -- all points are one point
-  local px, py = points[j] + 0.0, points[j + 1] + 0.0
-  local turn, spike = 0, false
-  local flips, dir = 0, 0
-  for i = 1, n - 1, 2 do
-    local qx, qy = points[i] + 0.0, points[i + 1] + 0.0
-    if qx ~= cx or qy ~= cy then
-      local s = cross(px, py, cx, cy, cx, cy, qx, qy)
-      if s > 0 then
-        if turn < 0 then return "concave" end
-        turn = 1
-      elseif s < 0 then
-        if turn > 0 then return "concave" end
-        turn = -1
-      elseif cx ~= px then   -- collinear: a spike if the walk reverses (x decides on a line...
-        if (cx > px) ~= (qx > cx) then spike = true end
-      elseif (cy > py) ~= (qy > cy) then   -- ...unless the line is vertical)
-        spike = true
-      end
-      -- Count the changes of sign of the edges' x direction: around a convex polygon there are
-      -- two. Counted along the walk they are one fewer when the first and last edges differ,
-      -- and the count around the cycle is even, so more than two along the walk means more
-      -- than two around.
-      if qx > cx then
-        if dir < 0 then flips = flips + 1 end
-        dir = 1
-      elseif qx < cx then
-        if dir > 0 then flips = flips + 1 end
-        dir = -1
-      end
-      px, py, cx, cy = cx, cy, qx, qy
-    end
-  end
-  if turn == 0 then return nil end   -- no turn at all: every point on one line
-  if spike or flips > 2 then return "concave" end
-  return "convex"
+  local kind = carefulWalk(points, n, 1.0, false)
+  if kind == nil or kind == "convex" then return kind end
+  return "concave"
 end
 
 -- The one-pass filter of polygonType: "convex" or "concave" when every turn's sign is certain

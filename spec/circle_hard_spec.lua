@@ -21,34 +21,8 @@ local SQUARE = { 0, 0, 10, 0, 10, 10, 0, 10 }
 -- (15 + 24 - 24) / 5 = 3 from it, with the foot (5,6) - 3 (0.6,0.8) = (3.2,3.6) inside the edge
 local TRIANGLE = { 0, 0, 8, 0, 0, 6 }
 
--- M: the largest coordinate magnitude involved, the moved centre's included
-local function magnitude(points, cx, cy, dx, dy)
-  local m = math.max(math.abs(cx), math.abs(cy), math.abs(cx + dx), math.abs(cy + dy))
-  for i = 1, #points do m = math.max(m, math.abs(points[i])) end
-  return m
-end
-
--- the answer agrees with the oracle; a push clears for certain, and its length q (a double
--- at least |(dx, dy)|, checked exactly) is at most the exact depth plus 8 eps M, decided
--- exactly: depth >= q - 8 eps M
-local function check(points, cx, cy, r)
-  local expected = oracle.discMeetsPolygon(points, cx, cy, r)
-  local overlap, dx, dy = circleV(points, cx, cy, r)
-  assert.are.equal(expected, overlap ~= false,
-    ("centre (%.17g, %.17g) r %.17g"):format(cx, cy, r))
-  if overlap then
-    assert.is_false(oracle.discMeetsPolygon(points, cx + dx, cy + dy, r))
-    local m = magnitude(points, cx, cy, dx, dy)
-    local q = oracle.lengthAbove(dx, dy)
-    assert.is_true(oracle.circleDepthAtLeast(points, cx, cy, r, q, 8 * EPS * m),
-      ("centre (%.17g, %.17g) r %.17g: push %.17g longer than the depth by more than 8 eps M")
-        :format(cx, cy, r, q))
-    -- the overlap is the depth to a few ulps (the oracle's depth is itself rounded a few times)
-    local depth = oracle.circleDepth(points, cx, cy, r)
-    assert.is_true(math.abs(overlap - depth) <= 8 * EPS * math.max(m, r))
-  end
-  return overlap
-end
+-- the answer, the push's separation and its excess, checked against the oracle
+local check = require "circlecheck"
 
 local function bothWindings(points, body)
   body(points)
