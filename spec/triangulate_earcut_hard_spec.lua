@@ -48,6 +48,15 @@ local function assertCovers(name, points, holes, pieces, convex, message)
   assert(ok, name .. ": " .. tostring(why))
 end
 
+-- A fixture the oracle finds `verdict`: its triangles and its convex parts cover it exactly.
+local function coversFixture(name, verdict)
+  local points, holes = earcut.load(name)
+  assert.are.equal(verdict, oracle.regionCrossing(points, holes))
+  assertCovers(name, points, holes, triangulate(points, holes))
+  local parts, message = convexParts(points, holes)
+  assertCovers(name, points, holes, parts, true, message)
+end
+
 describe("polygonTriangulate and polygonConvexParts on earcut's fixtures", function()
   it("cover the list of every fixture: each is in one list", function()
     local listed = {}
@@ -60,13 +69,7 @@ describe("polygonTriangulate and polygonConvexParts on earcut's fixtures", funct
 
   describe("when the fixture is valid", function()
     for _, name in ipairs(VALID) do
-      it("cover " .. name .. " exactly", function()
-        local points, holes = earcut.load(name)
-        assert.are.equal("valid", oracle.regionCrossing(points, holes))
-        assertCovers(name, points, holes, triangulate(points, holes))
-        local parts, message = convexParts(points, holes)
-        assertCovers(name, points, holes, parts, true, message)
-      end)
+      it("cover " .. name .. " exactly", function() coversFixture(name, "valid") end)
     end
   end)
 
@@ -88,13 +91,7 @@ describe("polygonTriangulate and polygonConvexParts on earcut's fixtures", funct
 
   describe("when the oracle does not decide the fixture", function()
     for _, name in ipairs(UNDECIDED_COVERED) do
-      it("cover " .. name .. " exactly", function()
-        local points, holes = earcut.load(name)
-        assert.are.equal("unknown", oracle.regionCrossing(points, holes))
-        assertCovers(name, points, holes, triangulate(points, holes))
-        local parts, message = convexParts(points, holes)
-        assertCovers(name, points, holes, parts, true, message)
-      end)
+      it("cover " .. name .. " exactly", function() coversFixture(name, "unknown") end)
     end
     for _, name in ipairs(UNDECIDED_REFUSED) do
       it("refuse " .. name .. " with a message", function()

@@ -565,11 +565,13 @@ end
 -- areas add up to the polygon's (holes subtracted) exactly, and no two pieces' interiors
 -- overlap (two convex polygons are disjoint when an edge of one has the other on its outer
 -- side: tested for every pair whose boxes overlap, found by a sweep in x).
--- With `grid` (rectangles of an outline along the axes), a piece vertex may be any point whose
--- x is an input x and whose y an input y, each bit for bit.
+-- With `grid`, a piece vertex may be any point whose x is an input x and whose y an input y,
+-- each bit for bit: the contract of convex parts of an outline whose edges all run along the
+-- axes (rectangles, whose corners may lie where a cut meets an edge), so it is on for those.
 -- @return true, or false and what failed
 function oracle.checkPieces(points, holes, pieces, convex, grid)
   holes = holes or {}
+  grid = grid or (convex and oracle.alongAxes(points, holes))
   local key = function(x, y)
     return ("%.17g %.17g"):format(x, y)
   end
@@ -683,6 +685,7 @@ end
 -- region's winding number: 1 inside, 0 outside and in the holes, so they cover it exactly.
 -- @return true, or false and what failed
 function oracle.checkCover(points, holes, pieces, convex, grid)
+  grid = grid or (convex and oracle.alongAxes(points, holes))
   local ok, why = oracle.checkPieces(points, holes, pieces, convex, grid)
   if not ok then
     return false, why
