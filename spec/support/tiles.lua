@@ -50,7 +50,7 @@ function tiles.loops(set, size, ox, oy)
       end
     end
   end
-  local plain = {}   -- vertices that are no pinch point: every loop has one to start from
+  local plain = {}   -- vertices that are no pinch point: most loops have one to start from
   for _, key in ipairs(order) do
     plain[key] = #outgoing[key] == 1
   end
@@ -59,6 +59,14 @@ function tiles.loops(set, size, ox, oy)
     local edge
     for _, key in ipairs(order) do
       if plain[key] and #outgoing[key] > 0 then
+        edge = table.remove(outgoing[key])
+        break
+      end
+    end
+    -- a loop all of whose vertices are pinch points (an empty tile whose four neighbours are
+    -- filled and whose four diagonal ones are empty) has no plain vertex: start it at a pinch
+    for _, key in ipairs(edge and {} or order) do
+      if #outgoing[key] > 0 then
         edge = table.remove(outgoing[key])
         break
       end
