@@ -69,6 +69,68 @@ describe("polygonConvexParts on outlines along the axes", function()
     end)
   end)
 
+  -- (These cases follow the rects helper's spec, branch `rects`, through polygonConvexParts.)
+  describe("when given the hard cases of tile outlines", function()
+    local function covers(points, holes, want)
+      local parts = assert(convexParts(points, holes))
+      assert.is_true(oracle.checkCover(points, holes, parts, true))
+      for _, part in ipairs(parts) do assert.is_true(isRectangle(part)) end
+      assert.are.same(want, sorted(parts))
+    end
+
+    it("splits a plus into its top arm, the bar across and its bottom arm", function()
+      -- 100 + 300 + 100 = 500, 5 tiles of 10 x 10; the fewest is 3
+      covers({ 10,0, 20,0, 20,10, 30,10, 30,20, 20,20, 20,30, 10,30, 10,20, 0,20, 0,10, 10,10 }, nil,
+        { "0 10 30 20", "10 0 20 10", "10 20 20 30" })
+    end)
+
+    it("splits two tiles meeting at a corner into the two tiles", function()
+      covers({ 0,0, 10,0, 10,10, 20,10, 20,20, 10,20, 10,10, 0,10 }, nil, { "0 0 10 10", "10 10 20 20" })
+    end)
+
+    it("reads repeated points and points in line as the plain outline", function()
+      covers({ 0,0, 25,0, 50,0, 50,0, 50,100, 50,200, 250,200, 250,0, 250,0, 300,0, 300,250, 150,250,
+        0,250, 0,125, 0,0 }, nil, { "0 0 50 200", "0 200 300 250", "250 0 300 200" })
+    end)
+
+    it("covers an outline that runs along itself: a slit up from the bottom, one in from the side", function()
+      -- the slit x = 5, y 5..10 splits the lower band in two: 50 + 25 + 25 = 100; a slit along y
+      -- has no vertical edge inside: the square
+      covers({ 0,0, 10,0, 10,10, 5,10, 5,5, 5,10, 0,10 }, nil, { "0 0 10 5", "0 5 5 10", "5 5 10 10" })
+      covers({ 0,0, 10,0, 10,10, 0,10, 0,5, 5,5, 0,5 }, nil, { "0 0 10 10" })
+    end)
+
+    it("splits a tile map whose two holes touch at a corner into 6", function()
+      -- 4 x 4 tiles of 10 without (2, 2) and (3, 3), touching at (20, 20). Bands: y 0..10 [0, 40];
+      -- 10..20 [0, 10], [20, 40]; 20..30 [0, 20], [30, 40]; 30..40 [0, 40]: none alike above
+      -- another, 6 rectangles, 400 + 100 + 200 + 200 + 100 + 400 = 1400 = 1600 - 2 x 100
+      covers({ 0,0, 40,0, 40,40, 0,40 }, { { 10,10, 20,10, 20,20, 10,20 }, { 20,20, 30,20, 30,30, 20,30 } },
+        { "0 0 40 10", "0 10 10 20", "0 20 20 30", "0 30 40 40", "20 10 40 20", "30 20 40 30" })
+    end)
+
+    it("splits a tile map whose hole touches the outline's notch at a corner into 4", function()
+      -- 3 x 3 tiles without the top left one (the notch) and the middle one (the hole), touching
+      -- at (10, 10): 200 + 100 + 100 + 300 = 700 = 900 - 2 x 100
+      covers({ 10,0, 30,0, 30,30, 0,30, 0,10, 10,10 }, { { 10,10, 20,10, 20,20, 10,20 } },
+        { "0 10 10 20", "0 20 30 30", "10 0 30 10", "20 10 30 20" })
+    end)
+
+    it("splits a frame around a checkerboard of 18 holes, each touching others at its corners", function()
+      -- 8 x 8 tiles, the border filled, inside it the tiles with r + c odd empty: the top and
+      -- bottom rows whole, each row between in 4 runs, none alike above another: 1 + 6 x 4 + 1
+      local set = { cols = 8, rows = 8 }
+      for r = 1, 8 do
+        set[r] = {}
+        for c = 1, 8 do set[r][c] = r == 1 or r == 8 or c == 1 or c == 8 or (r + c) % 2 == 0 end
+      end
+      local shape = tiles.shapes(set, 16, 1e9, -1e9)[1]
+      assert.are.equal(18, #shape[2])
+      local parts = assert(convexParts(shape[1], shape[2]))
+      assert.is_true(oracle.checkCover(shape[1], shape[2], parts, true))
+      assert.are.equal(26, #parts)
+    end)
+  end)
+
   describe("when a box or a ball is pushed out of the parts", function()
     -- Along an axis, by the depth plus the margin that proves the rounded move (a few ulps of
     -- the coordinates: here below 1e-9), and out of every part by the oracle's exact test.
