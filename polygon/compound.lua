@@ -10,9 +10,11 @@ local circle = require(_PACKAGE .. ".circle")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
 local JIT, EXACT_TOP, powerScale = kernel.JIT, kernel.EXACT_TOP, kernel.powerScale
+local twoDiff = kernel.twoDiff
 local nearParts, overlapping, pairPart1 = faces.nearParts, faces.overlapping, faces.pairPart1
 local pairPart2, overlapsConvex = faces.pairPart2, faces.overlapsConvex
 local pairOverlaps, boxPush, pairAdded = faces.pairOverlaps, faces.boxPush, faces.pairAdded
+local exactSidePush = faces.exactSidePush
 local startSearch, addPair, nearestFree = faces.startSearch, faces.addPair, faces.nearestFree
 local pushFree, faceX, faceY, faceC = faces.pushFree, faces.faceX, faces.faceY, faces.faceC
 local faceSeam, faceFirst = faces.faceSeam, faces.faceFirst
@@ -324,7 +326,7 @@ local function collideParts(fname, shape1, shape2, wantPush, parts1, parts2)
     if flat.rects[1] ~= 0 then
       local best, tx, ty = boxPush(parts1 and view1 or view2, parts1 and shape1 or shape2, flat,
         parts1, found, nearCount, leastGapX, leastGapY, margin, window)
-      if best then return best, tx, ty end
+      if best then return exactSidePush(found, best, tx, ty, 1.25 * margin, margin) end
     end
   end
   -- The pairs whose boxes overlap go in now, marked in pairAdded; the others when their box of D
@@ -437,6 +439,8 @@ local function collideParts(fname, shape1, shape2, wantPush, parts1, parts2)
   if best == huge then
     -- No candidate checked free (not expected): 2 E along any direction clears every D.
     best, tx, ty = 2 * extent, faceX[1] * 2 * extent, faceY[1] * 2 * extent
+  elseif k == 1 then
+    best, tx, ty = exactSidePush(np, best, tx, ty, 1.25 * margin, margin)
   end
   return best / k, tx / k + 0.0, ty / k + 0.0
 end
@@ -510,6 +514,44 @@ local function tryCircle(tx, ty, np, need, best, bestX, bestY)
   local d = sqrt(tx * tx + ty * ty)
   if d < best and circleFree(tx, ty, np, need) then return d, tx, ty end
   return best, bestX, bestY
+end
+
+-- A push of a circle along an axis, the depth itself (as exactSidePush for rectangles): the
+-- search's push is the foot on a part's side lifted by `lift`, c + r + lift with c the side's
+-- coordinate less the centre's (a convex part's side along an axis lies on its box). When c and
+-- c + r are exact and the circle moved by c + r (the centre rounded as a game moves it) meets
+-- no part by the exact test, the push is c + r: a ball 5 into a wall of rectangles goes out by
+-- 5. The largest such push among the parts whose lifted side is the push (any order gives it).
+local function exactCirclePush(shape, view, cx, cy, r, best, tx, ty, lift)
+  if (tx ~= 0) == (ty ~= 0) then return best, tx, ty end
+  local boxes, turns, found = view.boxes, view.turns, -huge
+  local reach = r + lift
+  for i = 1, view.count do
+    local a = 4 * i
+    if turns[i] ~= 0 and boxes[a - 3] <= boxes[a - 1] then
+      local c, err
+      if tx > 0 then c, err = twoDiff(boxes[a - 1], cx)
+      elseif tx < 0 then c, err = twoDiff(cx, boxes[a - 3])
+      elseif ty > 0 then c, err = twoDiff(boxes[a], cy)
+      else c, err = twoDiff(cy, boxes[a - 2]) end
+      local d, err2 = twoDiff(c, -r)   -- c + r
+      if err == 0 and err2 == 0 and d > found and c + reach == best then found = d end
+    end
+  end
+  if found <= 0 then return best, tx, ty end
+  local dx = tx > 0 and found or (tx < 0 and -found or 0.0)
+  local dy = ty > 0 and found or (ty < 0 and -found or 0.0)
+  local mx, my = cx + dx, cy + dy   -- the centre moved as a game moves it
+  for i = 1, view.count do
+    local a = 4 * i
+    -- the box tests widened past their own rounding by lift
+    if turns[i] ~= 0 and boxes[a - 3] < mx + reach and mx - reach < boxes[a - 1]
+        and boxes[a - 2] < my + reach and my - reach < boxes[a]
+        and circleCollision(shape[i], #shape[i], mx, my, r) then
+      return best, tx, ty
+    end
+  end
+  return found, dx, dy
 end
 
 -- The nearest free candidate for a circle of (scaled) radius r among parts 1 .. np.
@@ -649,6 +691,8 @@ local function collideCircleParts(fname, shape, cx, cy, r)
   if best == huge then
     -- No candidate checked free (not expected): 2 E along any direction clears every D.
     best, tx, ty = 2 * extent, 0.0, -2 * extent
+  elseif k == 1 then
+    best, tx, ty = exactCirclePush(shape, view, cx, cy, r, best, tx, ty, 1.25 * margin)
   end
   return best / k, tx / k + 0.0, ty / k + 0.0
 end

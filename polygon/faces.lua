@@ -12,6 +12,7 @@ local convexPenetration, minProjection = sat.convexPenetration, sat.minProjectio
 local projectionTolerance, vertexInside = sat.projectionTolerance, sat.vertexInside
 local isAbove, reachBoth, squaredTolerance = sat.isAbove, sat.reachBoth, sat.squaredTolerance
 local JIT, EPS = kernel.JIT, kernel.EPS
+local twoDiff = kernel.twoDiff
 local call, checkCopy, partTurn = views.call, views.checkCopy, views.partTurn
 local partNormals = views.partNormals
 
@@ -1092,6 +1093,37 @@ local function boxPush(info, list, flat, listFirst, found, nearCount, leastGapX,
   return best, bestX + 0.0, bestY + 0.0
 end
 
+-- A push along an axis out of pairs of rectangles, the depth itself: the search's push is the
+-- foot on a side's line lifted by `lift` (c + lift, c the side's constant from the two boxes);
+-- when c is the exact difference of the two box coordinates it comes from, and the move by c,
+-- rounded as a game moves the shape, leaves every pair 1 .. count apart (pushFree: exact for
+-- pairs of rectangles, margin-safe for others), the push is c: a crate sunk 8 into a floor of
+-- rectangles goes up by 8, not 8.000000000005. Among sides whose lifted constant is the push,
+-- the largest exact c (the same whichever order the pairs came in, so a box against a list and
+-- as a one-part list answer alike). Returns the push, as given when no side qualifies.
+local function exactSidePush(count, best, tx, ty, lift, margin)
+  if (tx ~= 0) == (ty ~= 0) then return best, tx, ty end   -- not along an axis
+  local rects, isBox, found = pairRects, pairBox, -huge
+  for p = 1, count do
+    if isBox[p] ~= 0 then
+      local r = 8 * p   -- the first shape's box at r - 7 .. r - 4, the second's at r - 3 .. r
+      local a, b   -- c = a - b, the side's constant in the push's direction (rectPairFaces')
+      if tx > 0 then a, b = rects[r - 5], rects[r - 3]
+      elseif tx < 0 then a, b = rects[r - 1], rects[r - 7]
+      elseif ty > 0 then a, b = rects[r - 4], rects[r - 2]
+      else a, b = rects[r], rects[r - 6] end
+      local c, err = twoDiff(a, b)
+      if err == 0 and c > found and c + lift == best then found = c end
+    end
+  end
+  if found <= 0 then return best, tx, ty end
+  local dx = tx > 0 and found or (tx < 0 and -found or 0.0)
+  local dy = ty > 0 and found or (ty < 0 and -found or 0.0)
+  if not pushFree(dx, dy, count, margin) then return best, tx, ty end
+  return found, dx, dy
+end
+
+M.exactSidePush = exactSidePush
 M.nearParts = nearParts
 M.overlapping = overlapping
 M.pairPart1 = pairPart1

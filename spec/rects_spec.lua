@@ -1,5 +1,5 @@
 -- polygonConvexParts on outlines whose edges, and their holes' edges, all run along the axes
--- (issue 28): axis-parallel rectangles, so that pushes against tile levels go along the axes. Checked
+-- (issue 28): axis-parallel rectangles, so that pushes against tile levels are exact. Checked
 -- by hand on the README's shapes, and on random tile maps against the exact oracle (cover, no
 -- overlap, every corner's coordinates input ones) and against the fewest rectangles possible
 -- (spec/support/rectmin.lua).
@@ -132,31 +132,42 @@ describe("polygonConvexParts on outlines along the axes", function()
   end)
 
   describe("when a box or a ball is pushed out of the parts", function()
-    -- Along an axis, by the depth plus the margin that proves the rounded move (a few ulps of
-    -- the coordinates: here below 1e-9), and out of every part by the oracle's exact test.
-    local function near(value, want) return value >= want and value - want < 1e-9 end
-
-    it("pushes a crate sunk 8 into the U floor straight up", function()
+    -- Along an axis by the depth itself: the coordinates are integers, so every difference is
+    -- exact, and the move by the depth leaves the shapes touching, which is not colliding
+    it("pushes a crate sunk 8 into the U floor up by exactly 8", function()
       -- the crate's bottom at y 208, the floor's top at 200: (0, -8)
       local floor = assert(convexParts(U))
       local crate = { 100,192, 120,192, 120,208, 100,208 }
-      local overlap, dx, dy = polygon.polygonsCollideV(floor, crate)
-      assert.is_true(near(overlap, 8) and dx == 0 and near(-dy, 8),
-        ("%.17g %.17g %.17g"):format(overlap, dx, dy))
-      local moved = {}
-      for i = 1, 8, 2 do moved[i], moved[i + 1] = crate[i] + dx, crate[i + 1] + dy end
+      assert.are.same({ 8, 0, -8 }, { polygon.polygonsCollideV(floor, crate) })
+      assert.are.same({ 8, 0, 8 }, { polygon.polygonsCollideV({ crate }, floor) })   -- the floor moves
+      local moved = { 100,184, 120,184, 120,200, 100,200 }
       for _, part in ipairs(floor) do assert.is_false(oracle.collides(part, moved, true)) end
     end)
 
-    it("pushes a box 8 into the room's wall, and a ball 5 into it, straight out", function()
+    it("pushes a box 8 into the room's wall out by exactly 8, and a ball 5 into it by 5", function()
       -- the left wall ends at x 0: the box from -8 to 12 goes right by 8; the ball at x 0,
-      -- radius 5, right by 5
+      -- radius 5, right by 5, touching the wall at (0, 100)
       local walls = assert(convexParts(FRAME, { ROOM }))
-      local overlap, dx, dy = polygon.polygonsCollideV(walls, { -8,100, 12,100, 12,120, -8,120 })
-      assert.is_true(near(overlap, 8) and near(dx, 8) and dy == 0)
-      overlap, dx, dy = polygon.polygonCircleCollideV(walls, 0, 100, 5)
-      assert.is_true(near(overlap, 5) and near(dx, 5) and dy == 0)
-      for _, part in ipairs(walls) do assert.is_false(oracle.discMeetsPolygon(part, dx, 100 + dy, 5)) end
+      assert.are.same({ 8, 8, 0 }, { polygon.polygonsCollideV(walls, { -8,100, 12,100, 12,120, -8,120 }) })
+      assert.are.same({ 5, 5, 0 }, { polygon.polygonCircleCollideV(walls, 0, 100, 5) })
+      for _, part in ipairs(walls) do assert.is_false(oracle.discMeetsPolygon(part, 5, 100, 5)) end
+    end)
+
+    it("keeps the margin where the depth is no exact difference, and still separates", function()
+      -- at 1e9 + 0.3 the box's coordinates round: its depth is not the difference of two of them
+      local off = 1e9 + 0.3
+      local walls = assert(convexParts(FRAME, { ROOM }))
+      local moved = {}
+      for k, part in ipairs(walls) do
+        moved[k] = {}
+        for i = 1, 8 do moved[k][i] = part[i] + off end
+      end
+      local box = { -8.1 + off, 100 + off, 12 + off, 100 + off, 12 + off, 120 + off, -8.1 + off, 120 + off }
+      local overlap, dx, dy = polygon.polygonsCollideV(moved, box)
+      assert.is_true(overlap > 8.09 and overlap < 8.11 and dy == 0)
+      local after = {}
+      for i = 1, 8, 2 do after[i], after[i + 1] = box[i] + dx, box[i + 1] + dy end
+      for _, part in ipairs(moved) do assert.is_false(oracle.collides(part, after, true)) end
     end)
 
     it("separates a ball in the room's inner corner", function()
