@@ -1592,6 +1592,25 @@ local function exactPushAccepts(name, args, old, new)
   return true
 end
 
+-- polygonContains on a polygon holding NaN: the README says it is not scanned and gets an
+-- answer, which one unspecified; on LuaJIT it depends on which of its paths are compiled when
+-- the call comes (v0.7.0's too: runs differ in the traces LuaJIT's randomized penalties let
+-- it keep), so both sides answering a boolean is the contract.
+local nanContainsAccepted = 0
+local function nanContainsAccepts(name, args, old, new)
+  if name ~= "polygonContains" or not (old[1] and new[1]) then return false end
+  if type(old[2]) ~= "boolean" or type(new[2]) ~= "boolean" then return false end
+  local points = pointsOf(args[1])
+  if type(points) ~= "table" then return false end
+  for _, v in ipairs(points) do
+    if v ~= v then
+      nanContainsAccepted = nanContainsAccepted + 1
+      return true
+    end
+  end
+  return false
+end
+
 -- One call of a case on both sides; the first difference, described, or nil; both results.
 local function oneCall(name, args, n, argsNew)
   local oldF, newF = functionOf(OLD, name, args), functionOf(NEW, name, argsNew)
@@ -1610,6 +1629,7 @@ local function oneCall(name, args, n, argsNew)
   -- an intended change: its rule checked the whole outcome (a refusal leaves `out` unwritten)
   if where and issue29Accepts(name, args, n, old, new) then return nil, old, new end
   if where and shared and exactPushAccepts(name, args, old, new) then return nil, old, new end
+  if where and nanContainsAccepts(name, args, old, new) then return nil, old, new end
   if where then return where, old, new end
   if shared then
     if not unchanged(leftByOld) then return "the two sides left the arguments different", old, new end
@@ -1731,6 +1751,8 @@ local function main(arg1, arg2)
     .. " checked and accepted"):format(holesRuleAccepted))
   print(("issue 28 rule (exact pushes): %d pushes of the depth itself over lists of parts checked and"
     .. " accepted"):format(exactPushAccepted))
+  print(("polygonContains on a polygon holding NaN (any boolean is the contract): %d answers differed"
+    .. " and were accepted"):format(nanContainsAccepted))
   print(("differential: %d calls, %d differences"):format(totalCalls, totalDifferences))
   os.exit(totalDifferences > 0 and 1 or 0)
 end
