@@ -39,6 +39,7 @@ build = {
     ["polygon.compound"] = "polygon/compound.lua",
     ["polygon.collide"] = "polygon/collide.lua",
     ["polygon.transform"] = "polygon/transform.lua",
+    ["polygon.raycast"] = "polygon/raycast.lua",
   },
 }
 test = {

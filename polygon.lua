@@ -52,6 +52,7 @@ local circle      = require(_PACKAGE .. "circle")
 local triangulate = require(_PACKAGE .. "triangulate")
 local transform   = require(_PACKAGE .. "transform")
 local object      = require(_PACKAGE .. "object")
+local raycast     = require(_PACKAGE .. "raycast")
 
 --- Measures
 -- @section measures
@@ -241,6 +242,46 @@ polygon.circlesCollideV = circle.circlesCollideV
 -- infinity, is not convex, has fewer than 3 points or holds point tables, or cx, cy or radius
 -- is not a finite number, or the radius is negative
 polygon.polygonCircleCollideV = collide.polygonCircleCollideV
+
+--- Rays
+-- @section raycast
+
+--- Where the segment from (x1, y1) to (x2, y2) first enters the open interior of a convex
+-- polygon (either winding) or of the union of a list of convex parts: line of sight, hitscan,
+-- ground probes. Touching is not colliding (grazing a vertex or running along an edge is a
+-- miss), and a seam between parts never stops a ray: one along a seam enters where the seam
+-- meets the outline. The hit or miss and the edge are exact; the point at `fraction` lies
+-- within 8 eps M of the exact entry point (M over the segment's ends). Allocates nothing.
+-- @function polygonRayCast
+-- @tparam table points flat array, or a list of convex parts
+-- @number x1
+-- @number y1
+-- @number x2
+-- @number y2
+-- @treturn number|boolean fraction t in [0, 1], the entry at (x1 + t (x2 - x1), y1 + t (y2 -
+-- y1)); 0 when the segment starts strictly inside (then nx, ny are 0 too); or false
+-- @treturn number nx, the unit outward normal of the outline's edge entered (at a vertex,
+-- either edge's)
+-- @treturn number ny
+-- @raise as @{polygonCircleCollideV} for points (a segment too: it is not a polygon), and when
+-- x1, y1, x2 or y2 is not a finite number
+polygon.polygonRayCast = raycast.polygonRayCast
+
+--- As @{polygonRayCast}, against the open disc: a tangent ray is a miss. The normal is
+-- (P(fraction) - centre) / radius, within a few ulps. Allocates nothing.
+-- @function circleRayCast
+-- @number cx
+-- @number cy
+-- @number radius
+-- @number x1
+-- @number y1
+-- @number x2
+-- @number y2
+-- @treturn number|boolean fraction, or false (always for radius 0)
+-- @treturn number nx
+-- @treturn number ny
+-- @raise when an argument is not a finite number or the radius is negative
+polygon.circleRayCast = raycast.circleRayCast
 
 --- Concave shapes
 -- @section triangulate

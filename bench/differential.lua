@@ -1387,6 +1387,11 @@ local function refusalHolds(name, args, message)
     return false
   end
   if what == "has 2 points: a segment; a polygon needs at least 3" then return n == 4 end
+  -- issue 30: a segment's refusal points to the ray cast
+  if what == "has 2 points: a segment; a polygon needs at least 3; for line of sight use "
+      .. "polygonRayCast" then
+    return n == 4
+  end
   if what == "has 1 point; a polygon needs at least 3" then return n == 2 end
   if what == "is empty; a polygon needs at least 3 points" then return n == 0 end
   if what == "holds point tables; pass a flat array {x1, y1, x2, y2, ...}" then

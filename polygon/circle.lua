@@ -818,6 +818,7 @@ function circleCollision(points, n, cx, cy, r)
 end
 
 M.circleCollision = circleCollision
+M.reaches, M.lineWithin, M.dot = reaches, lineWithin, dot   -- for polygon/raycast.lua's discs
 M.edgeWalkJit = edgeWalkJit   -- both bodies, for spec/bodies_compound_spec.lua
 M.edgeWalkPuc = edgeWalkPuc
 

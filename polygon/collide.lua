@@ -258,5 +258,6 @@ end
 
 build(M, true)
 M.unchecked = build({}, false)
+M.resolveShape = resolveShape   -- for polygon/raycast.lua: the same shapes taken, the same refusals
 
 return M

@@ -15,11 +15,14 @@ local M = {}
 -- The fix named by every refusal of a concave shape, in one place.
 local SPLIT_FIX = "split it once with polygonConvexParts and pass the parts"
 
--- What a shape of fewer than 3 points is, for the refusal's message (one place: a pointer to
--- another function for segments is one line here).
+-- What a shape of fewer than 3 points is, for the refusal's message (one place). A segment
+-- handed to a collision function is most often a line of sight: the message points to the ray
+-- cast (which refuses it too, without the pointer to itself).
 local function fewPointsMessage(fname, argname, n)
   if n == 4 then
-    return ("%s: %s has 2 points: a segment; a polygon needs at least 3"):format(fname, argname)
+    local message = ("%s: %s has 2 points: a segment; a polygon needs at least 3"):format(fname, argname)
+    if fname == "polygonRayCast" then return message end
+    return message .. "; for line of sight use polygonRayCast"
   end
   if n == 0 then
     return ("%s: %s is empty; a polygon needs at least 3 points"):format(fname, argname)

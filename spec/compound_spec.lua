@@ -182,7 +182,8 @@ describe("compound shapes", function()
     it("refuses parts with fewer than 3 points (spec/refusals_spec.lua has every message)", function()
       local box = parts.box(8, 2, 10, 5)
       assert.has_error(function() collide({ { 0, 0, 10, 0 }, parts.box(0, 0, 10, 10) }, box) end,
-        "polygonsCollide: points1[1] has 2 points: a segment; a polygon needs at least 3")
+        "polygonsCollide: points1[1] has 2 points: a segment; a polygon needs at least 3; "
+        .. "for line of sight use polygonRayCast")
       assert.has_error(function() collideV({ parts.box(0, 0, 10, 10), {} }, parts.box(8, 2, 10, 5)) end,
         "polygonsCollideV: points1[2] is empty; a polygon needs at least 3 points")
     end)
@@ -396,7 +397,8 @@ describe("compound shapes", function()
         assert.has_error(function() fn({ box, 5 }, { 1, 2, 3 }) end,
           name .. ": points1[2] must be a table, got number")
         assert.has_error(function() fn({ 1, 2, 3, 4 }, { box, 5 }) end,
-          name .. ": points1 has 2 points: a segment; a polygon needs at least 3")
+          name .. ": points1 has 2 points: a segment; a polygon needs at least 3; "
+          .. "for line of sight use polygonRayCast")
         assert.has_error(function() fn({ box, { 0 / 0, 0, 1, 0, 1, 1 } }, { 0, 0, 1 / 0, 0, 1, 1 }) end,
           name .. ": points1 holds a non-finite coordinate")
       end

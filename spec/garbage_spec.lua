@@ -26,6 +26,20 @@ local CIRCLES = {
   { 0, 0, 3 }, { 6, 5, 100 },
 }
 
+-- segments: across, along edges and seams, through corners, from inside, from the boundary,
+-- of no length
+local RAYS = {
+  { -5, 5, 25, 5 }, { 25, 7, -5, 3 }, { -5, 0, 25, 0 }, { -5, -5, 25, 25 }, { 5, 5, 30, 40 },
+  { 0, 5, 20, 5 }, { 10, -5, 10, 25 }, { 5, 5, 5, 5 }, { 12, 14, 12, 14 }, { 40, 40, 50, 50 },
+  { 10, 10, 0, 0 }, { 7, -3, 13, 17 },
+}
+-- lists of parts: two tiles side by side, an L of three tiles, a convex polygon as one part
+local LISTS = {
+  { { 0, 0, 10, 0, 10, 10, 0, 10 }, { 10, 0, 20, 0, 20, 10, 10, 10 } },
+  { { 0, 0, 10, 0, 10, 10, 0, 10 }, { 10, 0, 20, 0, 20, 10, 10, 10 }, { 0, 10, 10, 10, 10, 20, 0, 20 } },
+  { TRIANGLE },
+}
+
 -- the heap growth in KB over N calls of body(i): the least over several runs after warm-up runs
 -- (spec/support/garbage.lua). LuaJIT's compiled traces live on the heap and may still be
 -- recorded, or flushed and recorded again, during any one run; a body that allocates per call
@@ -56,6 +70,20 @@ local CASES = {
     polygon.polygonCircleCollideV(CONVEX[i % #CONVEX + 1], c[1], c[2], c[3])
   end,
   validate = function(i) polygon.validate(POLYS[i % 4 + 1]) end, -- valid inputs only
+  -- rays that hit, miss, graze, start inside and on the boundary, over every convex polygon
+  polygonRayCast = function(i)
+    local r = RAYS[i % #RAYS + 1]
+    polygon.polygonRayCast(CONVEX[i % #CONVEX + 1], r[1], r[2], r[3], r[4])
+  end,
+  -- and over lists of parts: seams crossed and followed, corners where parts meet
+  ["polygonRayCast (parts)"] = function(i)
+    local r = RAYS[i % #RAYS + 1]
+    polygon.polygonRayCast(LISTS[i % #LISTS + 1], r[1], r[2], r[3], r[4])
+  end,
+  circleRayCast = function(i)
+    local c, r = CIRCLES[i % #CIRCLES + 1], RAYS[i % #RAYS + 1]
+    polygon.circleRayCast(c[1], c[2], c[3], r[1], r[2], r[3], r[4])
+  end,
 }
 -- the functions of one polygon, over every polygon in turn
 local ONE_POLYGON = {

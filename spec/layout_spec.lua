@@ -42,6 +42,7 @@ describe("the front, polygon.lua", function()
       triangulate = { "polygonTriangulate", "polygonConvexParts" },
       transform = { "polygonBounds", "polygonTranslate", "polygonRotate" },
       object = { "validate", "Polygon" },
+      raycast = { "polygonRayCast", "circleRayCast" },
     }
     local count = 0
     for file, names in pairs(where) do

@@ -129,7 +129,9 @@ describe("the collision functions", function()
 
   describe("when a shape has fewer than 3 points", function()
     it("refuse a segment, saying it is one", function()
-      refusedEverywhere({ 0, 0, 100, 100 }, "has 2 points: a segment; a polygon needs at least 3")
+      refusedEverywhere({ 0, 0, 100, 100 },
+        "has 2 points: a segment; a polygon needs at least 3; "
+        .. "for line of sight use polygonRayCast")
     end)
 
     it("refuse one point and an empty table", function()
@@ -139,7 +141,8 @@ describe("the collision functions", function()
 
     it("refuse a part of a list with fewer than 3 points", function()
       assert.has_error(function() polygon.polygonsCollideV({ BOX, { 0, 0, 100, 100 } }, NEAR) end,
-        "polygonsCollideV: points1[2] has 2 points: a segment; a polygon needs at least 3")
+        "polygonsCollideV: points1[2] has 2 points: a segment; a polygon needs at least 3; "
+        .. "for line of sight use polygonRayCast")
     end)
   end)
 

@@ -90,9 +90,11 @@ describe("defect: the tutorial's SAT fails on repeated vertices and degenerate p
     local two = { 2, 5, 8, 5 }
     assert.is_true(tutorialCollide(A, two))
     assert.has_error(function() polygon.polygonsCollide(A, two) end,
-      "polygonsCollide: points2 has 2 points: a segment; a polygon needs at least 3")
+      "polygonsCollide: points2 has 2 points: a segment; a polygon needs at least 3; "
+        .. "for line of sight use polygonRayCast")
     assert.has_error(function() polygon.polygonsCollideV(two, A) end,
-      "polygonsCollideV: points1 has 2 points: a segment; a polygon needs at least 3")
+      "polygonsCollideV: points1 has 2 points: a segment; a polygon needs at least 3; "
+        .. "for line of sight use polygonRayCast")
   end)
 end)
 

@@ -1,0 +1,814 @@
+-- polygon/raycast.lua: rays: where a segment first enters a convex polygon, a list of convex
+-- parts (their union) or a disc. Every hit or miss and every choice of edge is an exact sign
+-- (kernel's cross, circle.lua's distance tests); each fraction comes from floating point with an
+-- error bound, or from exact expansions where the bound cannot vouch for it. Relies on kernel,
+-- check, convex, views, sat's unit, circle's tests and collide's shape resolution.
+
+local _PACKAGE = (...):match("^(.+)%.[^%.]+")
+local kernel = require(_PACKAGE .. ".kernel")
+local check = require(_PACKAGE .. ".check")
+local convex = require(_PACKAGE .. ".convex")
+local views = require(_PACKAGE .. ".views")
+local sat = require(_PACKAGE .. ".sat")
+local circle = require(_PACKAGE .. ".circle")
+local collide = require(_PACKAGE .. ".collide")
+
+local abs, sqrt, min, max = math.abs, math.sqrt, math.min, math.max
+local cross, crossExact, CROSS_BOUND = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND
+local EPS, twoDiff, twoProduct, powerScale = kernel.EPS, kernel.twoDiff, kernel.twoProduct, kernel.powerScale
+local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
+local expLength, expansion, expSign = kernel.expLength, kernel.expansion, kernel.expSign
+local expAddSquare = kernel.expAddSquare
+local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
+local checkRadius = check.checkRadius
+local checkConvex = convex.checkConvex
+local listView, call, checkCopy = views.listView, views.call, views.checkCopy
+local unit = sat.unit
+local reaches, lineWithin, dot = circle.reaches, circle.lineWithin, circle.dot
+local resolveShape = collide.resolveShape
+
+local M = {}
+
+
+-- The segment is P(t) = A + t (B - A), t in [0, 1], d = B - A. It hits a shape when some P(t)
+-- lies in the shape's open interior; the fraction is the least such t (an infimum). Against a
+-- convex polygon the sides of the ray's line decide everything: o(v) = d x (v - A) (kernel's
+-- cross, exact) is positive on one side, negative on the other. The line meets the open
+-- interior exactly when some vertex lies on each side; then it crosses the boundary twice, on
+-- the edge where o falls from > 0 to <= 0 and on the one where it rises from < 0 to >= 0. With
+-- w the polygon's area sign (interior points v have w (q - p) x (v - p) > 0 for every edge
+-- p -> q), the edge p -> q is entered along d when w (o(p) - o(q)) > 0: the falling edge when
+-- w > 0, the rising one otherwise. The segment reaches the interior when B lies strictly
+-- inside the entry edge's line and A strictly inside the exit edge's line; A lies strictly
+-- inside the polygon when it is also strictly inside the entry edge's line. All of these are
+-- signs of 2x2 determinants of differences of the given doubles: exact, with no division.
+
+-- The side of the ray's line A -> B that the point v lies on: a number with the sign of
+-- (B - A) x (v - A), exact. Kernel's cross with its filter written out, d = B - A taken once per
+-- ray instead of once per vertex (sideWalk calls this for every vertex; the same differences, so
+-- the same filter). PUC Lua's comparisons of signs (abs is a call there), as crossPuc.
+local function lineSide(vx, vy, ax, ay, bx, by, dx, dy)
+  local l = dx * (vy - ay)
+  local r = dy * (vx - ax)
+  local det = l - r
+  local sum
+  if l > 0 then
+    if r <= 0 then return det end
+    sum = l + r
+  elseif l < 0 then
+    if r >= 0 then return det end
+    sum = -l - r
+  else
+    return det
+  end
+  local bound = CROSS_BOUND * sum
+  if det >= bound or -det >= bound then return det end
+  return crossExact(ax, ay, bx, by, ax, ay, vx, vy)
+end
+
+-- What sideWalk leaves (numbers, so that nothing is allocated): the flat indices (of x) of the
+-- ends of the edge where o falls from > 0 to <= 0 (0 when there is none) and whether o is 0 at
+-- its end; the same for the edge where o rises from < 0 to >= 0; the ends of the run of vertices
+-- on the line (0 when there is none) and the sign of the last vertex off it.
+local fallP, fallQ, fallZero, riseP, riseQ, riseZero = 0, 0, false, 0, 0, false
+local runFirst, runLast, offSide = 0, 0, 0
+
+-- The sides of the ray's line of every vertex of points[1 .. n], walked once around.
+local function sideWalk(points, n, ax, ay, bx, by, dx, dy)
+  local prev = lineSide(points[n - 1] + 0.0, points[n] + 0.0, ax, ay, bx, by, dx, dy)
+  local prevIndex = n - 1
+  fallP, riseP, runFirst, runLast, offSide = 0, 0, 0, 0, 0
+  for i = 1, n - 1, 2 do
+    local s = lineSide(points[i] + 0.0, points[i + 1] + 0.0, ax, ay, bx, by, dx, dy)
+    if prev > 0 then
+      if s <= 0 then fallP, fallQ, fallZero = prevIndex, i, s == 0 end
+    elseif prev < 0 then
+      if s >= 0 then riseP, riseQ, riseZero = prevIndex, i, s == 0 end
+    end
+    if s == 0 then
+      if prev ~= 0 then runFirst = i end
+    else
+      if prev == 0 then runLast = prevIndex end
+      offSide = s
+    end
+    prev, prevIndex = s, i
+  end
+end
+
+-- Whether (x, y) lies strictly inside the convex polygon points[1 .. n] (every edge of nonzero
+-- length turns the same strict way to it; a polygon of zero area has edges both ways). Exact.
+local function insideConvex(points, n, x, y)
+  local sign = 0
+  local px, py = points[n - 1] + 0.0, points[n] + 0.0
+  for i = 1, n - 1, 2 do
+    local qx, qy = points[i] + 0.0, points[i + 1] + 0.0
+    if qx ~= px or qy ~= py then
+      local s = cross(px, py, qx, qy, px, py, x, y)
+      if s == 0 or (sign ~= 0 and (s > 0) ~= (sign > 0)) then return false end
+      sign = s
+    end
+    px, py = qx, qy
+  end
+  return sign ~= 0
+end
+
+-- convexEntry's answers, and what it leaves for an entry: the entry edge's ends (flat indices)
+-- and where the segment enters: ENTERS_EDGE inside the edge, ENTERS_VERTEX at its end q,
+-- ENTERS_AT_A at A itself (fraction 0).
+local MISS, ENTERS, INSIDE = 0, 1, 2
+local ENTERS_EDGE, ENTERS_VERTEX, ENTERS_AT_A = 0, 1, 2
+local entryP, entryQ, entryKind = 0, 0, ENTERS_EDGE
+
+-- After sideWalk found both a falling and a rising edge: whether the segment enters the convex
+-- polygon of area sign w, or starts strictly inside it. Exact.
+local function convexEntry(points, w, ax, ay, bx, by)
+  local p, q, zero, xp, xq = riseP, riseQ, riseZero, fallP, fallQ
+  if w > 0 then p, q, zero, xp, xq = fallP, fallQ, fallZero, riseP, riseQ end
+  local px, py, qx, qy = points[p] + 0.0, points[p + 1] + 0.0, points[q] + 0.0, points[q + 1] + 0.0
+  if cross(px, py, qx, qy, px, py, bx, by) * w <= 0 then return MISS end   -- B not past the entry
+  local rx, ry, sx, sy = points[xp] + 0.0, points[xp + 1] + 0.0, points[xq] + 0.0, points[xq + 1] + 0.0
+  if cross(rx, ry, sx, sy, rx, ry, ax, ay) * w <= 0 then return MISS end   -- A not before the exit
+  local atA = cross(px, py, qx, qy, px, py, ax, ay) * w
+  if atA > 0 then return INSIDE end
+  entryP, entryQ = p, q
+  entryKind = atA == 0 and ENTERS_AT_A or (zero and ENTERS_VERTEX or ENTERS_EDGE)
+  return ENTERS
+end
+
+-- The area sign of a convex polygon that the ray's line crosses (sideWalk found both edges),
+-- from two exact turns instead of the shoelace sum: a vertex off the falling edge's line lies
+-- on its inner side, and of the rising edge's two ends one lies off it unless the polygon has
+-- no area (the two crossings would be one point). 0 for zero area.
+local function crossedTurn(points)
+  local px, py = points[fallP] + 0.0, points[fallP + 1] + 0.0
+  local qx, qy = points[fallQ] + 0.0, points[fallQ + 1] + 0.0
+  local s = cross(px, py, qx, qy, px, py, points[riseP] + 0.0, points[riseP + 1] + 0.0)
+  if s == 0 then s = cross(px, py, qx, qy, px, py, points[riseQ] + 0.0, points[riseQ + 1] + 0.0) end
+  if s > 0 then return 1.0 elseif s < 0 then return -1.0 end
+  return 0.0
+end
+
+-- Fractions. A fraction f is good when A + f d lies within 8 eps M of the exact entry point
+-- (eps = 2^-53, M the largest coordinate magnitude of A and B; the entry point lies between
+-- them, so |Z - A| <= 2 sqrt(2) M): |f - t| |d| <= 8 eps M. Rounding t alone costs eps |Z - A|,
+-- up to 2.83 eps M, so the float formula is trusted only when its own error bound stays below
+-- 4 eps M; else the exact path gives t to within eps, plus order eps^2.
+
+-- (z - a) / (b - a), a != b, to within eps (plus order eps^2): both differences exact as hi + lo,
+-- then one correction of the quotient by its exact residual.
+local function ratioAlong(z, a, b)
+  local nh, nl = twoDiff(z, a)
+  local dh, dl = twoDiff(b, a)
+  if abs(dh) > 2^900 or abs(nh) > 2^900 then   -- twoProduct's split must not overflow
+    nh, nl, dh, dl = nh * 2^-100, nl * 2^-100, dh * 2^-100, dl * 2^-100
+  end
+  local t = nh / dh
+  local ph, pl = twoProduct(t, dh)
+  return t + (((nh - ph) - pl) + (nl - t * dl)) / dh   -- nh - ph exact (Sterbenz)
+end
+
+-- The fraction of the point z, which lies exactly on the ray's line, along the axis on which
+-- the ray moves most.
+local function pointFraction(zx, zy, ax, ay, bx, by)
+  local t
+  if abs(bx - ax) >= abs(by - ay) then t = ratioAlong(zx, ax, bx) else t = ratioAlong(zy, ay, by) end
+  return min(max(t, 0.0), 1.0)
+end
+
+-- Scratch for the exact fractions and orders: compressed expansions copied out of kernel's one.
+local numParts, denParts, partsA, partsB = {}, {}, {}, {}
+
+-- The exact (u1 - u0) x (v1 - v0) of the coordinates times s (a power of two) into kernel's
+-- scratch expansion, compressed; returns its largest component (within an ulp of the value).
+local function crossValue(u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, s)
+  local axh, axl = twoDiff(u1x * s, u0x * s)
+  local ayh, ayl = twoDiff(u1y * s, u0y * s)
+  local bxh, bxl = twoDiff(v1x * s, v0x * s)
+  local byh, byl = twoDiff(v1y * s, v0y * s)
+  expClear()
+  expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
+  expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh)
+  expAddProduct(-ayl, bxl)
+  return expCompress()
+end
+
+-- Copies kernel's scratch expansion into `into`; returns its length.
+local function copyExpansion(into)
+  local len = expLength()
+  for i = 1, len do into[i] = expansion[i] end
+  return len
+end
+
+-- The power of two for the exact fractions: coordinates beyond 2^400 or below 2^-400 in
+-- magnitude are brought into [2^-64, 1] (exact, short of underflow), so that no product of two
+-- differences overflows or underflows.
+local function fractionScale(m)
+  if m > 2^400 or (m < 2^-400 and m > 0) then return powerScale(m, 2^-64, 1) end
+  return 1.0
+end
+
+-- t = ((p - A) x (q - p)) / ((B - A) x (q - p)) from exact expansions of both: the quotient of
+-- their largest components, then one correction by the exact residual num - t0 den.
+local function edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
+  local m = max(abs(px), abs(py), abs(qx), abs(qy), abs(ax), abs(ay), abs(bx), abs(by))
+  local s = fractionScale(m)
+  local numTop = crossValue(ax, ay, px, py, px, py, qx, qy, s)
+  local numLen = copyExpansion(numParts)
+  local denTop = crossValue(ax, ay, bx, by, px, py, qx, qy, s)
+  local denLen = copyExpansion(denParts)
+  local t0 = numTop / denTop
+  expClear()
+  for i = 1, numLen do expAddProduct(numParts[i], 1.0) end
+  for i = 1, denLen do expAddProduct(-t0, denParts[i]) end
+  local residual = expCompress()
+  return t0 + residual / denTop
+end
+
+-- The fraction where the ray crosses the line of the edge p -> q (not parallel to it), and a
+-- bound on its absolute error. In floating point num = (p - A) x e and den = d x e (e = q - p)
+-- are each within Shewchuk's bound CROSS_BOUND (|l| + |r|) of exact, so t = num / den is
+-- within rel = those relative bounds summed, plus eps for the division, to first order (the
+-- second order is negligible once rel < 2^-20). Trusted when the point's error rel t |d| stays
+-- below 4 eps M (|d| <= |dx| + |dy|) and no product has overflowed or lost bits to underflow.
+local function edgeFraction(px, py, qx, qy, ax, ay, bx, by)
+  local dx, dy = bx - ax, by - ay
+  local ex, ey = qx - px, qy - py
+  local wx, wy = px - ax, py - ay
+  local nl, nr, dl, dr = wx * ey, wy * ex, dx * ey, dy * ex
+  local num, den = nl - nr, dl - dr
+  local numSize, denSize = abs(nl) + abs(nr), abs(dl) + abs(dr)
+  local t = num / den
+  local rel = CROSS_BOUND * (numSize / abs(num) + denSize / abs(den))
+  local m = max(abs(ax), abs(ay), abs(bx), abs(by))
+  if rel < 2^-20 and rel * t * (abs(dx) + abs(dy)) <= 4 * EPS * m and numSize > 2^-900
+      and denSize > 2^-900 and numSize < 2^1000 and denSize < 2^1000 then
+    return min(max(t, 0.0), 1.0), 2 * (rel + EPS) * t
+  end
+  t = edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
+  return min(max(t, 0.0), 1.0), 4 * EPS * t
+end
+
+-- The fraction of an entry convexEntry found into points, and a bound on its error.
+local function entryFraction(points, p, q, kind, ax, ay, bx, by)
+  if kind == ENTERS_AT_A then return 0.0, 0.0 end
+  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
+  if kind == ENTERS_VERTEX then
+    local t = pointFraction(qx, qy, ax, ay, bx, by)
+    return t, 4 * EPS * t
+  end
+  local t, err = edgeFraction(points[p] + 0.0, points[p + 1] + 0.0, qx, qy, ax, ay, bx, by)
+  return t, err
+end
+
+-- A convex polygon: false, or fraction, nx, ny (the entry edge's unit outward normal).
+local function castConvex(points, n, ax, ay, bx, by)
+  local dx, dy = bx - ax, by - ay
+  if dx == 0 and dy == 0 then   -- a point: inside or not
+    if insideConvex(points, n, ax, ay) then return 0.0, 0.0, 0.0 end
+    return false
+  end
+  sideWalk(points, n, ax, ay, bx, by, dx, dy)
+  if fallP == 0 or riseP == 0 then return false end   -- the line misses the open interior
+  local w = crossedTurn(points)
+  if w == 0 then return false end
+  local status = convexEntry(points, w, ax, ay, bx, by)
+  if status == MISS then return false end
+  if status == INSIDE then return 0.0, 0.0, 0.0 end
+  local p, q = entryP, entryQ
+  local f = entryFraction(points, p, q, entryKind, ax, ay, bx, by)
+  local px, py, qx, qy = points[p] + 0.0, points[p + 1] + 0.0, points[q] + 0.0, points[q + 1] + 0.0
+  local nx, ny = unit((qy - py) * w, (px - qx) * w)
+  return f, nx, ny
+end
+
+-- Lists of parts. The shape is the union of the parts, so its interior holds the seams between
+-- them. Along the ray the points of the union's interior are (1) the points inside some part
+-- and (2) points on the ray's line L, where L runs along edges, that have parts on both sides:
+-- the cover of L by the edges on it of parts lying left of it, and the one of parts lying right.
+-- So the fraction is the least of the parts' entries and of the start of the stretch of L
+-- covered on both sides (where a seam meets the outline). Which part is entered first is an
+-- exact order (entryOrder), and where the entry point is a vertex (of any part) or A itself the
+-- outline's edge there is found by turning around the point (sweepAround): a part's entry edge
+-- may be a seam there.
+
+-- The order along the ray of two points on its line: -1 when z1 comes first, 1 when z2 does, 0
+-- for the same point. Exact: the coordinate along which the ray moves most.
+local function alongOrder(z1x, z1y, z2x, z2y, dx, dy)
+  local u1, u2, du = z1x, z2x, dx
+  if abs(dy) > abs(dx) then u1, u2, du = z1y, z2y, dy end
+  if u1 == u2 then return 0 end
+  if (u1 < u2) == (du > 0) then return -1 end
+  return 1
+end
+
+-- -1, 0 or 1 for the sign of s.
+local function signOf(s)
+  if s > 0 then return 1 elseif s < 0 then return -1 end
+  return 0
+end
+
+-- The order of two crossings of the ray's line with the lines of edges whose ends each
+-- straddle the other's line (only parts that overlap have such edges): the sign of
+-- s2(Z1) = w2 (q2 - p2) x (Z1 - p2), Z1 the crossing on edge 1, is that of
+-- alpha s2(q1) - beta s2(p1) times that of alpha, alpha = o(p1) and beta = o(q1) (of opposite
+-- signs): degree 4, from exact expansions of the four determinants, scaled so that no product
+-- of four differences overflows. Returns -1 when crossing 1 comes first.
+local function crossingOrder(p1x, p1y, q1x, q1y, p2x, p2y, q2x, q2y, w2, ax, ay, bx, by)
+  local m = max(abs(p1x), abs(p1y), abs(q1x), abs(q1y), abs(p2x), abs(p2y), abs(q2x), abs(q2y),
+    abs(ax), abs(ay), abs(bx), abs(by))
+  local s = m > 0 and powerScale(m, 2^60, 2^124) or 1.0
+  local alphaTop = crossValue(ax, ay, bx, by, ax, ay, p1x, p1y, s)
+  local alphaLen = copyExpansion(partsA)
+  crossValue(p2x, p2y, q2x, q2y, p2x, p2y, q1x, q1y, s)
+  local sqLen = copyExpansion(partsB)
+  expClear()
+  for i = 1, alphaLen do
+    for j = 1, sqLen do expAddProduct(partsA[i], partsB[j]) end
+  end
+  local firstLen = copyExpansion(numParts)   -- alpha s2(q1), kept while beta s2(p1) is made
+  crossValue(ax, ay, bx, by, ax, ay, q1x, q1y, s)
+  local betaLen = copyExpansion(partsA)
+  crossValue(p2x, p2y, q2x, q2y, p2x, p2y, p1x, p1y, s)
+  local spLen = copyExpansion(partsB)
+  expClear()
+  for i = 1, firstLen do expAddProduct(numParts[i], 1.0) end
+  for i = 1, betaLen do
+    for j = 1, spLen do expAddProduct(-partsA[i], partsB[j]) end
+  end
+  local sign = expSign() * w2 * signOf(alphaTop)
+  return signOf(sign)
+end
+
+-- The order along the ray of the entries into two parts (each: the part, its entry edge's ends
+-- p and q, its area sign and convexEntry's kind): -1 when the first is met first, 1 when the
+-- second is, 0 when both enter at the same point. Exact. An entry at a vertex or at A is a point
+-- on the ray's line: against the other edge's line it is before the crossing there when it lies
+-- outside that line. Two crossings inside edges: the second edge's line against the first
+-- edge's ends, whose side is the crossing's unless they straddle the line; then the other way
+-- round; both straddling only for parts that overlap (crossingOrder).
+local function entryOrder(part1, p1, q1, w1, kind1, part2, p2, q2, w2, kind2, ax, ay, bx, by)
+  local z1x, z1y, z2x, z2y = ax, ay, ax, ay
+  if kind1 == ENTERS_VERTEX then z1x, z1y = part1[q1] + 0.0, part1[q1 + 1] + 0.0 end
+  if kind2 == ENTERS_VERTEX then z2x, z2y = part2[q2] + 0.0, part2[q2 + 1] + 0.0 end
+  if kind1 ~= ENTERS_EDGE and kind2 ~= ENTERS_EDGE then
+    return alongOrder(z1x, z1y, z2x, z2y, bx - ax, by - ay)
+  end
+  local a1x, a1y, b1x, b1y = part1[p1] + 0.0, part1[p1 + 1] + 0.0, part1[q1] + 0.0, part1[q1 + 1] + 0.0
+  local a2x, a2y, b2x, b2y = part2[p2] + 0.0, part2[p2 + 1] + 0.0, part2[q2] + 0.0, part2[q2 + 1] + 0.0
+  if kind1 ~= ENTERS_EDGE then
+    return signOf(cross(a2x, a2y, b2x, b2y, a2x, a2y, z1x, z1y) * w2)
+  end
+  if kind2 ~= ENTERS_EDGE then
+    return -signOf(cross(a1x, a1y, b1x, b1y, a1x, a1y, z2x, z2y) * w1)
+  end
+  local sp = signOf(cross(a2x, a2y, b2x, b2y, a2x, a2y, a1x, a1y) * w2)
+  local sq = signOf(cross(a2x, a2y, b2x, b2y, a2x, a2y, b1x, b1y) * w2)
+  if sp * sq >= 0 then return sp ~= 0 and sp or sq end
+  local rp = signOf(cross(a1x, a1y, b1x, b1y, a1x, a1y, a2x, a2y) * w1)
+  local rq = signOf(cross(a1x, a1y, b1x, b1y, a1x, a1y, b2x, b2y) * w1)
+  if rp * rq >= 0 then return -(rp ~= 0 and rp or rq) end
+  return crossingOrder(a1x, a1y, b1x, b1y, a2x, a2y, b2x, b2y, w2, ax, ay, bx, by)
+end
+
+-- Turning around a point Z of the boundary of some parts. Each part with Z on its boundary
+-- covers a wedge of directions from Z, between two spokes along its edges (one spoke each way
+-- along an edge with Z inside it): the part lies on the turning side of its entering spoke and
+-- before its leaving one. Directions are taken by their angle from a reference direction r,
+-- turning the way of a positive cross product; every comparison is an exact sign. The outline's
+-- edge where the ray enters is the first spoke at which the cover starts, turning from
+-- r = A - B (the way the ray comes from) to the side that is not covered next to r; if both
+-- sides are covered, Z is inside the union.
+local spokeX, spokeY, spokePart, spokeEdge, spokeEnters, spokeClass, spokeOrder = {}, {}, {}, {}, {}, {}, {}
+
+-- The class of the direction from Z to v by its angle from r = r1 - r0: 0 for r itself, 1 for
+-- (0, pi), 2 for pi, 3 for (pi, 2 pi).
+local function angleClass(zx, zy, vx, vy, r0x, r0y, r1x, r1y)
+  local c = cross(r0x, r0y, r1x, r1y, zx, zy, vx, vy)
+  if c > 0 then return 1 elseif c < 0 then return 3 end
+  -- on r's line: the same way as r when the differences' signs agree (exact comparisons)
+  if (vx > zx) == (r1x > r0x) and (vx < zx) == (r1x < r0x) and (vy > zy) == (r1y > r0y)
+      and (vy < zy) == (r1y < r0y) then
+    return 0
+  end
+  return 2
+end
+
+-- The order of spokes i and j by angle: -1, 0 or 1.
+local function spokeCompare(i, j, zx, zy)
+  local ci, cj = spokeClass[i], spokeClass[j]
+  if ci ~= cj then return ci < cj and -1 or 1 end
+  if ci == 1 or ci == 3 then
+    return -signOf(cross(zx, zy, spokeX[i], spokeY[i], zx, zy, spokeX[j], spokeY[j]))
+  end
+  return 0
+end
+
+local spokeCount = 0
+
+local function addSpoke(vx, vy, k, edge, enters)
+  spokeCount = spokeCount + 1
+  local s = spokeCount
+  spokeX[s], spokeY[s], spokePart[s], spokeEdge[s], spokeEnters[s] = vx, vy, k, edge, enters
+end
+
+-- The spokes at Z of part k (area sign w, n coordinates), added after those before. Returns
+-- whether Z lies strictly inside the part (no spokes then).
+local function partSpokes(part, n, k, w, zx, zy)
+  local ax, ay = part[n - 1] + 0.0, part[n] + 0.0
+  local before = spokeCount
+  for i = 1, n - 1, 2 do
+    local bx, by = part[i] + 0.0, part[i + 1] + 0.0
+    if (ax ~= bx or ay ~= by) and min(ax, bx) <= zx and zx <= max(ax, bx)
+        and min(ay, by) <= zy and zy <= max(ay, by) then
+      if ax == zx and ay == zy then
+        addSpoke(bx, by, k, i, w > 0)
+      elseif bx == zx and by == zy then
+        addSpoke(ax, ay, k, i, w < 0)
+      elseif cross(ax, ay, bx, by, ax, ay, zx, zy) == 0 then
+        addSpoke(bx, by, k, i, w > 0)
+        addSpoke(ax, ay, k, i, w < 0)
+      end
+    end
+    ax, ay = bx, by
+  end
+  return spokeCount == before and insideConvex(part, n, zx, zy)
+end
+
+-- The unit outward normal of the outline's edge at Z where a ray coming from r0 towards r1
+-- (r = r1 - r0 pointing back along the ray) enters the union, from the parts whose boxes hold
+-- Z; or nil when the union covers every direction around Z (Z inside it).
+local function sweepAround(view, shape, zx, zy, r0x, r0y, r1x, r1y)
+  local boxes, turns, normals = view.boxes, view.turns, view.normals
+  spokeCount = 0
+  local covered = 0   -- the wedges that hold the directions just past r
+  for k = 1, view.count do
+    local b = 4 * k
+    local w = turns[k]
+    if w ~= 0 and boxes[b - 3] <= zx and zx <= boxes[b - 1] and boxes[b - 2] <= zy and zy <= boxes[b] then
+      local part = shape[k]
+      local first = spokeCount + 1
+      if partSpokes(part, view.lengths[k], k, w, zx, zy) then return nil end
+      if spokeCount == first + 1 then   -- a wedge: its entering spoke and its leaving one
+        for s = first, first + 1 do
+          spokeClass[s] = angleClass(zx, zy, spokeX[s], spokeY[s], r0x, r0y, r1x, r1y)
+          -- a leaving spoke along r ends the wedge at a full turn
+          if spokeClass[s] == 0 and not spokeEnters[s] then spokeClass[s] = 4 end
+        end
+        local e, x = first, first + 1
+        if not spokeEnters[e] then e, x = x, e end
+        if spokeClass[e] == 0 or spokeCompare(x, e, zx, zy) < 0 then covered = covered + 1 end
+      else
+        spokeCount = first - 1   -- (a convex part meets a point once: not expected)
+      end
+    end
+  end
+  -- the spokes by angle (insertion sort: a handful)
+  for s = 1, spokeCount do
+    local j = s - 1
+    while j >= 1 and spokeCompare(spokeOrder[j], s, zx, zy) > 0 do
+      spokeOrder[j + 1] = spokeOrder[j]
+      j = j - 1
+    end
+    spokeOrder[j + 1] = s
+  end
+  -- turning from r: the first spoke where the cover starts (when none holds the directions
+  -- just past r), else the last spoke where it ends before the full turn
+  local c, firstStart, lastEnd = covered, 0, 0
+  local g = 1
+  while g <= spokeCount do
+    local h = g
+    while h < spokeCount and spokeCompare(spokeOrder[h + 1], spokeOrder[g], zx, zy) == 0 do h = h + 1 end
+    local class = spokeClass[spokeOrder[g]]
+    if class ~= 0 then   -- (entering spokes along r are in `covered` already)
+      local before = c
+      local entering, leaving = 0, 0
+      for j = g, h do
+        local s = spokeOrder[j]
+        if spokeEnters[s] then c, entering = c + 1, s else c, leaving = c - 1, s end
+      end
+      if before == 0 and c > 0 and firstStart == 0 then firstStart = entering end
+      if class ~= 4 then
+        if c == 0 and before > 0 then lastEnd = leaving elseif c > 0 then lastEnd = 0 end
+      end
+    end
+    g = h + 1
+  end
+  local s = covered == 0 and firstStart or lastEnd
+  if s == 0 then return nil end
+  local normal = normals[spokePart[s]]
+  return normal[spokeEdge[s]], normal[spokeEdge[s] + 1]
+end
+
+-- A vertex of some part (of nonzero area) at the point where the ray crosses the edge p -> q
+-- of part k inside it: its coordinates, or nil. Such a vertex lies in the edge's box, on the
+-- ray's line and on the edge's line.
+local function vertexAtCrossing(view, shape, px, py, qx, qy, ax, ay, bx, by)
+  local x0, x1, y0, y1 = min(px, qx), max(px, qx), min(py, qy), max(py, qy)
+  local boxes, turns = view.boxes, view.turns
+  local dx, dy = bx - ax, by - ay
+  for k = 1, view.count do
+    local b = 4 * k
+    if turns[k] ~= 0 and boxes[b - 3] <= x1 and x0 <= boxes[b - 1] and boxes[b - 2] <= y1
+        and y0 <= boxes[b] then
+      local part = shape[k]
+      for i = 1, view.lengths[k] - 1, 2 do
+        local vx, vy = part[i] + 0.0, part[i + 1] + 0.0
+        if x0 <= vx and vx <= x1 and y0 <= vy and vy <= y1
+            and lineSide(vx, vy, ax, ay, bx, by, dx, dy) == 0
+            and cross(px, py, qx, qy, px, py, vx, vy) == 0 then
+          return vx, vy
+        end
+      end
+    end
+  end
+  return nil
+end
+
+-- The stretches of the ray's line covered by parts' edges on it: per cover the side its part
+-- lies on (the sign of o off the line) and its ends, ordered along the ray.
+local coverSide, coverLoX, coverLoY, coverHiX, coverHiY = {}, {}, {}, {}, {}
+
+-- Whether the point c on the ray's line has covers on both sides from it on: some cover of
+-- each side with lo <= c < hi. strict: lo < c < hi instead (then c is inside the union).
+local function coveredBothWays(covers, cx, cy, dx, dy, strict)
+  local left, right = false, false
+  for i = 1, covers do
+    local lo = alongOrder(coverLoX[i], coverLoY[i], cx, cy, dx, dy)
+    if (lo < 0 or (lo == 0 and not strict)) and alongOrder(cx, cy, coverHiX[i], coverHiY[i], dx, dy) < 0 then
+      if coverSide[i] > 0 then left = true else right = true end
+    end
+  end
+  return left and right
+end
+
+-- The union's interior against a point (the segment of no length): 0, 0, 0 or false.
+local function pointInParts(view, shape, x, y)
+  local boxes, turns = view.boxes, view.turns
+  for k = 1, view.count do
+    local b = 4 * k
+    if turns[k] ~= 0 and boxes[b - 3] <= x and x <= boxes[b - 1] and boxes[b - 2] <= y and y <= boxes[b]
+        and insideConvex(shape[k], view.lengths[k], x, y) then
+      return 0.0, 0.0, 0.0
+    end
+  end
+  -- on seams: covered all around? (any reference direction: a point off (x, y) on its row)
+  local rx = x + 1.0
+  if rx == x then rx = 2 * x end
+  if sweepAround(view, shape, x, y, x, y, rx, y) == nil and spokeCount > 0 then return 0.0, 0.0, 0.0 end
+  return false
+end
+
+-- polygonRayCast for a list of parts: false, or fraction, nx, ny. Its steps: the list's view,
+-- each part whose box meets the segment's (its entry, in order with the best so far; or the
+-- cover of the line by its edge on it), the start of the seams covered both ways, then the
+-- normal at the entry (sweepAround where the entry point is a vertex or A).
+local function castParts(fname, shape, ax, ay, bx, by)
+  local view = listView(fname, "points", shape)
+  call.stamp = call.stamp + 1
+  local stamp = call.stamp
+  local boxes, turns = view.boxes, view.turns
+  for k = 1, view.count do   -- every part whose box holds the segment's: brought up to date
+    local b = 4 * k
+    if boxes[b - 3] <= max(ax, bx) and min(ax, bx) <= boxes[b - 1] and boxes[b - 2] <= max(ay, by)
+        and min(ay, by) <= boxes[b] and view.checked[k] ~= stamp then
+      checkCopy(view, k, shape[k], 4)
+    end
+  end
+  local dx, dy = bx - ax, by - ay
+  if dx == 0 and dy == 0 then
+    local f, nx, ny = pointInParts(view, shape, ax, ay)
+    return f, nx, ny
+  end
+  local bestK, bestP, bestQ, bestW, bestKind, bestT, bestErr = 0, 0, 0, 0.0, 0, 0.0, 0.0
+  local covers = 0
+  for k = 1, view.count do
+    local b = 4 * k
+    local w = turns[k]
+    if w ~= 0 and boxes[b - 3] <= max(ax, bx) and min(ax, bx) <= boxes[b - 1]
+        and boxes[b - 2] <= max(ay, by) and min(ay, by) <= boxes[b] then
+      local part, n = shape[k], view.lengths[k]
+      sideWalk(part, n, ax, ay, bx, by, dx, dy)
+      if fallP ~= 0 and riseP ~= 0 then
+        local status = convexEntry(part, w, ax, ay, bx, by)
+        if status == INSIDE then return 0.0, 0.0, 0.0 end
+        if status == ENTERS then
+          local p, q, kind = entryP, entryQ, entryKind
+          local t, err = entryFraction(part, p, q, kind, ax, ay, bx, by)
+          local order = -1
+          if bestK ~= 0 then
+            if t + err < bestT - bestErr then order = -1
+            elseif bestT + bestErr < t - err then order = 1
+            else order = entryOrder(part, p, q, w, kind, shape[bestK], bestP, bestQ, bestW, bestKind,
+              ax, ay, bx, by) end
+            -- at the same point: an entry at a vertex or at A (sweepAround decides there)
+            if order == 0 and kind ~= ENTERS_EDGE and bestKind == ENTERS_EDGE then order = -1 end
+          end
+          if order < 0 then
+            bestK, bestP, bestQ, bestW, bestKind, bestT, bestErr = k, p, q, w, kind, t, err
+          end
+        end
+      elseif runFirst ~= 0 and runLast ~= 0 and (part[runFirst] ~= part[runLast]
+          or part[runFirst + 1] ~= part[runLast + 1]) then
+        -- an edge on the line: a cover, on the side of the part's other vertices
+        covers = covers + 1
+        local fx, fy = part[runFirst] + 0.0, part[runFirst + 1] + 0.0
+        local lx, ly = part[runLast] + 0.0, part[runLast + 1] + 0.0
+        if alongOrder(fx, fy, lx, ly, dx, dy) > 0 then fx, fy, lx, ly = lx, ly, fx, fy end
+        coverSide[covers], coverLoX[covers], coverLoY[covers] = offSide, fx, fy
+        coverHiX[covers], coverHiY[covers] = lx, ly
+      end
+    end
+  end
+  -- the seams: the least point from A on (before B) with covers on both sides from it on
+  local seamX, seamY
+  if covers > 0 then
+    if coveredBothWays(covers, ax, ay, dx, dy, false) then
+      if coveredBothWays(covers, ax, ay, dx, dy, true) then return 0.0, 0.0, 0.0 end
+      seamX, seamY = ax, ay
+    else
+      for i = 1, covers do
+        local cx, cy = coverLoX[i], coverLoY[i]
+        if alongOrder(ax, ay, cx, cy, dx, dy) < 0 and alongOrder(cx, cy, bx, by, dx, dy) < 0
+            and (not seamX or alongOrder(cx, cy, seamX, seamY, dx, dy) < 0)
+            and coveredBothWays(covers, cx, cy, dx, dy, false) then
+          seamX, seamY = cx, cy
+        end
+      end
+    end
+  end
+  if seamX and bestK ~= 0 then   -- the seam's start against the best part's entry
+    local order
+    local best = shape[bestK]
+    if bestKind ~= ENTERS_EDGE then
+      local zx, zy = ax, ay
+      if bestKind == ENTERS_VERTEX then zx, zy = best[bestQ] + 0.0, best[bestQ + 1] + 0.0 end
+      order = alongOrder(seamX, seamY, zx, zy, dx, dy)
+    else
+      local px, py = best[bestP] + 0.0, best[bestP + 1] + 0.0
+      local qx, qy = best[bestQ] + 0.0, best[bestQ + 1] + 0.0
+      order = signOf(cross(px, py, qx, qy, px, py, seamX, seamY) * bestW)
+    end
+    if order > 0 then seamX = nil end
+  end
+  if seamX then
+    local nx, ny = sweepAround(view, shape, seamX, seamY, bx, by, ax, ay)
+    if seamX == ax and seamY == ay then
+      if nx == nil then return 0.0, 0.0, 0.0 end
+      return 0.0, nx, ny
+    end
+    if nx == nil then return false end   -- (not expected: the seam's start is on the outline)
+    return pointFraction(seamX, seamY, ax, ay, bx, by), nx, ny
+  end
+  if bestK == 0 then return false end
+  local best = shape[bestK]
+  local px, py, qx, qy = best[bestP] + 0.0, best[bestP + 1] + 0.0, best[bestQ] + 0.0, best[bestQ + 1] + 0.0
+  local zx, zy
+  if bestKind == ENTERS_AT_A then
+    zx, zy = ax, ay
+  elseif bestKind == ENTERS_VERTEX then
+    zx, zy = qx, qy
+  else
+    zx, zy = vertexAtCrossing(view, shape, px, py, qx, qy, ax, ay, bx, by)
+  end
+  if zx then
+    local nx, ny = sweepAround(view, shape, zx, zy, bx, by, ax, ay)
+    if nx == nil then
+      if bestKind == ENTERS_AT_A then return 0.0, 0.0, 0.0 end
+    else
+      return bestT, nx, ny
+    end
+  end
+  local normal = view.normals[bestK]
+  return bestT, normal[bestQ], normal[bestQ + 1]
+end
+
+-- polygonRayCast(points, x1, y1, x2, y2): where the segment from (x1, y1) to (x2, y2) first
+-- enters the open interior of a convex polygon (either winding) or of the union of a list of
+-- convex parts: fraction, nx, ny, or false. Touching is not colliding; a segment that starts
+-- strictly inside gives 0, 0, 0. Refuses what the collision functions refuse.
+function M.polygonRayCast(points, x1, y1, x2, y2)
+  local fname = "polygonRayCast"
+  local kind = type(points) == "table" and type(points[1])
+  if kind ~= "number" then
+    points, kind = resolveShape(fname, "points", points, kind, 2)
+    if kind == "table" then
+      checkFiniteNumber(x1, fname, "x1")
+      checkFiniteNumber(y1, fname, "y1")
+      checkFiniteNumber(x2, fname, "x2")
+      checkFiniteNumber(y2, fname, "y2")
+      local f, nx, ny = castParts(fname, points, x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0)
+      if not f then return false end
+      return f, nx, ny
+    end
+  end
+  local n = checkPoints(points, fname, "points", 3, kind)
+  checkFiniteNumber(x1, fname, "x1")
+  checkFiniteNumber(y1, fname, "y1")
+  checkFiniteNumber(x2, fname, "x2")
+  checkFiniteNumber(y2, fname, "y2")
+  checkConvex(points, n, fname, "points", 2)
+  local f, nx, ny = castConvex(points, n, x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0)
+  if not f then return false end
+  return f, nx, ny
+end
+
+-- Discs. The segment meets the open disc exactly when A or B lies strictly inside it, or the
+-- foot of the perpendicular from the centre C lies strictly between A and B and the line passes
+-- strictly within r of C (circle.lua's exact tests). Then with w = A - C the entry is the least
+-- root of Q t^2 + 2 P t + K, Q = |d|^2, P = d.w, K = |w|^2 - r^2 >= 0 (A is not inside), whose
+-- discriminant is G = P^2 - Q K = r^2 Q - X^2, X = d x w (Lagrange's identity), so
+-- t = K / (-P + sqrt(G)) (-P > 0 for a segment that enters from outside): no cancellation once
+-- G is known. The entry point is Z = C + (X (-dy, dx) - sqrt(G) d) / Q, which gives the normal
+-- without the difference Z - C (far from a small circle that difference is mostly rounding).
+-- Near a tangent G is a small difference of large degree-4 terms, so every quantity is taken
+-- from exact expansions of the split differences and carried as hi + lo to the end: t within
+-- eps (plus order eps^2), the normal within a few ulps.
+
+-- The largest two components of kernel's scratch expansion after compressing it: a double
+-- double within order eps^2 of the value.
+local function topTwo()
+  local hi = expCompress()
+  local len = expLength()
+  if len >= 2 then return hi, expansion[len - 1] end
+  return hi, 0.0
+end
+
+-- fraction, nx, ny of the entry of the segment A -> B into the disc (C, r), which it meets and
+-- A does not lie strictly inside.
+local function circleEntry(cx, cy, r, ax, ay, bx, by)
+  local wxh, wxl = twoDiff(ax, cx)
+  local wyh, wyl = twoDiff(ay, cy)
+  local dxh, dxl = twoDiff(bx, ax)
+  local dyh, dyl = twoDiff(by, ay)
+  -- as circle.lua's exact tests: into [2^186, 2^250], so no product of four overflows
+  local s = powerScale(max(abs(wxh), abs(wyh), abs(dxh), abs(dyh), r), 2^186, 2^250)
+  wxh, wxl, wyh, wyl = wxh * s, wxl * s, wyh * s, wyl * s
+  dxh, dxl, dyh, dyl = dxh * s, dxl * s, dyh * s, dyl * s
+  r = r * s
+  expClear()   -- X = d x w
+  expAddProduct(dxh, wyh); expAddProduct(dxh, wyl); expAddProduct(dxl, wyh); expAddProduct(dxl, wyl)
+  expAddProduct(-dyh, wxh); expAddProduct(-dyh, wxl); expAddProduct(-dyl, wxh)
+  expAddProduct(-dyl, wxl)
+  local xh = expCompress()
+  local xLen = copyExpansion(numParts)
+  expClear()   -- Q = |d|^2
+  expAddSquare(dxh, dxl, 1)
+  expAddSquare(dyh, dyl, 1)
+  expCompress()
+  local qLen = copyExpansion(denParts)
+  local rrh, rrl = twoProduct(r, r)
+  expClear()   -- G = r^2 Q - X^2
+  for i = 1, qLen do
+    expAddProduct(denParts[i], rrl)
+    expAddProduct(denParts[i], rrh)
+  end
+  for i = 1, xLen do
+    for j = 1, xLen do expAddProduct(-numParts[i], numParts[j]) end
+  end
+  local gh, gl = topTwo()
+  expClear()   -- P = d.w
+  expAddProduct(dxh, wxh); expAddProduct(dxh, wxl); expAddProduct(dxl, wxh); expAddProduct(dxl, wxl)
+  expAddProduct(dyh, wyh); expAddProduct(dyh, wyl); expAddProduct(dyl, wyh); expAddProduct(dyl, wyl)
+  local ph, pl = topTwo()
+  expClear()   -- K = |w|^2 - r^2
+  expAddSquare(wxh, wxl, 1)
+  expAddSquare(wyh, wyl, 1)
+  expAddProduct(-r, r)
+  local kh, kl = topTwo()
+  -- sqrt(G) as hi + lo: one Newton step from the root of its high part
+  local root = sqrt(gh)
+  local sh, sl = twoProduct(root, root)
+  local rootLo = (((gh - sh) - sl) + gl) / (2 * root)
+  -- D = -P + sqrt(G) as hi + lo (both terms > 0), then t = K / D by one correction
+  local dh, dlo = twoDiff(root, ph)
+  dlo = dlo + (rootLo - pl)
+  local t = kh / dh
+  local th, tl = twoProduct(t, dh)
+  t = t + ((((kh - th) - tl) + kl) - t * dlo) / dh
+  local nx, ny = unit(-root * dxh - xh * dyh, xh * dxh - root * dyh)
+  return min(max(t, 0.0), 1.0), nx, ny
+end
+
+-- circleRayCast: false, or fraction, nx, ny, as polygonRayCast against the open disc.
+function M.circleRayCast(cx, cy, radius, x1, y1, x2, y2)
+  local fname = "circleRayCast"
+  checkFiniteNumber(cx, fname, "cx")
+  checkFiniteNumber(cy, fname, "cy")
+  checkRadius(radius, fname, "radius")
+  checkFiniteNumber(x1, fname, "x1")
+  checkFiniteNumber(y1, fname, "y1")
+  checkFiniteNumber(x2, fname, "x2")
+  checkFiniteNumber(y2, fname, "y2")
+  cx, cy, radius = cx + 0.0, cy + 0.0, radius + 0.0
+  local ax, ay, bx, by = x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0
+  if radius == 0 then return false end   -- the open disc is empty
+  if reaches(cx, cy, ax, ay, radius, 0.0) > 0 then return 0.0, 0.0, 0.0 end
+  if not (reaches(cx, cy, bx, by, radius, 0.0) > 0 or (dot(ax, ay, cx, cy, bx, by) > 0
+      and dot(bx, by, cx, cy, ax, ay) > 0 and lineWithin(ax, ay, bx, by, cx, cy, radius) > 0)) then
+    return false
+  end
+  local f, nx, ny = circleEntry(cx, cy, radius, ax, ay, bx, by)
+  return f, nx, ny
+end
+
+return M
