@@ -9,6 +9,7 @@ local exact = require "exact"
 local prng = require "prng"
 local shapes = require "shapes"
 local tiles = require "tiles"
+local parts = require "parts"
 local callsite = require "callsite"
 local raycast = require "polygon.raycast"
 local convex = require "polygon.convex"
@@ -178,10 +179,11 @@ describe("polygonRayCast", function()
   describe("when given what the collision functions refuse", function()
     local BOX = { 50, 10, 70, 10, 70, 30, 50, 30 }
     it("refuses a concave polygon, naming the vertex and the fix", function()
-      assert.has_error(function() cast({ 0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100 }, 0, 0, 1, 1) end,
+      local L = { 0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100 }
+      assert.has_error(function() cast(L, 0, 0, 1, 1) end,
         "polygonRayCast: points is not convex (a reflex turn at vertex 4); split it once with "
         .. "polygonConvexParts and pass the parts")
-      assert.has_error(function() cast({ BOX, { 0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100 } }, 0, 0, 1, 1) end,
+      assert.has_error(function() cast({ BOX, L }, 0, 0, 1, 1) end,
         "polygonRayCast: points[2] is not convex (a reflex turn at vertex 4); split it once with "
         .. "polygonConvexParts and pass the parts")
     end)
@@ -191,13 +193,15 @@ describe("polygonRayCast", function()
         "polygonRayCast: points has 2 points: a segment; a polygon needs at least 3")
       assert.has_error(function() cast({}, 0, 0, 1, 1) end,
         "polygonRayCast: points is empty; a polygon needs at least 3 points")
-      assert.has_error(function() cast({ { x = 0, y = 0 }, { x = 1, y = 0 }, { x = 1, y = 1 } }, 0, 0, 1, 1) end,
+      local pointTables = { { x = 0, y = 0 }, { x = 1, y = 0 }, { x = 1, y = 1 } }
+      assert.has_error(function() cast(pointTables, 0, 0, 1, 1) end,
         "polygonRayCast: points holds point tables; pass a flat array {x1, y1, x2, y2, ...}")
       assert.has_error(function() cast({ "0", "0", "1", "0", "1", "1" }, 0, 0, 1, 1) end,
         "polygonRayCast: points[1] must be a number, got string")
       assert.has_error(function() cast({ BOX, { 0, 0, 1, 1 } }, 0, 0, 1, 1) end,
         "polygonRayCast: points[2] has 2 points: a segment; a polygon needs at least 3")
-      assert.has_error(function() cast(nil, 0, 0, 1, 1) end, "polygonRayCast: points must be a table, got nil")
+      assert.has_error(function() cast(nil, 0, 0, 1, 1) end,
+        "polygonRayCast: points must be a table, got nil")
     end)
 
     it("refuses non-finite coordinates and ends", function()
@@ -342,7 +346,7 @@ describe("rays, hard cases: starting inside", function()
       assert.are.same({ 0, 0, 0 }, { checkConvex(moved(TRIANGLE, o), o + 1, o + 1, o + 1, o + 1) })
       local grid = {}
       for r = 0, 1 do
-        for c = 0, 1 do grid[#grid + 1] = { c * 10, r * 10, c * 10 + 10, r * 10, c * 10 + 10, r * 10 + 10, c * 10, r * 10 + 10 } end
+        for c = 0, 1 do grid[#grid + 1] = parts.box(c * 10, r * 10, 10, 10) end
       end
       local list, rings = movedList(grid, o), { moved({ 0, 0, 20, 0, 20, 20, 0, 20 }, o) }
       assert.are.same({ 0, 0, 0 }, { checkList(list, rings, o + 10, o + 10, o + 30, o + 10) })
@@ -358,7 +362,7 @@ describe("rays, hard cases: along the seams of tiles", function()
       -- a 3 x 3 block of tiles 10 wide: every seam, both ways, axis-parallel, and one ulp aside
       local grid = {}
       for r = 0, 2 do
-        for c = 0, 2 do grid[#grid + 1] = { c * 10, r * 10, c * 10 + 10, r * 10, c * 10 + 10, r * 10 + 10, c * 10, r * 10 + 10 } end
+        for c = 0, 2 do grid[#grid + 1] = parts.box(c * 10, r * 10, 10, 10) end
       end
       local list, rings = movedList(grid, o), { moved({ 0, 0, 30, 0, 30, 30, 0, 30 }, o) }
       for _, x in ipairs({ 0, 10, 20, 30 }) do
