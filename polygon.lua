@@ -53,6 +53,7 @@ local triangulate = require(_PACKAGE .. "triangulate")
 local transform   = require(_PACKAGE .. "transform")
 local object      = require(_PACKAGE .. "object")
 local raycast     = require(_PACKAGE .. "raycast")
+local closest     = require(_PACKAGE .. "closest")
 
 --- Measures
 -- @section measures
@@ -282,6 +283,22 @@ polygon.polygonRayCast = raycast.polygonRayCast
 -- @treturn number ny
 -- @raise when an argument is not a finite number or the radius is negative
 polygon.circleRayCast = raycast.circleRayCast
+
+--- The nearest point of the polygon's boundary to (x, y), and the signed distance to it: AI
+-- sensing, snapping, aim assist. Any polygon, convex or not (a self-intersecting one too: its
+-- edges are the boundary). The point and the distance are within 8 eps M of exact (M over the
+-- polygon and the point); the sign is exact. Allocates nothing.
+-- @function polygonClosestPoint
+-- @tparam table points flat array `{x1, y1, x2, y2, ...}`, at least one point
+-- @number x
+-- @number y
+-- @treturn number px, the nearest point of the boundary
+-- @treturn number py
+-- @treturn number distance from (x, y) to it: negative when (x, y) lies inside by
+-- @{polygonContains}, 0 on the boundary (then px, py is (x, y))
+-- @raise when points is not a flat array of finite numbers (empty, point tables, a list of
+-- parts), or x or y is not a finite number
+polygon.polygonClosestPoint = closest.polygonClosestPoint
 
 --- Concave shapes
 -- @section triangulate

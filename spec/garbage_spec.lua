@@ -80,6 +80,12 @@ local CASES = {
     local r = RAYS[i % #RAYS + 1]
     polygon.polygonRayCast(LISTS[i % #LISTS + 1], r[1], r[2], r[3], r[4])
   end,
+  -- nearest points of convex and concave polygons, from outside, inside, on the boundary, at
+  -- ties between edges
+  polygonClosestPoint = function(i)
+    local q = POINTS[i % #POINTS + 1]
+    polygon.polygonClosestPoint(POLYS[i % #POLYS + 1], q[1], q[2])
+  end,
   circleRayCast = function(i)
     local c, r = CIRCLES[i % #CIRCLES + 1], RAYS[i % #RAYS + 1]
     polygon.circleRayCast(c[1], c[2], c[3], r[1], r[2], r[3], r[4])

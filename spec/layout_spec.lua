@@ -43,6 +43,7 @@ describe("the front, polygon.lua", function()
       transform = { "polygonBounds", "polygonTranslate", "polygonRotate" },
       object = { "validate", "Polygon" },
       raycast = { "polygonRayCast", "circleRayCast" },
+      closest = { "polygonClosestPoint" },
     }
     local count = 0
     for file, names in pairs(where) do
