@@ -37,7 +37,8 @@ describe("polygonClosestPoint", function()
       -- (8, 6) from the hypotenuse: 3 * 8 + 4 * 6 - 24 = 24, over |(3, 4)| = 5: 4.8, at
       -- (8, 6) - 4.8 (0.6, 0.8) = (5.12, 2.16)
       local px, py, d = closest(TRIANGLE, 8, 6)
-      assert.is_true(math.abs(px - 5.12) < 1e-14 and math.abs(py - 2.16) < 1e-14 and math.abs(d - 4.8) < 1e-14)
+      assert.is_true(math.abs(px - 5.12) < 1e-14 and math.abs(py - 2.16) < 1e-14)
+      assert.is_true(math.abs(d - 4.8) < 1e-14)
     end)
 
     it("finds a vertex from beyond it, and answers 0 on the boundary", function()
@@ -71,8 +72,10 @@ describe("polygonClosestPoint", function()
         "polygonClosestPoint: points must hold an even number of coordinates, got 3")
       assert.has_error(function() closest({ 0, 0, 0 / 0, 1 }, 0, 0) end,
         "polygonClosestPoint: points holds a non-finite coordinate")
-      assert.has_error(function() closest(SQUARE, 0, 1 / 0) end, "polygonClosestPoint: y must be finite, got inf")
-      assert.has_error(function() closest(nil, 0, 0) end, "polygonClosestPoint: points must be a table, got nil")
+      assert.has_error(function() closest(SQUARE, 0, 1 / 0) end,
+        "polygonClosestPoint: y must be finite, got inf")
+      assert.has_error(function() closest(nil, 0, 0) end,
+        "polygonClosestPoint: points must be a table, got nil")
       for _, args in ipairs({ { {}, 0, 0 }, { { SQUARE }, 0, 0 }, { SQUARE, "x", 0 }, { nil, 0, 0 },
           { { 0, 0, 0 / 0, 1 }, 0, 0 } }) do
         local ok, err = callsite.raisesAtCaller(closest, args)
@@ -84,7 +87,8 @@ end)
 
 describe("polygonClosestPoint, hard cases: on the boundary and one ulp either side", function()
   for _, o in ipairs(OFFSETS) do
-    it("answers 0 exactly on edges and vertices, a tiny signed distance beside them (offset " .. o .. ")", function()
+    it("answers 0 exactly on edges and vertices, a tiny signed distance beside them (offset "
+        .. o .. ")", function()
       local sq, tri = moved(SQUARE, o), moved(TRIANGLE, o)
       assert.are.same({ o + 10, o + 5, 0 }, { checked(sq, o + 10, o + 5) })
       assert.are.same({ o, o, 0 }, { checked(sq, o, o) })
