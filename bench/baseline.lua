@@ -208,6 +208,72 @@ function baseline.polygonCircleCollideV(points, cx, cy, radius)
   return best, bestX, bestY
 end
 
+-- Issue 30's queries are not in the tutorial: these are the float loops a user writes by hand,
+-- the references of polygon.lua's exact ones. Each edge's crossing with the segment by the
+-- usual parametric formula (t along the segment, u along the edge, both in [0, 1]), the least
+-- t kept with its edge's normal (turned by the edge's direction, not the polygon's winding):
+-- touching counts as a hit and a segment from inside reports where it leaves.
+function baseline.polygonRayCast(points, x1, y1, x2, y2)
+  local n = #points
+  local best, bnx, bny
+  local dx, dy = x2 - x1, y2 - y1
+  local j = n - 1
+  for i = 1, n - 1, 2 do
+    local ax, ay, bx, by = points[j], points[j + 1], points[i], points[i + 1]
+    local ex, ey = bx - ax, by - ay
+    local den = dx * ey - dy * ex
+    if den ~= 0 then
+      local wx, wy = ax - x1, ay - y1
+      local t = (wx * ey - wy * ex) / den
+      local u = (wx * dy - wy * dx) / den
+      if t >= 0 and t <= 1 and u >= 0 and u <= 1 and (not best or t < best) then
+        best = t
+        local len = sqrt(ex * ex + ey * ey)
+        bnx, bny = ey / len, -ex / len
+      end
+    end
+    j = i
+  end
+  if best then return best, bnx, bny end
+  return false
+end
+
+-- The quadratic |A + t d - C|^2 = r^2 by the school formula.
+function baseline.circleRayCast(cx, cy, radius, x1, y1, x2, y2)
+  local dx, dy = x2 - x1, y2 - y1
+  local fx, fy = x1 - cx, y1 - cy
+  local a, b, c = dx * dx + dy * dy, 2 * (fx * dx + fy * dy), fx * fx + fy * fy - radius * radius
+  if c < 0 then return 0, 0, 0 end
+  local disc = b * b - 4 * a * c
+  if a == 0 or disc < 0 then return false end
+  local t = (-b - sqrt(disc)) / (2 * a)
+  if t < 0 or t > 1 then return false end
+  local px, py = x1 + t * dx - cx, y1 + t * dy - cy
+  return t, px / radius, py / radius
+end
+
+-- The projection on every edge, clamped, the nearest kept; the sign by the tutorial's crossing
+-- rule.
+function baseline.polygonClosestPoint(points, x, y)
+  local n = #points
+  local best, bx, by = math.huge, 0, 0
+  local j = n - 1
+  for i = 1, n - 1, 2 do
+    local ax, ay = points[j], points[j + 1]
+    local ex, ey = points[i] - ax, points[i + 1] - ay
+    local length = ex * ex + ey * ey
+    local u = length > 0 and ((x - ax) * ex + (y - ay) * ey) / length or 0
+    if u < 0 then u = 0 elseif u > 1 then u = 1 end
+    local px, py = ax + u * ex, ay + u * ey
+    local d = (x - px) * (x - px) + (y - py) * (y - py)
+    if d < best then best, bx, by = d, px, py end
+    j = i
+  end
+  local distance = sqrt(best)
+  if baseline.polygonContains(points, x, y) then distance = -distance end
+  return bx, by, distance
+end
+
 -- The tutorial's class, reduced to what the benchmark times.
 local Polygon = {}
 Polygon.__index = Polygon

@@ -32,6 +32,8 @@ local W = require "bench.workloads"
 local oracle = require "oracle"
 local shapes = require "shapes"
 local exact = require "exact"
+local rays = require "rays"
+local nearest = require "nearest"
 
 local huge, sqrt, abs, max = math.huge, math.sqrt, math.abs, math.max
 local clock, jit = os.clock, rawget(_G, "jit")
@@ -184,6 +186,15 @@ workload("pFar", "convex 6-8 pairs, mixed, translated by 1e6",
 workload("ciMix", "4-16 vertices, circles at an edge, a corner, missing, inside",
          W.circles(SIZES.circles, { 1, 2, 3, 4 }))
 workload("ciIn", "4-16 vertices, small circle near the middle", W.circles(SIZES.circles, { 4 }))
+local segments = W.rays(SIZES.circles, { 1, 2, 3, 4 })
+workload("rMix", "convex 4-12, segments: 1/4 through, 1/4 passing by, 1/4 short, 1/4 from inside", segments)
+workload("rHit", "convex 4-12, segments through the polygon", W.rays(SIZES.circles, { 1 }))
+workload("rMiss", "convex 4-12, segments passing by", W.rays(SIZES.circles, { 2 }))
+workload("rFar", "convex 4-12, segments, mixed, translated by 1e6", { shapes.translateEach(segments[1], 1e6,
+  -0.6e6), W.shift(segments[2], 1e6), W.shift(segments[3], -0.6e6), W.shift(segments[4], 1e6),
+  W.shift(segments[5], -0.6e6) })
+workload("crMix", "discs, segments: 1/4 through, passing, short, from inside", W.circleRays(SIZES.circles))
+workload("npOrd", "4-16 vertices, half convex, points in and around the box", W.nearestQueries(ordinary))
 workload("prOrd", "convex 6-8, a vertex and an edge normal", W.projections(mixed[1]))
 workload("pcOrd", "random circle, point and axis", W.circleProjections(SIZES.circles))
 
@@ -272,6 +283,81 @@ for key, both in pairs({ ["1"] = false, ["2"] = true }) do
   evaluate["collideV" .. key] = function(wl, f) return displacementSummary(wl, f, refs(wl, key, push)) end
 end
 
+-- Rays (issue 30): `wrong` counts hit, miss and start-inside answers other than the exact ones
+-- (spec/support/rays.lua); `frac` is the largest |f - t| |d| / (eps M) over the hits both agree
+-- on (M over the segment's ends), `normal` the largest error of the normal's components in eps,
+-- against the nearest of the edges entered.
+local function rayError(wl, call, want)
+  local wrong, fracs, normals = 0, {}, {}
+  local a = wl.args
+  for i = 1, wl.n do
+    local f, nx, ny = call(i)
+    local w = want[i]
+    local ax, ay, bx, by = a[#a - 3][i], a[#a - 2][i], a[#a - 1][i], a[#a][i]
+    if w == nil or w == "inside" then
+      if (w == nil and f ~= false) or (w == "inside" and not (f == 0 and nx == 0 and ny == 0)) then
+        wrong = wrong + 1
+      end
+    elseif type(f) ~= "number" then
+      wrong = wrong + 1
+    else
+      local M = max(abs(ax), abs(ay), abs(bx), abs(by))
+      local dx, dy = exact.sub(exact.new(bx), exact.new(ax)), exact.sub(exact.new(by), exact.new(ay))
+      local gap = exact.sub(exact.mul(exact.new(f), w.den), w.num)
+      local length = sqrt(exact.tonumber(exact.add(exact.mul(dx, dx), exact.mul(dy, dy))))
+      fracs[#fracs + 1] = abs(exact.tonumber(gap) / exact.tonumber(w.den)) * length / (2 ^ -53 * M)
+      local best = huge
+      for _, m in ipairs(w.normals) do best = math.min(best, max(abs(nx - m[1]), abs(ny - m[2]))) end
+      normals[#normals + 1] = best / 2 ^ -53
+    end
+  end
+  return { wrong = wrong, total = wl.n, text = ("wrong %d/%d; frac %.2g eps M, normal %.2g eps (max)")
+    :format(wrong, wl.n, quantile(fracs, 1) or 0, quantile(normals, 1) or 0) }
+end
+
+function evaluate.ray(wl, call)
+  if not wl.refs.ray then   -- (refs passes four columns; a segment takes five)
+    local a, list = wl.args, {}
+    for i = 1, wl.n do list[i] = rays.convexEntry(a[1][i], a[2][i], a[3][i], a[4][i], a[5][i]) or false end
+    wl.refs.ray = list
+  end
+  local want = {}
+  for i = 1, wl.n do want[i] = wl.refs.ray[i] or nil end
+  return rayError(wl, call, want)
+end
+
+-- discs: `wrong` counts hit, miss and start-inside answers other than the exact ones, and
+-- entries whose fraction is beyond 8 eps M or whose normal is beyond 16 eps of exact
+-- (spec/support/rays.lua's discEntryGood)
+function evaluate.circleRay(wl, call)
+  local a, wrong = wl.args, 0
+  for i = 1, wl.n do
+    local cx, cy, r, ax, ay, bx, by = a[1][i], a[2][i], a[3][i], a[4][i], a[5][i], a[6][i], a[7][i]
+    local meets = rays.discMeets(cx, cy, r, ax, ay, bx, by)
+    local f, nx, ny = call(i)
+    if meets == nil then
+      if f ~= false then wrong = wrong + 1 end
+    elseif meets == "inside" then
+      if not (f == 0 and nx == 0 and ny == 0) then wrong = wrong + 1 end
+    elseif type(f) ~= "number" or not rays.discEntryGood(f, nx, ny, cx, cy, r, ax, ay, bx, by) then
+      wrong = wrong + 1
+    end
+  end
+  return { wrong = wrong, total = wl.n,
+    text = ("wrong %d/%d (beyond 8 eps M or 16 eps)"):format(wrong, wl.n) }
+end
+
+-- nearest points: `wrong` counts answers nearest.check refuses (sign, distance or point beyond
+-- 8 eps M of exact)
+function evaluate.nearest(wl, call)
+  local wrong, a = 0, wl.args
+  for i = 1, wl.n do
+    local px, py, d = call(i)
+    if not nearest.check(a[1][i], a[2][i], a[3][i], px, py, d) then wrong = wrong + 1 end
+  end
+  return { wrong = wrong, total = wl.n, text = ("wrong %d/%d"):format(wrong, wl.n) }
+end
+
 function evaluate.area(wl, call)
   local want, errs = refs(wl, "area", oracle.area), {}
   for i = 1, wl.n do errs[i] = ulpError(want[i], call(i)) end
@@ -323,6 +409,9 @@ row("polygonCircleCollideV", "ciMix", "v3", "circleV")
 row("polygonCircleCollideV", "ciIn", "v3", "circleV")
 row("projectCircle", "pcOrd", "num2", "none")
 row("validate", "ord", "bool", "valid", "validate")
+for _, k in ipairs({ "rMix", "rHit", "rMiss", "rFar" }) do row("polygonRayCast", k, "v3", "ray") end
+row("circleRayCast", "crMix", "v3", "circleRay")
+row("polygonClosestPoint", "npOrd", "v3", "nearest")
 -- the convexity check's cost (issue 29): each collision row against the same function without it
 for _, f in ipairs({ { "polygonCollidesWith", "bool", "collide1" }, { "polygonsCollide", "bool", "collide2" },
                      { "polygonCollidesWithV", "v3", "collideV1" },
@@ -342,6 +431,7 @@ local TARGETS = {
   { "polygonAreaAccurate", "ord", 3, 3 },
   { "polygonAreaAccurate", "far9", 3, 3 },
   { "polygonAreaAccurate", "big", 3, 3 },
+  { "polygonRayCast", "rMix", 1.5, 2 },
 }
 
 ---------------------------------------------------------------------------------------------

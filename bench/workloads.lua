@@ -278,6 +278,82 @@ function W.circles(count, kinds)
 end
 
 ---------------------------------------------------------------------------------------------
+-- Rays and nearest points (issue 30)
+---------------------------------------------------------------------------------------------
+-- points, x1, y1, x2, y2: a convex polygon of 4 to 12 vertices and a segment from 3 sizes away.
+-- kinds: 1 through the polygon (to beyond a point near its middle), 2 passing it by (its line
+-- misses), 3 stopping short of it, 4 from inside it, out
+function W.rays(count, kinds)
+  local P, X1, Y1, X2, Y2 = {}, {}, {}, {}, {}
+  for i = 1, count do
+    local kind, size = kinds[(i - 1) % #kinds + 1], uniform(10, 50)
+    local poly = convex(4 + (i - 1) % 9, uniform(-100, 100), uniform(-100, 100), size)
+    local mx, my = mean(poly)
+    local t = uniform(0, 2 * pi)
+    local ax, ay = mx + 3 * size * cos(t), my + 3 * size * sin(t)
+    local bx, by
+    if kind == 1 then
+      local tx, ty = mx + uniform(-0.3, 0.3) * size, my + uniform(-0.3, 0.3) * size
+      bx, by = ax + 2 * (tx - ax), ay + 2 * (ty - ay)
+    elseif kind == 2 then
+      local s = t + pi + uniform(0.6, 1.2) * (randint(0, 1) * 2 - 1)
+      bx, by = ax + 6 * size * cos(s), ay + 6 * size * sin(s)
+    elseif kind == 3 then
+      local k = uniform(0.1, 0.4)
+      bx, by = ax + (mx - ax) * k, ay + (my - ay) * k
+    else
+      ax, ay = mx + uniform(-0.2, 0.2) * size, my + uniform(-0.2, 0.2) * size
+      bx, by = mx + 3 * size * cos(t), my + 3 * size * sin(t)
+    end
+    P[i], X1[i], Y1[i], X2[i], Y2[i] = poly, ax, ay, bx, by
+  end
+  return { P, X1, Y1, X2, Y2 }
+end
+
+-- A new array of every value plus d (rounded as a game moves things).
+function W.shift(list, d)
+  local out = {}
+  for i, v in ipairs(list) do out[i] = v + d end
+  return out
+end
+
+-- cx, cy, radius, x1, y1, x2, y2: the same four kinds against a disc of radius 10 to 50
+function W.circleRays(count)
+  local A = { {}, {}, {}, {}, {}, {}, {} }
+  for i = 1, count do
+    local kind, r = (i - 1) % 4 + 1, uniform(10, 50)
+    local cx, cy, t = uniform(-100, 100), uniform(-100, 100), uniform(0, 2 * pi)
+    local ax, ay = cx + 3 * r * cos(t), cy + 3 * r * sin(t)
+    local bx, by
+    if kind == 1 then
+      bx, by = ax + 2 * (cx + uniform(-0.3, 0.3) * r - ax), ay + 2 * (cy + uniform(-0.3, 0.3) * r - ay)
+    elseif kind == 2 then
+      local s = t + pi + uniform(0.6, 1.2) * (randint(0, 1) * 2 - 1)
+      bx, by = ax + 6 * r * cos(s), ay + 6 * r * sin(s)
+    elseif kind == 3 then
+      bx, by = ax + (cx - ax) * 0.3, ay + (cy - ay) * 0.3
+    else
+      ax, ay = cx + uniform(-0.5, 0.5) * r, cy + uniform(-0.5, 0.5) * r
+      bx, by = cx + 3 * r * cos(t), cy + 3 * r * sin(t)
+    end
+    A[1][i], A[2][i], A[3][i], A[4][i], A[5][i], A[6][i], A[7][i] = cx, cy, r, ax, ay, bx, by
+  end
+  return A
+end
+
+-- points, x, y: scene polygons (half convex, half star-shaped) and a point in their box grown
+-- by half its size on every side
+function W.nearestQueries(polys)
+  local P, X, Y = {}, {}, {}
+  for i, poly in ipairs(polys) do
+    local x0, y0, x1, y1 = bbox(poly)
+    local w, h = x1 - x0, y1 - y0
+    P[i], X[i], Y[i] = poly, uniform(x0 - w / 2, x1 + w / 2), uniform(y0 - h / 2, y1 + h / 2)
+  end
+  return { P, X, Y }
+end
+
+---------------------------------------------------------------------------------------------
 -- Projections
 ---------------------------------------------------------------------------------------------
 -- points, x, y, nx, ny: a vertex as the reference, an edge normal as the axis

@@ -144,8 +144,14 @@ end
 local function crossedTurn(points)
   local px, py = points[fallP] + 0.0, points[fallP + 1] + 0.0
   local qx, qy = points[fallQ] + 0.0, points[fallQ + 1] + 0.0
-  local s = cross(px, py, qx, qy, px, py, points[riseP] + 0.0, points[riseP + 1] + 0.0)
-  if s == 0 then s = cross(px, py, qx, qy, px, py, points[riseQ] + 0.0, points[riseQ + 1] + 0.0) end
+  -- the rising edge's start, or its end when that start is the falling edge's end (a vertex
+  -- alone on its side: often, for a few vertices), chosen by arithmetic (no side exit)
+  local third = riseP + (riseQ - riseP) * (1 - min(1, abs(riseP - fallQ)))
+  local s = cross(px, py, qx, qy, px, py, points[third] + 0.0, points[third + 1] + 0.0)
+  if s == 0 then
+    third = riseP + riseQ - third
+    s = cross(px, py, qx, qy, px, py, points[third] + 0.0, points[third + 1] + 0.0)
+  end
   if s > 0 then return 1.0 elseif s < 0 then return -1.0 end
   return 0.0
 end
@@ -381,57 +387,55 @@ local function castFinishPuc(points, w, fp, fq, fz, rp, rq, rz, ax, ay, bx, by)
   return t, nx, ny
 end
 
--- castFinish for LuaJIT: the same float numbers with abs, min and max (single instructions
--- there, where each comparison that goes both ways is a side exit; with the many numbers alive
--- here such side traces failed to compile, "NYI: register coalescing too complex", and the
--- calls ran in the interpreter: bench/NOTES.md), each outcome tested once; where the bounds
--- vouch for none, castFinishPuc's exact tests decide. A hit's fraction always comes from
--- edgeFractionDD: the float one missed the 7 eps M test in about half the hits of the
--- benchmark, and a branch on it was such a side exit. (Within its margins c < 2^29.5, so
--- edgeFractionDD declines only beyond the exact range.)
-local function castFinishJit(points, w, fp, fq, fz, rp, rq, rz, ax, ay, bx, by)
-  if fp == 0 or rp == 0 then return false end   -- the line misses the open interior
-  if w ~= 0 then
-    local entering = 0.5 + 0.5 * w   -- 1: the falling edge is the entry
-    local p, xp = rp + (fp - rp) * entering, fp + (rp - fp) * entering
-    local q, xq = rq + (fq - rq) * entering, fq + (rq - fq) * entering
-    local rx, ry = points[xp] + 0.0, points[xp + 1] + 0.0
-    local sx, sy = points[xq] + 0.0, points[xq + 1] + 0.0
-    local l = (sx - rx) * (ay - ry)
-    local r = (sy - ry) * (ax - rx)
-    local sideSize = abs(l) + abs(r)
-    local sideMargin = (l - r) * w - CROSS_BOUND * sideSize
-    local px, py = points[p] + 0.0, points[p + 1] + 0.0
-    local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
-    local dx, dy = bx - ax, by - ay
-    local ex, ey = qx - px, qy - py
-    local nl, nr = (px - ax) * ey, (py - ay) * ex
-    local dl, dr = dx * ey, dy * ex
-    local num, den = nl - nr, dl - dr
-    local numSize, denSize, numAbs, denAbs = abs(nl) + abs(nr), abs(dl) + abs(dr), abs(num), abs(den)
-    -- the bound err holds: no product near overflow or underflow, neither determinant
-    -- cancelled by more than 2^22 (tested without a division: then no NaN below)
-    if numSize > 2^-800 and denSize > 2^-800 and numSize < 2^500 and denSize < 2^500 and sideSize < 2^900
-        and CROSS_BOUND * (numSize * denAbs + denSize * numAbs) < 2^-22 * numAbs * denAbs then
-      local t = num / den
-      local err = (CROSS_BOUND * (numSize / numAbs + denSize / denAbs) + EPS) * abs(t) * (1 + 2^-18)
-      -- each outcome as a margin, > 0 when the bounds vouch for it, computed before the tests
-      -- so that a side exit takes over only these: a miss (B before the entry or A past the
-      -- exit), A inside, a hit
-      local missed = max(t - err - 1, -sideMargin - 2 * CROSS_BOUND * sideSize)
-      local inside = min(sideMargin, -t - err)
-      if min(sideMargin, 1 - t - err, t - err) > 0 then
-        local nx, ny = unit(ey * w, -ex * w)
-        t = edgeFractionDD(px, py, qx, qy, ax, ay, bx, by)
-          or edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
-        return min(max(t, 0.0), 1.0), nx, ny
-      end
-      if missed > 0 then return false end
-      if inside > 0 then return 0.0, 0.0, 0.0 end
-    end
-  end
-  local f, nx, ny = castFinishPuc(points, w, fp, fq, fz, rp, rq, rz, ax, ay, bx, by)
-  return f, nx, ny
+-- A nonzero double times BIG twice is at least 2^926 in magnitude: min(1, max(0, x BIG BIG)) is
+-- 1 for x > 0 and 0 otherwise, with no branch (LuaJIT's min and max are single instructions).
+local BIG = 2^1000
+
+-- castFinish for LuaJIT, without a branch: the same float numbers with abs, min and max (single
+-- instructions there), each outcome a margin (> 0 when the bounds vouch for it), the answer a
+-- code: 1 a hit, 2 A inside, 3 a miss, 0 when the bounds vouch for none (the exact path then).
+-- Every branch on LuaJIT is a side exit, and the side traces of branches among these many
+-- numbers failed to compile ("NYI: register coalescing too complex", bench/NOTES.md): the
+-- caller branches on the code with only the code, the normal and the entry edge's ends alive.
+-- Every number stays finite (no NaN, whose min and max differ between LuaJIT's interpreter and
+-- its traces): sizes clamped before their products, divisors kept from 0; coordinates beyond
+-- 2^400 never come here.
+local function finishCodeJit(points, w, fp, fq, rp, rq, ax, ay, bx, by)
+  local entering = 0.5 + 0.5 * w   -- 1: the falling edge is the entry
+  local p, xp = rp + (fp - rp) * entering, fp + (rp - fp) * entering
+  local q, xq = rq + (fq - rq) * entering, fq + (rq - fq) * entering
+  local rx, ry = points[xp] + 0.0, points[xp + 1] + 0.0
+  local sx, sy = points[xq] + 0.0, points[xq + 1] + 0.0
+  local l = (sx - rx) * (ay - ry)
+  local r = (sy - ry) * (ax - rx)
+  local sideSize = abs(l) + abs(r)
+  local sideMargin = (l - r) * w - CROSS_BOUND * sideSize
+  local px, py = points[p] + 0.0, points[p + 1] + 0.0
+  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
+  local dx, dy = bx - ax, by - ay
+  local ex, ey = qx - px, qy - py
+  local nl, nr = (px - ax) * ey, (py - ay) * ex
+  local dl, dr = dx * ey, dy * ex
+  local num, den = nl - nr, dl - dr
+  local numSize, denSize = min(abs(nl) + abs(nr), 2^500), min(abs(dl) + abs(dr), 2^500)
+  local numAbs, denAbs = min(abs(num), 2^500), min(abs(den), 2^500)
+  -- the bound err holds: no product near overflow or underflow, neither determinant cancelled
+  -- by more than 2^22
+  local valid = min(min(numSize, denSize) - 2^-800, 2^499 - max(numSize, denSize),
+    2^499 - min(sideSize, 2^500),
+    2^-22 * numAbs * denAbs - CROSS_BOUND * (numSize * denAbs + denSize * numAbs))
+  local t = num / (den + (1 - min(1, denAbs * BIG * BIG)))   -- (den 0: valid <= 0 anyway)
+  local ratios = min(numSize / max(numAbs, 2^-900) + denSize / max(denAbs, 2^-900), 2^100)
+  local err = (CROSS_BOUND * ratios + EPS) * min(abs(t), 2^100) * (1 + 2^-18)
+  local hit = min(valid, sideMargin, 1 - t - err, t - err)
+  local missed = min(valid, max(t - err - 1, -sideMargin - 2 * CROSS_BOUND * sideSize))
+  local inside = min(valid, sideMargin, -t - err)
+  local code = min(1, max(0, hit * BIG * BIG)) + 3 * min(1, max(0, missed * BIG * BIG))
+    + 2 * min(1, max(0, inside * BIG * BIG))
+  local nx, ny = unit(ey * w, -ex * w)
+  -- a hit's fraction, computed for every code (after a branch on the code its side trace
+  -- failed to compile): within `valid` c < 2^29.5, where edgeFractionDD never declines
+  return code, edgeFractionDD(px, py, qx, qy, ax, ay, bx, by) or 0.0, nx, ny
 end
 
 -- A convex polygon, PUC Lua's: the collision functions' convexity filter (convex.lua's
@@ -514,8 +518,79 @@ local function castConvexPuc(points, n, ax, ay, bx, by, fname)
   return f, nx, ny
 end
 
--- A convex polygon, LuaJIT's: convex.lua's check, then the sides' walk (lineSide's filter
--- written out) and crossedTurn's exact sign.
+-- LuaJIT's sides' walk, with no branch (each comparison that goes both ways is a side exit, and
+-- a loop of a polygon's few vertices is copied unrolled into the calling trace with an exit for
+-- every other size, whose side traces failed to compile: bench/NOTES.md). Each side is
+-- lineSide's float number with how far it clears its error bound (< 0: not sure); a fall from
+-- > 0 to <= 0 and a rise from < 0 to >= 0 are 0 or 1 by min and max, so the crossing edges'
+-- indices are sums (a convex polygon has one of each, or none).
+local function sideJit(x, y, ax, ay, dx, dy)
+  local l, r = dx * (y - ay), dy * (x - ax)
+  local o = l - r
+  return o, abs(o) - CROSS_BOUND * (abs(l) + abs(r))
+end
+
+-- 1 when the side goes from oPrev > 0 to o <= 0, else 0; rise: from < 0 to >= 0.
+local function fall(oPrev, o)
+  return min(1, max(0, oPrev * BIG * BIG)) * (1 - min(1, max(0, o * BIG * BIG)))
+end
+local function rise(oPrev, o)
+  return min(1, max(0, -oPrev * BIG * BIG)) * (1 - min(1, max(0, -o * BIG * BIG)))
+end
+-- Up to 8 vertices written out (as convex.lua's convexFilterJit): slot k holds vertex min(k, m),
+-- slot 8 the last; the edges run from slot k - 1 to slot k (slot 0 is slot 8), and those between
+-- repeated slots have equal sides at both ends, no crossing. Returns the falling edge's ends
+-- (flat indices), the rising edge's, and the least clearance of the sides (< 0: redo exactly).
+local function sidesJit8(points, n, ax, ay, dx, dy)
+  local i4, i5, i6, i7, i8 = min(7, n - 1), min(9, n - 1), min(11, n - 1), min(13, n - 1), n - 1
+  local o1, c1 = sideJit(points[1] + 0.0, points[2] + 0.0, ax, ay, dx, dy)
+  local o2, c2 = sideJit(points[3] + 0.0, points[4] + 0.0, ax, ay, dx, dy)
+  local o3, c3 = sideJit(points[5] + 0.0, points[6] + 0.0, ax, ay, dx, dy)
+  local o4, c4 = sideJit(points[i4] + 0.0, points[i4 + 1] + 0.0, ax, ay, dx, dy)
+  local o5, c5 = sideJit(points[i5] + 0.0, points[i5 + 1] + 0.0, ax, ay, dx, dy)
+  local o6, c6 = sideJit(points[i6] + 0.0, points[i6 + 1] + 0.0, ax, ay, dx, dy)
+  local o7, c7 = sideJit(points[i7] + 0.0, points[i7 + 1] + 0.0, ax, ay, dx, dy)
+  local o8, c8 = sideJit(points[i8] + 0.0, points[i8 + 1] + 0.0, ax, ay, dx, dy)
+  local sure = min(c1, c2, c3, c4, c5, c6, c7, c8)
+  local f1, f2, f3, f4 = fall(o8, o1), fall(o1, o2), fall(o2, o3), fall(o3, o4)
+  local f5, f6, f7, f8 = fall(o4, o5), fall(o5, o6), fall(o6, o7), fall(o7, o8)
+  local fq = f1 + 3 * f2 + 5 * f3 + i4 * f4 + i5 * f5 + i6 * f6 + i7 * f7 + i8 * f8
+  local fp = i8 * f1 + f2 + 3 * f3 + 5 * f4 + i4 * f5 + i5 * f6 + i6 * f7 + i7 * f8
+  f1, f2, f3, f4 = rise(o8, o1), rise(o1, o2), rise(o2, o3), rise(o3, o4)
+  f5, f6, f7, f8 = rise(o4, o5), rise(o5, o6), rise(o6, o7), rise(o7, o8)
+  local rq = f1 + 3 * f2 + 5 * f3 + i4 * f4 + i5 * f5 + i6 * f6 + i7 * f7 + i8 * f8
+  local rp = i8 * f1 + f2 + 3 * f3 + 5 * f4 + i4 * f5 + i5 * f6 + i6 * f7 + i7 * f8
+  return fp, fq, rp, rq, sure
+end
+
+-- Beyond 8 vertices the same in a loop (long enough to be a trace of its own).
+local function sidesJitLoop(points, n, ax, ay, dx, dy)
+  local prev, sure = sideJit(points[n - 1] + 0.0, points[n] + 0.0, ax, ay, dx, dy)
+  local fp, fq, rp, rq = 0, 0, 0, 0
+  local prevIndex = n - 1
+  for i = 1, n - 1, 2 do
+    local o, c = sideJit(points[i] + 0.0, points[i + 1] + 0.0, ax, ay, dx, dy)
+    local f, r = fall(prev, o), rise(prev, o)
+    fp, fq, rp, rq = fp + f * prevIndex, fq + f * i, rp + r * prevIndex, rq + r * i
+    sure = min(sure, c)
+    prev, prevIndex = o, i
+  end
+  return fp, fq, rp, rq, sure
+end
+
+-- A convex polygon by the exact predicates alone, from its sides' exact walk: the rare path of
+-- castConvexJit (it takes over no number of the fast path: see finishCodeJit).
+local function castConvexExact(points, n, ax, ay, bx, by)
+  sideWalk(points, n, ax, ay, bx, by, bx - ax, by - ay)
+  if fallP == 0 or riseP == 0 then return false end
+  local f, nx, ny = crossedCast(points, ax, ay, bx, by)
+  return f, nx, ny
+end
+
+-- A convex polygon, LuaJIT's: convex.lua's check, the sides' walk without branches, the area
+-- sign by crossedTurn, finishCodeJit's code; castConvexExact where a bound cannot vouch. A
+-- hit's fraction comes from edgeFractionDD: the float one missed the 7 eps M test in about half
+-- the hits of the benchmark, and the branch on it was another side exit.
 local function castConvexJit(points, n, ax, ay, bx, by, fname)
   checkConvex(points, n, fname, "points", 3)
   local dx, dy = bx - ax, by - ay
@@ -523,29 +598,29 @@ local function castConvexJit(points, n, ax, ay, bx, by, fname)
     if insideConvex(points, n, ax, ay) then return 0.0, 0.0, 0.0 end
     return false
   end
-  local fp, fq, rp, rq, fz, rz = 0, 0, 0, 0, false, false
-  local prevIndex = n - 1
-  local prev = lineSide(points[n - 1] + 0.0, points[n] + 0.0, ax, ay, bx, by, dx, dy)
-  for i = 1, n - 1, 2 do
-    local x, y = points[i] + 0.0, points[i + 1] + 0.0
-    local l = dx * (y - ay)
-    local r = dy * (x - ax)
-    local o = l - r
-    if abs(o) < CROSS_BOUND * (abs(l) + abs(r)) then o = crossExact(ax, ay, bx, by, ax, ay, x, y) end
-    if prev > 0 then
-      if o <= 0 then fp, fq, fz = prevIndex, i, o == 0 end
-    elseif prev < 0 then
-      if o >= 0 then rp, rq, rz = prevIndex, i, o == 0 end
-    end
-    prev, prevIndex = o, i
+  local fp, fq, rp, rq, sure
+  if n <= 16 then
+    fp, fq, rp, rq, sure = sidesJit8(points, n, ax, ay, dx, dy)
+  else
+    fp, fq, rp, rq, sure = sidesJitLoop(points, n, ax, ay, dx, dy)
   end
-  local w = 0.0
-  if fp ~= 0 and rp ~= 0 then
-    fallP, fallQ, riseP, riseQ = fp, fq, rp, rq
-    w = crossedTurn(points)
-    if w == 0 then return false end
+  if sure < 0 or max(abs(ax), abs(ay), abs(bx), abs(by)) > 2^400 then
+    local f, nx, ny = castConvexExact(points, n, ax, ay, bx, by)
+    return f, nx, ny
   end
-  local f, nx, ny = castFinishJit(points, w, fp, fq, fz, rp, rq, rz, ax, ay, bx, by)
+  if fp == 0 or rp == 0 then return false end   -- the line misses the open interior
+  fallP, fallQ, riseP, riseQ = fp, fq, rp, rq
+  local w = crossedTurn(points)
+  if w == 0 then return false end
+  local m = max(abs(points[fp]), abs(points[fp + 1]), abs(points[fq]), abs(points[fq + 1]),
+    abs(points[rp]), abs(points[rp + 1]), abs(points[rq]), abs(points[rq + 1]))
+  local code, t, nx, ny = 0, 0.0, 0.0, 0.0
+  if m <= 2^400 then code, t, nx, ny = finishCodeJit(points, w, fp, fq, rp, rq, ax, ay, bx, by) end
+  if code == 1 then return min(max(t, 0.0), 1.0), nx, ny end
+  if code == 3 then return false end
+  if code == 2 then return 0.0, 0.0, 0.0 end
+  local f
+  f, nx, ny = castConvexExact(points, n, ax, ay, bx, by)
   return f, nx, ny
 end
 
