@@ -1089,6 +1089,28 @@ end
 -- from exact expansions of the split differences and carried as hi + lo to the end: t within
 -- eps (plus order eps^2), the normal within a few ulps.
 
+-- a + b as hi + lo exactly (Knuth's TwoSum).
+local function twoSum(a, b)
+  local x = a + b
+  local bv = x - a
+  local av = x - bv
+  return x, (a - av) + (b - bv)
+end
+
+-- The square root of hi + lo > 0 as a double double (one Newton step).
+local function sqrtDD(hi, lo)
+  local root = sqrt(hi)
+  local sh, sl = twoProduct(root, root)
+  return twoSum(root, (((hi - sh) - sl) + lo) / (2 * root))
+end
+
+-- (xh + xl) / (yh + yl) to within eps, plus order eps^2: the quotient corrected once.
+local function divideDD(xh, xl, yh, yl)
+  local q = xh / yh
+  local ph, pl = twoProduct(q, yh)
+  return q + ((((xh - ph) - pl) + xl) - q * yl) / yh
+end
+
 -- The largest two components of kernel's scratch expansion after compressing it: a double
 -- double within order eps^2 of the value.
 local function topTwo()
@@ -1154,6 +1176,58 @@ local function circleEntry(cx, cy, r, ax, ay, bx, by)
   return min(max(t, 0.0), 1.0), nx, ny
 end
 
+-- circleEntry's numbers as double doubles instead of expansions, with no loop: the differences
+-- split exactly, every product's main part exact (TwoProduct), first-order terms added, each sum
+-- of high parts exact (TwoSum, TwoDiff). What is dropped is below 2^-100 times the terms of a
+-- quantity, so K, G and D = sqrt(G) - P are within 2^-100 c of themselves, c their terms over
+-- them (D has no cancellation: -P > 0), and t = K / D, corrected once, is within eps plus
+-- order eps^2 when c stays below 2^30 for K (A near the circle) and for G (a near tangent);
+-- else nil (circleEntry's expansions). The normal from the high parts: within a few eps.
+local function circleEntryDD(cx, cy, r, ax, ay, bx, by)
+  local wx, wxl = twoDiff(ax, cx)
+  local wy, wyl = twoDiff(ay, cy)
+  local dx, dxl = twoDiff(bx, ax)
+  local dy, dyl = twoDiff(by, ay)
+  local m = max(abs(wx), abs(wy), abs(dx), abs(dy), r)
+  if m > 2^200 or m < 2^-200 then return nil end   -- (products' range)
+  local h, l, h2, l2, e
+  h, l = twoProduct(dx, wy)   -- X = d x w
+  h2, l2 = twoProduct(dy, wx)
+  local xh, xl = twoDiff(h, h2)
+  xl = xl + (l - l2) + ((dx * wyl + dxl * wy) - (dy * wxl + dyl * wx))
+  xh, xl = twoSum(xh, xl)
+  h, l = twoProduct(dx, dx)   -- Q = |d|^2
+  h2, l2 = twoProduct(dy, dy)
+  local qh, ql = twoSum(h, h2)
+  ql = ql + (l + l2) + 2 * (dx * dxl + dy * dyl)
+  h, l = twoProduct(dx, wx)   -- P = d.w
+  h2, l2 = twoProduct(dy, wy)
+  local ph, pl = twoSum(h, h2)
+  pl = pl + (l + l2) + ((dx * wxl + dxl * wx) + (dy * wyl + dyl * wy))
+  local rrh, rrl = twoProduct(r, r)
+  h, l = twoProduct(wx, wx)   -- K = |w|^2 - r^2
+  h2, l2 = twoProduct(wy, wy)
+  local kh, kl = twoSum(h, h2)
+  local kTerms = kh + rrh
+  kl = kl + (l + l2) + 2 * (wx * wxl + wy * wyl)
+  kh, e = twoDiff(kh, rrh)
+  kl = kl + e - rrl
+  kh, kl = twoSum(kh, kl)
+  h, l = twoProduct(rrh, qh)   -- G = r^2 Q - X^2
+  h2, l2 = twoProduct(xh, xh)
+  local gTerms = h + h2
+  local gh, gl = twoDiff(h, h2)
+  gl = gl + (l - l2) + (rrh * ql + rrl * qh) - 2 * xh * xl
+  gh, gl = twoSum(gh, gl)
+  if not (kh > 0 and gh > 0 and kTerms < 2^30 * kh and gTerms < 2^30 * gh) then return nil end
+  local rootH, rootL = sqrtDD(gh, gl)
+  local dh, dl = twoDiff(rootH, ph)   -- D = sqrt(G) - P
+  dl = dl + (rootL - pl)
+  local t = divideDD(kh, kl, dh, dl)
+  local nx, ny = unit(-rootH * dx - xh * dy, xh * dx - rootH * dy)
+  return min(max(t, 0.0), 1.0), nx, ny
+end
+
 -- circleRayCast: false, or fraction, nx, ny, as polygonRayCast against the open disc.
 function M.circleRayCast(cx, cy, radius, x1, y1, x2, y2)
   local fname = "circleRayCast"
@@ -1172,7 +1246,8 @@ function M.circleRayCast(cx, cy, radius, x1, y1, x2, y2)
       and dot(bx, by, cx, cy, ax, ay) > 0 and lineWithin(ax, ay, bx, by, cx, cy, radius) > 0)) then
     return false
   end
-  local f, nx, ny = circleEntry(cx, cy, radius, ax, ay, bx, by)
+  local f, nx, ny = circleEntryDD(cx, cy, radius, ax, ay, bx, by)
+  if not f then f, nx, ny = circleEntry(cx, cy, radius, ax, ay, bx, by) end
   return f, nx, ny
 end
 

@@ -414,6 +414,22 @@ describe("circleRayCast, hard cases: tangents", function()
   end
 end)
 
+describe("circleRayCast, hard cases: small discs from far away", function()
+  for _, o in ipairs(OFFSETS) do
+    it("enters a disc 1e-3 wide from 1e3 away, the normal right to a few ulps (offset " .. o .. ")", function()
+      local rng = prng.new(3007)
+      for _ = 1, 40 do
+        local cx, cy, r = o + rng:range(-1, 1), o + rng:range(-1, 1), 1e-3 * rng:range(0.5, 1.5)
+        local t = rng:range(0, 2 * math.pi)
+        local ax, ay = cx + 1e3 * math.cos(t), cy + 1e3 * math.sin(t)
+        local aim = rng:range(-0.9, 0.9) * r   -- through the disc, off its centre
+        local bx, by = cx - 1e3 * math.cos(t) - aim * math.sin(t), cy - 1e3 * math.sin(t) + aim * math.cos(t)
+        assert.is_number(checkDisc(cx, cy, r, ax, ay, bx, by))
+      end
+    end)
+  end
+end)
+
 -- Random cases against the oracle: the shapes users make at the coordinates games use, and at
 -- the offsets.
 describe("rays, random cases against the oracle", function()

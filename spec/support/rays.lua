@@ -282,7 +282,7 @@ end
 
 --- Whether the fraction f and normal (nx, ny) of an entry into the disc are good: f within
 -- 8 eps M of the entry along the segment (M over A and B), by the quadratic's signs at
--- f -/+ delta (delta a double below 8 eps M / |d|); the normal within 16 eps of (Z - C) / r,
+-- f -/+ delta (delta a double below 8 eps M / |d|); the normal within 8 eps of (Z - C) / r,
 -- Z the exact entry, from a bracket of sqrt(G), G = P^2 - Q K, around which the normal's
 -- components are linear.
 function rays.discEntryGood(f, nx, ny, cx, cy, r, ax, ay, bx, by)
@@ -304,7 +304,7 @@ function rays.discEntryGood(f, nx, ny, cx, cy, r, ax, ay, bx, by)
   -- the normal: (X (-dy, dx) - s d) / (r Q), X = d x w, s = sqrt(G), s in [s0, s1]
   local G = sub(mul(P, P), mul(Q, K))
   local s = math.sqrt(exact.tonumber(G))
-  local s0, s1 = s * (1 - 2 ^ -50), s * (1 + 2 ^ -50)
+  local s0, s1 = s * (1 - 2 ^ -51), s * (1 + 2 ^ -51)
   assert(compare(mul(new(s0), new(s0)), G) <= 0 and compare(mul(new(s1), new(s1)), G) >= 0)
   local X = sub(mul(dx, wy), mul(dy, wx))
   local rQ = mul(new(r), Q)
@@ -313,7 +313,7 @@ function rays.discEntryGood(f, nx, ny, cx, cy, r, ax, ay, bx, by)
     local S = new(sv)
     local ex = exact.tonumber(sub(exact.neg(mul(X, dy)), mul(S, dx))) / exact.tonumber(rQ)
     local ey = exact.tonumber(sub(mul(X, dx), mul(S, dy))) / exact.tonumber(rQ)
-    if math.abs(nx - ex) > 16 * EPS + 4 * 2 ^ -50 or math.abs(ny - ey) > 16 * EPS + 4 * 2 ^ -50 then
+    if math.abs(nx - ex) > 8 * EPS + 4 * 2 ^ -51 or math.abs(ny - ey) > 8 * EPS + 4 * 2 ^ -51 then
       good = false
     end
   end
