@@ -423,7 +423,8 @@ describe("circleRayCast, hard cases: small discs from far away", function()
         local t = rng:range(0, 2 * math.pi)
         local ax, ay = cx + 1e3 * math.cos(t), cy + 1e3 * math.sin(t)
         local aim = rng:range(-0.9, 0.9) * r   -- through the disc, off its centre
-        local bx, by = cx - 1e3 * math.cos(t) - aim * math.sin(t), cy - 1e3 * math.sin(t) + aim * math.cos(t)
+        local bx = cx - 1e3 * math.cos(t) - aim * math.sin(t)
+        local by = cy - 1e3 * math.sin(t) + aim * math.cos(t)
         assert.is_number(checkDisc(cx, cy, r, ax, ay, bx, by))
       end
     end)
