@@ -416,7 +416,8 @@ end)
 
 describe("circleRayCast, hard cases: small discs from far away", function()
   for _, o in ipairs(OFFSETS) do
-    it("enters a disc 1e-3 wide from 1e3 away, the normal right to a few ulps (offset " .. o .. ")", function()
+    it("enters a disc 1e-3 wide from 1e3 away, the normal right to a few ulps (offset "
+        .. o .. ")", function()
       local rng = prng.new(3007)
       for _ = 1, 40 do
         local cx, cy, r = o + rng:range(-1, 1), o + rng:range(-1, 1), 1e-3 * rng:range(0.5, 1.5)
