@@ -10,9 +10,9 @@ local object = require(_PACKAGE .. ".object")
 local contains = require(_PACKAGE .. ".contains")
 local circle = require(_PACKAGE .. ".circle")
 
-local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
+local abs, sqrt, min, max = math.abs, math.sqrt, math.min, math.max
 local type = type
-local EPS, CROSS_BOUND, cross = kernel.EPS, kernel.CROSS_BOUND, kernel.cross
+local EPS, CROSS_BOUND, cross, JIT = kernel.EPS, kernel.CROSS_BOUND, kernel.cross, kernel.JIT
 local twoDiff, twoProduct, powerScale = kernel.twoDiff, kernel.twoProduct, kernel.powerScale
 local expClear, expAddProduct, expAddSquare = kernel.expClear, kernel.expAddProduct, kernel.expAddSquare
 local expCompress, expLength, expansion, expSign = kernel.expCompress, kernel.expLength,
@@ -35,41 +35,81 @@ local M = {}
 -- side are exact signs; the point and the distance are computed in double doubles, so each is
 -- within an ulp or so of the exact one, well within 8 eps M.
 
--- An error bound that cannot vouch: the exact comparison decides.
-local UNSURE = huge
 
--- The squared distance from (x, y) to the edge a -> b in floating point, and a bound on its
--- error from the exact squared distance to the closed segment. The differences round by eps
--- each, products and sums by eps, the cross product by CROSS_BOUND of its terms (Shewchuk);
--- where the float dot product's sign may be wrong, the kinds (end or foot) differ by at most
--- dotErr^2 / L, which is added. UNSURE where a square may have overflowed or underflowed.
-local function edgeDistance(ax, ay, bx, by, x, y)
+-- The squared distance from (x, y) to the edge a -> b (flat indices ia and ib) in floating
+-- point, a bound on its error from the exact squared distance to the closed segment, and the
+-- index of the end that is surely the nearest point (0 when none is sure). The differences round
+-- by eps each, products and sums by eps, the cross product by CROSS_BOUND of its terms
+-- (Shewchuk); where the float dot product's sign may be wrong, the kinds (end or foot) differ by
+-- at most dotErr^2 / L, which is added. UNSURE (finite, so that the LuaJIT body's arithmetic
+-- stays finite) where a square may have overflowed or underflowed.
+local UNSURE = 2^1000
+
+-- PUC Lua's, with branches.
+local function edgeDistancePuc(ax, ay, bx, by, x, y, ia, ib)
   local ex, ey = bx - ax, by - ay
   local wx, wy = x - ax, y - ay
   local along = ex * wx + ey * wy
   local length = ex * ex + ey * ey
   local slip = 3 * EPS * (abs(ex * wx) + abs(ey * wy))   -- the dot products' error bound
-  local d2, err
+  local d2, err, sure
   if along <= 0 or length == 0 then
     d2 = wx * wx + wy * wy
     err = 6 * EPS * d2
+    sure = along < -slip and ia or 0
   elseif along >= length then
     local vx, vy = x - bx, y - by
     d2 = vx * vx + vy * vy
     err = 6 * EPS * d2
+    sure = along - length > slip + 4 * EPS * length and ib or 0
   else
     local l, r = ex * wy, ey * wx
     local c = l - r
     local cErr = CROSS_BOUND * (abs(l) + abs(r))
     d2 = c * c / length
     err = (2 * abs(c) * cErr + cErr * cErr) / length * (1 + 8 * EPS) + 4 * EPS * d2
+    sure = 0
   end
   if length > 0 then err = err + slip * slip / length * (1 + 8 * EPS) end
   -- luacheck: ignore 581 (NaN too)
   if not (d2 < 2^900 and (d2 > 2^-900 or d2 == 0) and (length > 2^-900 or length == 0)) then
     err = UNSURE
   end
-  return d2, err
+  return d2, err, sure
+end
+
+-- 1 for x > 0, else 0, without a branch (LuaJIT's min and max are single instructions).
+local function positive(x)
+  return min(1, max(0, x * 2^1000 * 2^1000))
+end
+
+-- LuaJIT's: the same numbers with no branch (each comparison that goes both ways is a side exit,
+-- whose side traces here failed to compile: bench/NOTES.md). The end's squared distance is the
+-- lesser of the two ends' when the float foot falls outside the edge (then it is no less than
+-- the line's); coordinates are below 2^400 (the caller's test), so everything stays finite.
+local function edgeDistanceJit(ax, ay, bx, by, x, y, ia, ib)
+  local ex, ey = bx - ax, by - ay
+  local wx, wy = x - ax, y - ay
+  local vx, vy = x - bx, y - by
+  local along = ex * wx + ey * wy
+  local length = ex * ex + ey * ey
+  local slip = 3 * EPS * (abs(ex * wx) + abs(ey * wy))
+  local l, r = ex * wy, ey * wx
+  local c = l - r
+  local cErr = CROSS_BOUND * (abs(l) + abs(r))
+  local safeLength = max(length, 2^-1000)
+  local inside = positive(along) * positive(length - along)
+  local endD2 = min(wx * wx + wy * wy, vx * vx + vy * vy)
+  local footD2 = c * c / safeLength
+  local d2 = max(footD2, (1 - inside) * endD2)
+  local footErr = (2 * abs(c) * cErr + cErr * cErr) / safeLength * (1 + 8 * EPS) + 4 * EPS * footD2
+  local err = inside * footErr + (1 - inside) * 6 * EPS * d2
+    + positive(length) * slip * slip / safeLength * (1 + 8 * EPS)
+  local valid = positive(2^900 - d2) * (1 - positive(length) * positive(2^-900 - length))
+    * (1 - positive(d2) * positive(2^-900 - d2))
+  err = valid * err + (1 - valid) * UNSURE
+  local sure = positive(-along - slip) * ia + positive(along - length - slip - 4 * EPS * length) * ib
+  return d2, err, sure
 end
 
 -- Exact squared distances. Scratch for compressed expansions copied out of kernel's one.
@@ -231,21 +271,75 @@ local function footOf(ax, ay, bx, by, px, py)
   local crossH, crossL = twoDiff(ph, qh)
   crossL = crossL + (pl - ql) + ((exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh))
   local u = divideDD(alongH, alongL, lengthH, lengthL)
-  local fx, fy
-  if u <= 0.5 then   -- a + u e
-    local hx, lx = twoProduct(u, exh)
-    local hy, ly = twoProduct(u, eyh)
-    fx = ax + (hx + (lx + u * exl))
-    fy = ay + (hy + (ly + u * eyl))
-  else               -- b - (1 - u) e, 1 - u exact (Sterbenz)
-    local v = 1 - u
-    local hx, lx = twoProduct(v, exh)
-    local hy, ly = twoProduct(v, eyh)
-    fx = bx - (hx + (lx + v * exl))
-    fy = by - (hy + (ly + v * eyl))
-  end
+  -- from the nearer end: a + u e, or b + (u - 1) e (u - 1 exact by Sterbenz's lemma), chosen
+  -- without a branch (selections with one term 0 are exact)
+  local far = min(1, max(0, (u - 0.5) * 2^1000 * 2^1000))
+  local k = u - far
+  local hx, lx = twoProduct(k, exh)
+  local hy, ly = twoProduct(k, eyh)
+  local fx = (far * bx + (1 - far) * ax) + (hx + (lx + k * exl))
+  local fy = (far * by + (1 - far) * ay) + (hy + (ly + k * eyl))
   local rootH, rootL = sqrtDD(lengthH, lengthL)
   return fx, fy, abs(divideDD(crossH, crossL, rootH, rootL))
+end
+
+-- The nearest edge by the float distances: its end's flat index, its squared distance and
+-- error bound, the least lower bound (d2 - err) of the other edges, and a number that is 0
+-- unless a coordinate is NaN or infinite. Edges whose nearest points are surely the same end
+-- tie: the later one's bound does not count (a vertex nearest is common; each such tie would
+-- take the exact comparison).
+-- PUC Lua's: branches.
+local function nearestEdgePuc(points, n, x, y)
+  local best, bestD2, bestErr, bestSure, otherLower = n - 1, UNSURE * 2^20, 0.0, 0, UNSURE * 2^20
+  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
+  local ia = n - 1
+  local finite = (ax - ax) + (ay - ay)
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
+    finite = finite + ((bx - bx) + (by - by))
+    local d2, err, sure = edgeDistancePuc(ax, ay, bx, by, x, y, ia, i)
+    if d2 < bestD2 then
+      otherLower = min(otherLower, bestD2 - bestErr)
+      best, bestD2, bestErr, bestSure = i, d2, err, sure
+    elseif sure == 0 or sure ~= bestSure then
+      otherLower = min(otherLower, d2 - err)
+    end
+    ax, ay, ia = bx, by, i
+  end
+  return best, bestD2, bestErr, otherLower, finite
+end
+
+-- LuaJIT's: the same without a branch; its `finite` is also nonzero for a coordinate beyond
+-- 2^400 (edgeDistanceJit's range: the PUC body takes those).
+local function nearestEdgeJit(points, n, x, y)
+  local best, bestD2, bestErr, bestSure, otherLower = n - 1, UNSURE * 2^20, 0.0, 0, UNSURE * 2^20
+  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
+  local ia = n - 1
+  local finite = (ax - ax) + (ay - ay)
+  local big = max(abs(ax), abs(ay), abs(x), abs(y))
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
+    finite = finite + ((bx - bx) + (by - by))
+    big = max(big, abs(bx), abs(by))
+    local d2, err, sure = edgeDistanceJit(ax, ay, bx, by, x, y, ia, i)
+    local better = positive(bestD2 - d2)
+    local tie = (1 - min(1, abs(sure - bestSure))) * min(1, sure)
+    otherLower = min(otherLower,
+      better * (bestD2 - bestErr) + (1 - better) * (d2 - err) + tie * UNSURE * 2^20)
+    -- selections with one term 0 (exact: a difference of the two would lose the smaller)
+    best, bestD2 = better * i + (1 - better) * best, better * d2 + (1 - better) * bestD2
+    bestErr, bestSure = better * err + (1 - better) * bestErr, better * sure + (1 - better) * bestSure
+    ax, ay, ia = bx, by, i
+  end
+  return best, bestD2, bestErr, otherLower, finite + positive(big - 2^400)
+end
+
+-- 1 when the nearest point of the edge a -> b to (x, y) is a, 2 when it is b, 0 for the foot
+-- inside it: exact signs of dot products (circle.lua's dot).
+local function nearestEnd(ax, ay, bx, by, x, y)
+  if (ax == bx and ay == by) or dot(ax, ay, x, y, bx, by) <= 0 then return 1 end
+  if dot(bx, by, x, y, ax, ay) <= 0 then return 2 end
+  return 0
 end
 
 -- Raises the refusal of a shape whose first entry is not a number (kind: its type, false for a
@@ -279,44 +373,42 @@ function M.polygonClosestPoint(points, x, y)
   checkFiniteNumber(x, fname, "x")
   checkFiniteNumber(y, fname, "y")
   x, y = x + 0.0, y + 0.0
-  -- the nearest edge by the float distances; the least lower bound of the others
-  local best, bestD2, bestErr, otherLower = n - 1, huge, 0.0, huge
-  local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
-  local finite = (ax - ax) + (ay - ay)
-  for i = 1, n - 1, 2 do
-    local bx, by = points[i] + 0.0, points[i + 1] + 0.0
-    finite = finite + ((bx - bx) + (by - by))
-    local d2, err = edgeDistance(ax, ay, bx, by, x, y)
-    if d2 < bestD2 then
-      otherLower = min(otherLower, bestD2 - bestErr)
-      best, bestD2, bestErr = i, d2, err
-    else
-      otherLower = min(otherLower, d2 - err)
-    end
-    ax, ay = bx, by
+  local best, bestD2, bestErr, otherLower, finite
+  if JIT then
+    best, bestD2, bestErr, otherLower, finite = nearestEdgeJit(points, n, x, y)
+    if finite ~= 0 then best, bestD2, bestErr, otherLower, finite = nearestEdgePuc(points, n, x, y) end
+  else
+    best, bestD2, bestErr, otherLower, finite = nearestEdgePuc(points, n, x, y)
   end
   if finite ~= 0 then error(("%s: points holds a non-finite coordinate"):format(fname), 2) end
   if otherLower <= bestD2 + bestErr then
     -- the bounds cannot tell: each edge that may be nearer, against the best so far, exactly
+    -- (two edges whose nearest points are surely their shared end tie, and are skipped)
     local limit = bestD2 + bestErr
-    ax, ay = points[n - 1] + 0.0, points[n] + 0.0
+    local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
+    local ia = n - 1
     for i = 1, n - 1, 2 do
       local bx, by = points[i] + 0.0, points[i + 1] + 0.0
-      local d2, err = edgeDistance(ax, ay, bx, by, x, y)
+      local d2, err = edgeDistancePuc(ax, ay, bx, by, x, y, ia, i)
       if i ~= best and d2 - err <= limit then
         local b = best
         local a = b == 1 and n - 1 or b - 2
-        if compareEdges(ax, ay, bx, by, points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0,
-            points[b + 1] + 0.0, x, y) < 0 then
+        local cx, cy, dx, dy = points[a] + 0.0, points[a + 1] + 0.0, points[b] + 0.0, points[b + 1] + 0.0
+        local endI = nearestEnd(ax, ay, bx, by, x, y)
+        local endB = nearestEnd(cx, cy, dx, dy, x, y)
+        local vx, vy = endI == 1 and ax or bx, endI == 1 and ay or by
+        local wx, wy = endB == 1 and cx or dx, endB == 1 and cy or dy
+        if not (endI ~= 0 and endB ~= 0 and vx == wx and vy == wy)
+            and compareEdges(ax, ay, bx, by, cx, cy, dx, dy, x, y) < 0 then
           best = i
         end
       end
-      ax, ay = bx, by
+      ax, ay, ia = bx, by, i
     end
   end
   -- the nearest edge a -> b: its end or the foot, by exact signs
   local a = best == 1 and n - 1 or best - 2
-  ax, ay = points[a] + 0.0, points[a + 1] + 0.0
+  local ax, ay = points[a] + 0.0, points[a + 1] + 0.0
   local bx, by = points[best] + 0.0, points[best + 1] + 0.0
   local px, py, distance
   if (ax == bx and ay == by) or dot(ax, ay, x, y, bx, by) <= 0 then
@@ -335,4 +427,5 @@ function M.polygonClosestPoint(points, x, y)
   return px, py, distance
 end
 
+M.nearestEdgeJit, M.nearestEdgePuc = nearestEdgeJit, nearestEdgePuc   -- both bodies, for the spec
 return M

@@ -9,6 +9,7 @@ local prng = require "prng"
 local shapes = require "shapes"
 local tiles = require "tiles"
 local callsite = require "callsite"
+local closestModule = require "polygon.closest"
 
 local closest = polygon.polygonClosestPoint
 local nextUp, nextDown = exact.nextUp, exact.nextDown
@@ -215,5 +216,30 @@ describe("polygonClosestPoint, random near ties against the oracle", function()
       end
     end
     assert.is_true(tried > 100)
+  end)
+end)
+
+-- The two bodies of the nearest edge's search (LuaJIT's without branches, PUC Lua's), each on
+-- every interpreter: the same edge, squared distance, bound and least lower bound of the others.
+describe("polygonClosestPoint's two bodies", function()
+  it("find the same nearest edge with the same numbers", function()
+    local rng = prng.new(3104)
+    for round = 1, 300 do
+      local o = OFFSETS[round % #OFFSETS + 1]
+      local size = rng:pick({ 1, 10, 1000 })
+      local points = round % 2 == 0 and shapes.convex(rng, rng:int(3, 9), o, o, size, 0.4)
+        or shapes.star(rng, rng:int(3, 12), o, o, size)
+      if round % 5 == 0 then   -- a repeated vertex: an edge of no length
+        table.insert(points, 3, points[2])
+        table.insert(points, 3, points[1])
+      end
+      for _ = 1, 4 do
+        local x, y = o + rng:range(-2, 2) * size, o + rng:range(-2, 2) * size
+        if rng:float() < 0.3 then x, y = points[1], points[2] end
+        local jit = { closestModule.nearestEdgeJit(points, #points, x, y) }
+        local puc = { closestModule.nearestEdgePuc(points, #points, x, y) }
+        assert.are.same(puc, jit)
+      end
+    end
   end)
 end)
