@@ -563,7 +563,41 @@ local function sidesJit8(points, n, ax, ay, dx, dy)
   return fp, fq, rp, rq, sure
 end
 
--- Beyond 8 vertices the same in a loop (long enough to be a trace of its own).
+-- Four slots of the walk (flat indices ia .. id, after the slot of index prevIndex whose side is
+-- prev): the sums and the clearance carried on, and the last slot's side and index.
+local function sideQuad(points, ia, ib, ic, id, prev, prevIndex, ax, ay, dx, dy, fp, fq, rp, rq, sure)
+  local oa, ca = sideJit(points[ia] + 0.0, points[ia + 1] + 0.0, ax, ay, dx, dy)
+  local ob, cb = sideJit(points[ib] + 0.0, points[ib + 1] + 0.0, ax, ay, dx, dy)
+  local oc, cc = sideJit(points[ic] + 0.0, points[ic + 1] + 0.0, ax, ay, dx, dy)
+  local od, cd = sideJit(points[id] + 0.0, points[id + 1] + 0.0, ax, ay, dx, dy)
+  local f1, f2, f3, f4 = fall(prev, oa), fall(oa, ob), fall(ob, oc), fall(oc, od)
+  fq = fq + ia * f1 + ib * f2 + ic * f3 + id * f4
+  fp = fp + prevIndex * f1 + ia * f2 + ib * f3 + ic * f4
+  f1, f2, f3, f4 = rise(prev, oa), rise(oa, ob), rise(ob, oc), rise(oc, od)
+  rq = rq + ia * f1 + ib * f2 + ic * f3 + id * f4
+  rp = rp + prevIndex * f1 + ia * f2 + ib * f3 + ic * f4
+  return fp, fq, rp, rq, min(sure, ca, cb, cc, cd), od, id
+end
+
+-- 9 to 16 vertices written out the same way, four slots at a time: a loop of 9 to 16 steps
+-- became a root trace in some draws, with the rest of the call in its side traces, which
+-- failed to compile ("trace too long", "too many spill slots": bench/NOTES.md).
+local function sidesJit16(points, n, ax, ay, dx, dy)
+  local last = n - 1
+  local prev, sure = sideJit(points[last] + 0.0, points[last + 1] + 0.0, ax, ay, dx, dy)
+  local fp, fq, rp, rq, index = 0, 0, 0, 0, last
+  fp, fq, rp, rq, sure, prev, index = sideQuad(points, 1, 3, 5, 7, prev, index, ax, ay, dx, dy,
+    fp, fq, rp, rq, sure)
+  fp, fq, rp, rq, sure, prev, index = sideQuad(points, 9, 11, 13, 15, prev, index, ax, ay, dx, dy,
+    fp, fq, rp, rq, sure)
+  fp, fq, rp, rq, sure, prev, index = sideQuad(points, min(17, last), min(19, last), min(21, last),
+    min(23, last), prev, index, ax, ay, dx, dy, fp, fq, rp, rq, sure)
+  fp, fq, rp, rq, sure = sideQuad(points, min(25, last), min(27, last), min(29, last), last, prev,
+    index, ax, ay, dx, dy, fp, fq, rp, rq, sure)
+  return fp, fq, rp, rq, sure
+end
+
+-- Beyond 16 vertices the same in a loop (long enough to be a trace of its own).
 local function sidesJitLoop(points, n, ax, ay, dx, dy)
   local prev, sure = sideJit(points[n - 1] + 0.0, points[n] + 0.0, ax, ay, dx, dy)
   local fp, fq, rp, rq = 0, 0, 0, 0
@@ -601,6 +635,8 @@ local function castConvexJit(points, n, ax, ay, bx, by, fname)
   local fp, fq, rp, rq, sure
   if n <= 16 then
     fp, fq, rp, rq, sure = sidesJit8(points, n, ax, ay, dx, dy)
+  elseif n <= 32 then
+    fp, fq, rp, rq, sure = sidesJit16(points, n, ax, ay, dx, dy)
   else
     fp, fq, rp, rq, sure = sidesJitLoop(points, n, ax, ay, dx, dy)
   end
