@@ -265,13 +265,13 @@ local function edgeFractionDD(px, py, qx, qy, ax, ay, bx, by)
   return t + ((((nh - th) - tl) + numLow) - t * denLow) / dh   -- nh - th exact (Sterbenz)
 end
 
--- The fraction where the ray crosses the line of the edge p -> q (not parallel to it), and a
--- bound on its absolute error. In floating point num = (p - A) x e and den = d x e (e = q - p)
--- are each within Shewchuk's bound CROSS_BOUND (|l| + |r|) of exact, so t = num / den is
--- within rel = those relative bounds summed, plus eps for the division, to first order (the
--- second order is negligible once rel < 2^-20). Trusted when the point's error rel t |d| stays
--- below 4 eps M (|d| <= |dx| + |dy|) and no product has overflowed or lost bits to underflow.
-local function edgeFraction(px, py, qx, qy, ax, ay, bx, by)
+-- The fraction where the ray crosses the line of the edge p -> q (not parallel to it) in
+-- floating point, and a bound on its absolute error (huge where it cannot vouch). num = (p - A)
+-- x e and den = d x e (e = q - p) are each within Shewchuk's bound CROSS_BOUND (|l| + |r|) of
+-- exact, so t = num / den is within rel = those relative bounds summed, plus eps for the
+-- division, to first order (the second order is negligible once rel < 2^-20), where no product
+-- has overflowed or lost bits to underflow.
+local function edgeEstimate(px, py, qx, qy, ax, ay, bx, by)
   local dx, dy = bx - ax, by - ay
   local ex, ey = qx - px, qy - py
   local wx, wy = px - ax, py - ay
@@ -280,24 +280,42 @@ local function edgeFraction(px, py, qx, qy, ax, ay, bx, by)
   local numSize, denSize = abs(nl) + abs(nr), abs(dl) + abs(dr)
   local t = num / den
   local rel = CROSS_BOUND * (numSize / abs(num) + denSize / abs(den))
-  local m = max(abs(ax), abs(ay), abs(bx), abs(by))
-  if rel < 2^-20 and rel * t * (abs(dx) + abs(dy)) <= 4 * EPS * m and numSize > 2^-900
-      and denSize > 2^-900 and numSize < 2^1000 and denSize < 2^1000 then
-    return min(max(t, 0.0), 1.0), 2 * (rel + EPS) * t
+  if rel < 2^-20 and numSize > 2^-900 and denSize > 2^-900 and numSize < 2^1000 and denSize < 2^1000 then
+    return t, (rel + EPS) * abs(t) * (1 + 2^-18)
   end
-  t = edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
-  return min(max(t, 0.0), 1.0), 4 * EPS * t
+  return t, huge
 end
 
--- The fraction of an entry convexEntry found into points, and a bound on its error.
+-- The same fraction within 8 eps M: the float one when its bound keeps the point within 7 eps
+-- M (|d| <= |dx| + |dy|, M over A and B), else edgeFractionDD's, else edgeFractionExact's.
+local function edgeFraction(px, py, qx, qy, ax, ay, bx, by)
+  local t, err = edgeEstimate(px, py, qx, qy, ax, ay, bx, by)
+  if err * (abs(bx - ax) + abs(by - ay)) > 7 * EPS * max(abs(ax), abs(ay), abs(bx), abs(by)) then
+    t = edgeFractionDD(px, py, qx, qy, ax, ay, bx, by) or edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
+  end
+  return min(max(t, 0.0), 1.0)
+end
+
+-- The fraction of an entry convexEntry found into points (kind: where), within 8 eps M.
 local function entryFraction(points, p, q, kind, ax, ay, bx, by)
+  if kind == ENTERS_AT_A then return 0.0 end
+  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
+  if kind == ENTERS_VERTEX then return pointFraction(qx, qy, ax, ay, bx, by) end
+  local t = edgeFraction(points[p] + 0.0, points[p + 1] + 0.0, qx, qy, ax, ay, bx, by)
+  return t
+end
+
+-- The same fraction in floating point and a bound on its error, for the order of entries: at q,
+-- two differences and a quotient along the axis the ray moves most on (three roundings).
+local function entryEstimate(points, p, q, kind, ax, ay, bx, by)
   if kind == ENTERS_AT_A then return 0.0, 0.0 end
   local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
   if kind == ENTERS_VERTEX then
-    local t = pointFraction(qx, qy, ax, ay, bx, by)
-    return t, 4 * EPS * t
+    local t
+    if abs(bx - ax) >= abs(by - ay) then t = (qx - ax) / (bx - ax) else t = (qy - ay) / (by - ay) end
+    return t, 4 * EPS * abs(t)
   end
-  local t, err = edgeFraction(points[p] + 0.0, points[p + 1] + 0.0, qx, qy, ax, ay, bx, by)
+  local t, err = edgeEstimate(points[p] + 0.0, points[p + 1] + 0.0, qx, qy, ax, ay, bx, by)
   return t, err
 end
 
@@ -948,6 +966,22 @@ local function pointInParts(view, shape, x, y)
   return false
 end
 
+local nearParts = {}   -- castParts' scratch: the parts whose boxes meet the segment's and its line
+
+-- Whether the box at boxes[b - 3 .. b] (xmin, ymin, xmax, ymax) lies strictly on one side of the
+-- ray's line, surely: the corners' sides o(v) = d x (v - A) at their least and largest (the
+-- corners chosen by the signs of dx and dy) clear their error bounds (lineSide's, Shewchuk's).
+-- false also where rounding cannot tell (d = 0 too).
+local function lineMissesBox(boxes, b, ax, ay, dx, dy)
+  local xmin, ymin, xmax, ymax = boxes[b - 3], boxes[b - 2], boxes[b - 1], boxes[b]
+  local hiY, loY = dx > 0 and ymax or ymin, dx > 0 and ymin or ymax
+  local hiX, loX = dy > 0 and xmin or xmax, dy > 0 and xmax or xmin
+  local l, r = dx * (hiY - ay), dy * (hiX - ax)   -- the largest o
+  if l - r < -CROSS_BOUND * (abs(l) + abs(r)) then return true end
+  l, r = dx * (loY - ay), dy * (loX - ax)         -- the least o
+  return l - r > CROSS_BOUND * (abs(l) + abs(r))
+end
+
 -- polygonRayCast for a list of parts: false, or fraction, nx, ny. Its steps: the list's view,
 -- each part whose box meets the segment's (its entry, in order with the best so far; or the
 -- cover of the line by its edge on it), the start of the seams covered both ways, then the
@@ -957,25 +991,31 @@ local function castParts(fname, shape, ax, ay, bx, by)
   call.stamp = call.stamp + 1
   local stamp = call.stamp
   local boxes, turns = view.boxes, view.turns
-  for k = 1, view.count do   -- every part whose box holds the segment's: brought up to date
+  local dx, dy = bx - ax, by - ay
+  -- every part whose box meets the segment's and its line is brought up to date (its sign and
+  -- normals are read: see views.lua's preparedParts); the others can hold no entry, no cover
+  -- and no vertex on the line
+  local x0, y0, x1, y1 = min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)
+  local near = 0   -- the parts so found, their indices in nearParts
+  for k = 1, view.count do
     local b = 4 * k
-    if boxes[b - 3] <= max(ax, bx) and min(ax, bx) <= boxes[b - 1] and boxes[b - 2] <= max(ay, by)
-        and min(ay, by) <= boxes[b] and view.checked[k] ~= stamp then
-      checkCopy(view, k, shape[k], 4)
+    if boxes[b - 3] <= x1 and x0 <= boxes[b - 1] and boxes[b - 2] <= y1 and y0 <= boxes[b]
+        and not lineMissesBox(boxes, b, ax, ay, dx, dy) then
+      if view.checked[k] ~= stamp then checkCopy(view, k, shape[k], 4) end
+      near = near + 1
+      nearParts[near] = k
     end
   end
-  local dx, dy = bx - ax, by - ay
   if dx == 0 and dy == 0 then
     local f, nx, ny = pointInParts(view, shape, ax, ay)
     return f, nx, ny
   end
   local bestK, bestP, bestQ, bestW, bestKind, bestT, bestErr = 0, 0, 0, 0.0, 0, 0.0, 0.0
   local covers = 0
-  for k = 1, view.count do
-    local b = 4 * k
+  for j = 1, near do
+    local k = nearParts[j]
     local w = turns[k]
-    if w ~= 0 and boxes[b - 3] <= max(ax, bx) and min(ax, bx) <= boxes[b - 1]
-        and boxes[b - 2] <= max(ay, by) and min(ay, by) <= boxes[b] then
+    if w ~= 0 then
       local part, n = shape[k], view.lengths[k]
       sideWalk(part, n, ax, ay, bx, by, dx, dy)
       if fallP ~= 0 and riseP ~= 0 then
@@ -983,7 +1023,7 @@ local function castParts(fname, shape, ax, ay, bx, by)
         if status == INSIDE then return 0.0, 0.0, 0.0 end
         if status == ENTERS then
           local p, q, kind = entryP, entryQ, entryKind
-          local t, err = entryFraction(part, p, q, kind, ax, ay, bx, by)
+          local t, err = entryEstimate(part, p, q, kind, ax, ay, bx, by)
           local order = -1
           if bestK ~= 0 then
             if t + err < bestT - bestErr then order = -1
@@ -1052,6 +1092,7 @@ local function castParts(fname, shape, ax, ay, bx, by)
   if bestK == 0 then return false end
   local best = shape[bestK]
   local px, py, qx, qy = best[bestP] + 0.0, best[bestP + 1] + 0.0, best[bestQ] + 0.0, best[bestQ + 1] + 0.0
+  bestT = entryFraction(best, bestP, bestQ, bestKind, ax, ay, bx, by)   -- (the estimate ordered them)
   local zx, zy
   if bestKind == ENTERS_AT_A then
     zx, zy = ax, ay
