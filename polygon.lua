@@ -53,6 +53,7 @@ local triangulate = require(_PACKAGE .. "triangulate")
 local transform   = require(_PACKAGE .. "transform")
 local object      = require(_PACKAGE .. "object")
 local raycast     = require(_PACKAGE .. "raycast")
+local circleray   = require(_PACKAGE .. "circleray")
 local closest     = require(_PACKAGE .. "closest")
 
 --- Measures
@@ -282,7 +283,7 @@ polygon.polygonRayCast = raycast.polygonRayCast
 -- @treturn number nx
 -- @treturn number ny
 -- @raise when an argument is not a finite number or the radius is negative
-polygon.circleRayCast = raycast.circleRayCast
+polygon.circleRayCast = circleray.circleRayCast
 
 --- The nearest point of the polygon's boundary to (x, y), and the signed distance to it: AI
 -- sensing, snapping, aim assist. Any polygon, convex or not (a self-intersecting one too: its

@@ -80,6 +80,12 @@ local function expClear() expLen = 0 end
 -- The number of components of the scratch expansion.
 local function expLength() return expLen end
 
+-- Copies the scratch expansion into `into` (a caller's scratch table); returns its length.
+local function expCopy(into)
+  for i = 1, expLen do into[i] = expansion[i] end
+  return expLen
+end
+
 -- Adds the double b to the expansion exactly (Shewchuk's Grow-Expansion, zeros eliminated).
 -- On LuaJIT without a branch inside: each part is written at k + 1 and k counts it when it is
 -- not 0, so that a trace copying this loop has no side exit for a zero part (such exits fail
@@ -575,6 +581,7 @@ M.crossPuc = crossPuc
 M.expClear = expClear
 M.expAddTriple = expAddTriple
 M.expLength = expLength
+M.expCopy = expCopy
 M.powerScale = powerScale
 M.largestMagnitude = largestMagnitude
 M.EPS = EPS

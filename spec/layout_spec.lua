@@ -42,7 +42,8 @@ describe("the front, polygon.lua", function()
       triangulate = { "polygonTriangulate", "polygonConvexParts" },
       transform = { "polygonBounds", "polygonTranslate", "polygonRotate" },
       object = { "validate", "Polygon" },
-      raycast = { "polygonRayCast", "circleRayCast" },
+      raycast = { "polygonRayCast" },
+      circleray = { "circleRayCast" },
       closest = { "polygonClosestPoint" },
     }
     local count = 0
