@@ -1,9 +1,9 @@
--- The polygon tutorial's five interactive figures and a sixth for concave shapes, run against
--- the real polygon.lua in LÖVE 11.
+-- The polygon tutorial's five interactive figures, a sixth for concave shapes and a seventh for
+-- rays, run against the real polygon.lua in LÖVE 11.
 --
---   love examples/love                        from the repository root: keys 1-6 switch scenes
+--   love examples/love                        from the repository root: keys 1-7 switch scenes
 --   love examples/love --screenshots DIR      headless: play a scripted drag in every scene, write
---                                             DIR/scene1.png ... DIR/scene6.png, exit with status 0
+--                                             DIR/scene1.png ... DIR/scene7.png, exit with status 0
 --
 -- Every value drawn comes from polygon.lua; this file and the scenes only draw and drag.
 
@@ -43,7 +43,7 @@ local ui = require "ui"
 
 local SCENES = {
   "scenes.convex", "scenes.contains", "scenes.collision", "scenes.resolution", "scenes.circle",
-  "scenes.concave",
+  "scenes.concave", "scenes.rays",
 }
 local scenes = {}
 for i, name in ipairs(SCENES) do
@@ -85,11 +85,11 @@ local function drawFrame()
   love.graphics.setLineJoin("miter")
   scenes[current].draw()
 
-  love.graphics.setFont(ui.font("normal"))
+  love.graphics.setFont(ui.font("small"))
   local x = 24
   for i, scene in ipairs(scenes) do
     local text = ("%d  %s"):format(i, scene.title)
-    local width = ui.font("normal"):getWidth(text)
+    local width = ui.font("small"):getWidth(text)
     if i == current then
       ui.setColor(colors.blue, 0.8)
       love.graphics.rectangle("fill", x - 6, 6, width + 12, 22, 4, 4)
@@ -98,11 +98,11 @@ local function drawFrame()
       ui.setColor(colors.dim)
     end
     love.graphics.print(text, x, 8)
-    x = x + width + 26
+    x = x + width + 22
   end
 
   ui.label(scenes[current].help, 24, ui.HEIGHT - 46, colors.text, "small")
-  ui.label("Keys 1-6: scene    R: reset    Esc: quit    " .. origin, 24, ui.HEIGHT - 26, colors.dim, "small")
+  ui.label("Keys 1-7: scene    R: reset    Esc: quit    " .. origin, 24, ui.HEIGHT - 26, colors.dim, "small")
 end
 
 -- Screenshots ------------------------------------------------------------------------------------
@@ -131,6 +131,9 @@ local function playScript(index)
     else
       error(("scene %d: unknown script step %s"):format(index, tostring(action)))
     end
+  end
+  for _ = 1, scene.scriptFrames or 0 do
+    scene.update()
   end
   if scene.check then
     scene.check()
@@ -193,6 +196,9 @@ local shot = 0
 
 function love.update()
   if not screenshotDir then
+    if scenes[current].update then
+      scenes[current].update()
+    end
     return
   end
   shot = shot + 1
