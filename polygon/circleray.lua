@@ -194,7 +194,7 @@ function M.circleRayCast(cx, cy, radius, x1, y1, x2, y2)
   end
   local f, nx, ny = circleEntryDD(cx, cy, radius, ax, ay, bx, by)
   if not f then f, nx, ny = circleEntry(cx, cy, radius, ax, ay, bx, by) end
-  return f, nx, ny
+  return f, nx + 0.0, ny + 0.0   -- + 0.0: a normal of -0 reads as 0
 end
 
 return M

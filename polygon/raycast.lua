@@ -1126,7 +1126,7 @@ function M.polygonRayCast(points, x1, y1, x2, y2)
       checkFiniteNumber(y2, fname, "y2")
       local f, nx, ny = castParts(fname, points, x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0)
       if not f then return false end
-      return f, nx, ny
+      return f, nx + 0.0, ny + 0.0   -- + 0.0: a normal of -0 reads as 0
     end
   end
   if not kind then checkPoints(points, fname, "points", 3) end
@@ -1140,7 +1140,7 @@ function M.polygonRayCast(points, x1, y1, x2, y2)
   end
   local f, nx, ny = castConvex(points, n, x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0, fname)
   if not f then return false end
-  return f, nx, ny
+  return f, nx + 0.0, ny + 0.0
 end
 
 M.castConvexJit, M.castConvexPuc = castConvexJit, castConvexPuc   -- both bodies, for the spec

@@ -174,6 +174,26 @@ describe("polygonRayCast", function()
       assert.are.equal(0.5, f)
       assert.is_true((nx == 1 and ny == 0) or (nx == 0 and ny == 1), nx .. ", " .. ny)
     end)
+
+    it("gives a normal's zero component as 0, not -0, whichever the winding", function()
+      -- the wall x in [100, 140] both ways round, and with a second part out to x = 150:
+      -- from (0, 50) to (200, 50) in at x = 100, t = 100 / 200, normal (-1, 0); from (300, 50)
+      -- to (0, 50) in at x = 140, t = (300 - 140) / 300 (150: t = 150 / 300), normal (1, 0)
+      local wall = { 100, 0, 140, 0, 140, 200, 100, 200 }
+      local shapes = {
+        { wall, 160 / 300 },
+        { { 100, 0, 100, 200, 140, 200, 140, 0 }, 160 / 300 },
+        { { wall, { 140, 0, 150, 0, 150, 200, 140, 200 } }, 150 / 300 },
+      }
+      for _, shape in ipairs(shapes) do
+        local f, nx, ny = cast(shape[1], 0, 50, 200, 50)
+        assert.are.same({ 0.5, -1, "0" }, { f, nx, ("%g"):format(ny) })
+        f, nx, ny = cast(shape[1], 300, 50, 0, 50)
+        assert.are.same({ shape[2], 1, "0" }, { f, nx, ("%g"):format(ny) })
+      end
+      local f, nx, ny = polygon.circleRayCast(0, 0, 1, 0, -3, 0, 3)   -- in at (0, -1), t = 2 / 6
+      assert.are.same({ 2 / 6, "0", -1 }, { f, ("%g"):format(nx), ny })
+    end)
   end)
 
   describe("when given what the collision functions refuse", function()
