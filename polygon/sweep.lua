@@ -46,17 +46,16 @@ local function orient(a, b, c)
   local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
   -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
   -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
-  -- too complex"), as did branches taken half the time
-  local l, r = (bx - ax) * (cy - ay), (by - ay) * (cx - ax)
+  -- too complex"), as did branches taken half the time. The determinant is taken about c,
+  -- (a - c) x (b - c), the same number as (b - a) x (c - a): with c at a or at b (edges meeting
+  -- at a vertex, a pinch point's copies: thousands of calls on map data) both products are 0,
+  -- so the filter vouches for the 0 and no branch leaves the common path
+  local l, r = (ax - cx) * (by - cy), (ay - cy) * (bx - cx)
   local s = l - r
   local e = CROSS_BOUND * abs(l + r)
   -- one test of |s|, not one per sign: a branch taken for half the nodes (convex or reflex)
   -- made side traces that aborted until LuaJIT flushed all its traces
   if abs(s) < e or s ~= s then   -- also when l and r differ in sign and s is 0: exact, rare
-    -- c at a or b (edges meeting at a vertex, common) gives 0 at once. Tested only here: its
-    -- four comparisons in the common path, each going either way on shared coordinates, grew
-    -- a side trace per caller until LuaJIT's machine-code area ran out and it flushed
-    if (cx == bx and cy == by) or (cx == ax and cy == ay) then return 0 end
     s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
   end
   return s * turn
