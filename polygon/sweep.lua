@@ -68,6 +68,10 @@ local function same(a, b)
   return abs(nodeX[a] - nodeX[b]) + abs(nodeY[a] - nodeY[b]) == 0
 end
 
+-- This file's main chunk: triangulate.lua turns LuaJIT's compiler off and on for every function
+-- in it (see there).
+M.chunk = debug.getinfo(1, "f").func
+
 -- Binds the node arrays of a triangulation (nil to drop them).
 function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn = x, y, nextN, prevN, ring, cap, sign

@@ -616,23 +616,44 @@ local function clipEars(s, tris)
   return true
 end
 
--- LuaJIT's room for compiled code, made at the first triangulation: the ear clipping and the
--- sweep compile to some 1,500 traces and 1.2 MB of machine code on outlines with a thousand
--- holes, past LuaJIT 2.1's defaults (1,000 traces, 512 KB), and a full area makes LuaJIT throw
--- away every trace, the game's too, and compile again, each call: 5 to 40 times slower (see
--- bench/NOTES.md). Raised to 6,000 and 8 MB, which LuaJIT fills only as it needs; a game that
--- wants other limits sets them with jit.opt.start after its first triangulation.
-local roomMade = not JIT
-local function makeRoom()
-  roomMade = true
-  local jit = rawget(_G, "jit")
-  if jit and jit.opt and jit.opt.start then pcall(jit.opt.start, "maxtrace=6000", "maxmcode=8192") end
+-- LuaJIT: compiled only once it pays. Compiling the ear clipping and the sweep costs some 10 to
+-- 200 ms of traces (they compile to 700 to 1,500 of them), several times what the interpreter
+-- takes for one triangulation of a few thousand vertices (rain: 28 ms interpreted, 115 ms on a
+-- first compiled call, 3 ms once compiled), and a level loads its outlines once. So this file's
+-- and sweep.lua's functions start interpreted (jit.off), and are compiled (jit.on) once the
+-- triangulations have spent INTERPRETED_BUDGET seconds of CPU time in the interpreter: the
+-- ski-rental rule, never more than about twice the better of the two choices made in hindsight.
+-- The room for compiled code is raised at that moment: on outlines with a thousand holes the
+-- traces need 1.2 MB, past LuaJIT 2.1's defaults (1,000 traces, 512 KB), and a full area makes
+-- LuaJIT throw away every trace, the game's too, and compile again, each call: 5 to 40 times
+-- slower (see bench/NOTES.md). Raised to 6,000 and 8 MB, which LuaJIT fills only as it needs; a
+-- game that wants other limits sets them with jit.opt.start after that.
+local INTERPRETED_BUDGET = 0.05
+local compiled = not JIT
+local interpreted = 0
+local clock = os.clock
+local jit = JIT and rawget(_G, "jit")
+local chunk = JIT and debug.getinfo(1, "f").func
+if JIT then
+  jit.off(chunk, true)
+  jit.off(sweep.chunk, true)
 end
+
+-- Charges the interpreter's time since t0 and compiles once the budget is spent.
+local function charge(t0)
+  interpreted = interpreted + (clock() - t0)
+  if interpreted < INTERPRETED_BUDGET then return end
+  compiled = true
+  if jit.opt and jit.opt.start then pcall(jit.opt.start, "maxtrace=6000", "maxmcode=8192") end
+  jit.on(chunk, true)
+  jit.on(sweep.chunk, true)
+end
+
+local build
 
 -- Checks the arguments and triangulates: the triangles' nodes (a flat array, three per
 -- triangle), or nil and a message. Leaves the node arrays set for the caller to read.
 local function triangulate(fname, points, holes, checkOnly)
-  if not roomMade then makeRoom() end
   local n = checkPoints(points, fname, "points", 4)
   if holes ~= nil and type(holes) ~= "table" then
     error(("%s: holes must be a table, got %s"):format(fname, type(holes)), 3)
@@ -658,6 +679,15 @@ local function triangulate(fname, points, holes, checkOnly)
     end
     if not ok then error(("%s: holes[%d]: %s"):format(fname, h, message), 3) end
   end
+  if compiled then return build(points, n, holes, checkOnly) end
+  local t0 = clock()
+  local tris, why = build(points, n, holes, checkOnly)
+  charge(t0)
+  return tris, why
+end
+
+-- triangulate's work, on arguments it has checked.
+function build(points, n, holes, checkOnly)
   turn = areaSign(points, n)
   local flat = turn == 0   -- zero area: a bow-tie's halves cancel; say so when edges cross
   turn = turn < 0 and -1 or 1
