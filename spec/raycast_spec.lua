@@ -180,12 +180,12 @@ describe("polygonRayCast", function()
       -- from (0, 50) to (200, 50) in at x = 100, t = 100 / 200, normal (-1, 0); from (300, 50)
       -- to (0, 50) in at x = 140, t = (300 - 140) / 300 (150: t = 150 / 300), normal (1, 0)
       local wall = { 100, 0, 140, 0, 140, 200, 100, 200 }
-      local shapes = {
+      local walls = {
         { wall, 160 / 300 },
         { { 100, 0, 100, 200, 140, 200, 140, 0 }, 160 / 300 },
         { { wall, { 140, 0, 150, 0, 150, 200, 140, 200 } }, 150 / 300 },
       }
-      for _, shape in ipairs(shapes) do
+      for _, shape in ipairs(walls) do
         local f, nx, ny = cast(shape[1], 0, 50, 200, 50)
         assert.are.same({ 0.5, -1, "0" }, { f, nx, ("%g"):format(ny) })
         f, nx, ny = cast(shape[1], 300, 50, 0, 50)
