@@ -1,0 +1,444 @@
+-- polygon/casts.lua: swept polygons: where a convex polygon moving along a vector first meets a
+-- static convex polygon or list of convex parts (polygonsCast). Every hit or miss and every order
+-- of two contact times is exact (kernel's cross, then expansions); the fraction is stepped back
+-- until the moved polygon, rounded as a game rounds it, does not collide (sat's exact test).
+-- Relies on kernel, check, convex, views, sat and collide.
+
+local _PACKAGE = (...):match("^(.+)%.[^%.]+")
+local kernel = require(_PACKAGE .. ".kernel")
+local check = require(_PACKAGE .. ".check")
+local convex = require(_PACKAGE .. ".convex")
+local views = require(_PACKAGE .. ".views")
+local sat = require(_PACKAGE .. ".sat")
+local collide = require(_PACKAGE .. ".collide")
+
+local abs, huge, min, max = math.abs, math.huge, math.min, math.max
+local cross, CROSS_BOUND, EPS = kernel.cross, kernel.CROSS_BOUND, kernel.EPS
+local twoDiff, powerScale, areaSign = kernel.twoDiff, kernel.powerScale, kernel.areaSign
+local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
+local expCopy, expSign = kernel.expCopy, kernel.expSign
+local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
+local checkConvex = convex.checkConvex
+local listView, call, checkCopy = views.listView, views.call, views.checkCopy
+local unit, convexPenetration = sat.unit, sat.convexPenetration
+local resolveShape, polygonsCollideV = collide.resolveShape, collide.polygonsCollideV
+
+local type = type
+
+local M = {}
+
+
+-- The moving polygon P2 is at P2 + t d, t in [0, 1], d = (dx, dy). Two convex polygons' open
+-- interiors meet exactly when no edge line of either separates them, and each edge gives an
+-- inequality linear in t. For the edge p -> q of P1 (turn w1, interior where w1 (q - p) x (v - p)
+-- > 0): P2 lies outside it at t exactly when C + t S <= 0, C = max over P2's vertices v of
+-- w1 (q - p) x (v - p), S = w1 (q - p) x d. For the edge r -> s of P2 (turn w2) the roles swap
+-- and P2's edge moves: C = max over P1's vertices a of w2 (s - r) x (a - r), S = -w2 (s - r) x d.
+-- The pair overlaps at t exactly when C + t S > 0 for every edge of both (the Minkowski
+-- difference P1 - P2 is the intersection of these half-planes: its edges are both polygons'):
+-- an open interval of t. An edge with S > 0 bounds it from below at t = -C / S (an entry), one
+-- with S < 0 from above (an exit), one with S = 0 holds for every t or for none. So:
+--   some edge with C <= 0 and S <= 0   a miss (P2 already outside it and not moving in: a slide
+--                                      along a face has S = 0 and C = 0);
+--   every C > 0                        colliding at t = 0;
+--   else                               a hit exactly when the greatest entry (>= 0) is < 1 and
+--                                      below every exit.
+-- Every entry or exit is a ratio of two cross products of differences of the given doubles,
+-- t = ((u1 - u0) x (v1 - v0)) / ((u1 - u0) x d): for P1's edge p -> q and P2's deepest vertex v,
+-- u = (p, q), v = (v, p); for P2's edge r -> s and P1's deepest vertex a, u = (r, s), v = (r, a).
+-- Two ratios are ordered by their float values when their error bounds part them, else by the
+-- exact sign of n1 d2 - n2 d1 (products of expansions).
+
+-- A ratio is held in a table of 9 numbers: u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, and the sign
+-- sigma that makes sigma ((u1 - u0) rotated a quarter turn clockwise, (ey, -ex)) the contact
+-- normal from P1 toward P2 (w1 for P1's edges, -w2 for P2's).
+local bestRatio, bestList, candidate = {}, {}, {}
+local exits, exitCount = {}, 0   -- the exits of the last convexCast, 8 numbers each
+
+-- Fills the ratio table R.
+local function setRatio(R, u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, sigma)
+  R[1], R[2], R[3], R[4], R[5], R[6], R[7], R[8], R[9] = u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, sigma
+end
+
+local function copyRatio(into, R)
+  for i = 1, 9 do into[i] = R[i] end
+end
+
+-- The ratio R[base + 1 .. base + 8] in floating point and a bound on its absolute error (huge
+-- where it cannot vouch): each cross product within CROSS_BOUND times its terms' size
+-- (Shewchuk's bound, the differences' rounding included), the quotient's relative error their
+-- relative bounds summed plus eps, to first order (the rest is negligible below 2^-20), where
+-- no product overflowed or lost bits to underflow.
+local function ratioEstimate(R, base, dx, dy)
+  local ex, ey = R[base + 3] - R[base + 1], R[base + 4] - R[base + 2]
+  local wx, wy = R[base + 7] - R[base + 5], R[base + 8] - R[base + 6]
+  local nl, nr, dl, dr = ex * wy, ey * wx, ex * dy, ey * dx
+  local num, den = nl - nr, dl - dr
+  local numSize, denSize = abs(nl) + abs(nr), abs(dl) + abs(dr)
+  local t = num / den
+  if numSize == 0 and denSize > 2^-900 and denSize < 2^1000 and (ex == 0 or wy == 0)
+      and (ey == 0 or wx == 0) then
+    return 0.0, 0.0   -- the numerator is exactly 0 (no difference is 0 by rounding)
+  end
+  local rel = CROSS_BOUND * (numSize / abs(num) + denSize / abs(den))
+  if rel < 2^-20 and numSize > 2^-900 and denSize > 2^-900 and numSize < 2^1000 and denSize < 2^1000 then
+    return t, (rel + EPS) * abs(t) * (1 + 2^-18)
+  end
+  return t, huge
+end
+
+-- Scratch for the exact orders and fractions: compressed expansions copied out of kernel's one.
+local partsA, partsB, partsC, partsD = {}, {}, {}, {}
+
+-- The exact (u1 - u0) x (v1 - v0) of the coordinates times s (a power of two) into `into`,
+-- compressed (its largest component last, within an ulp of the value); returns its length.
+local function crossInto(into, u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, s)
+  local axh, axl = twoDiff(u1x * s, u0x * s)
+  local ayh, ayl = twoDiff(u1y * s, u0y * s)
+  local bxh, bxl = twoDiff(v1x * s, v0x * s)
+  local byh, byl = twoDiff(v1y * s, v0y * s)
+  expClear()
+  expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
+  expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh)
+  expAddProduct(-ayl, bxl)
+  expCompress()
+  return expCopy(into)
+end
+
+-- The largest magnitude among R[base + 1 .. base + 8].
+local function ratioMagnitude(R, base)
+  local m = 0.0
+  for i = base + 1, base + 8 do m = max(m, abs(R[i])) end
+  return m
+end
+
+-- The power of two for the exact products of four differences: coordinates beyond 2^250 or
+-- below 2^-100 in magnitude are brought into [2^186, 2^250] (exact, short of underflow), so no
+-- product of two cross products overflows.
+local function productScale(m)
+  if m > 2^250 or (m < 2^-100 and m > 0) then return powerScale(m, 2^186, 2^250) end
+  return 1.0
+end
+
+-- The numerator and denominator of the ratio R[base + 1 ..] as exact expansions, into numParts
+-- and denParts; returns their lengths.
+local function ratioExact(R, base, dx, dy, s, numParts, denParts)
+  local u0x, u0y, u1x, u1y = R[base + 1], R[base + 2], R[base + 3], R[base + 4]
+  local numLen = crossInto(numParts, u0x, u0y, u1x, u1y, R[base + 5], R[base + 6], R[base + 7],
+    R[base + 8], s)
+  local denLen = crossInto(denParts, u0x, u0y, u1x, u1y, 0.0, 0.0, dx, dy, s)
+  return numLen, denLen
+end
+
+-- The sign of the top component of an expansion copied into parts (length len), 0 when empty.
+local function partsSign(parts, len)
+  if len == 0 then return 0 end
+  return parts[len] > 0 and 1 or -1
+end
+
+-- The sign of t(R) - t(Q), R at R[a + 1 ..], Q at Q[b + 1 ..] (both denominators nonzero). Exact.
+local function compareRatios(R, a, Q, b, dx, dy)
+  local tr, er = ratioEstimate(R, a, dx, dy)
+  local tq, eq = ratioEstimate(Q, b, dx, dy)
+  if tr + er < tq - eq then return -1 end
+  if tq + eq < tr - er then return 1 end
+  local m = max(ratioMagnitude(R, a), ratioMagnitude(Q, b), abs(dx), abs(dy))
+  local s = productScale(m)
+  local la, lb = ratioExact(R, a, dx, dy, s, partsA, partsB)
+  local lc, ld = ratioExact(Q, b, dx, dy, s, partsC, partsD)
+  -- nR / dR - nQ / dQ has the sign of (nR dQ - nQ dR) dR dQ
+  expClear()
+  for i = 1, la do
+    for j = 1, ld do expAddProduct(partsA[i], partsD[j]) end
+  end
+  for i = 1, lc do
+    for j = 1, lb do expAddProduct(-partsC[i], partsB[j]) end
+  end
+  return expSign() * partsSign(partsB, lb) * partsSign(partsD, ld)
+end
+
+-- Whether t(R) < 1 (R at R[1 ..], its denominator nonzero). Exact.
+local function ratioBelowOne(R, dx, dy)
+  local t, e = ratioEstimate(R, 0, dx, dy)
+  if t + e < 1 then return true end
+  if t - e > 1 then return false end
+  local s = productScale(max(ratioMagnitude(R, 0), abs(dx), abs(dy)))
+  local la, lb = ratioExact(R, 0, dx, dy, s, partsA, partsB)
+  expClear()   -- (n - d) / d < 0
+  for i = 1, la do expAddProduct(partsA[i], 1.0) end
+  for i = 1, lb do expAddProduct(-partsB[i], 1.0) end
+  return expSign() * partsSign(partsB, lb) < 0
+end
+
+-- t(R) within u / 4 (u = eps M / |d|, the caller's unit of step): the float value when its bound
+-- allows, else the quotient of the exact expansions' top components corrected once by the exact
+-- residual n - t0 d (within an ulp of t, plus order eps^2).
+local function ratioValue(R, dx, dy, u)
+  local t, e = ratioEstimate(R, 0, dx, dy)
+  if e <= 0.25 * u then return t end
+  local s = productScale(max(ratioMagnitude(R, 0), abs(dx), abs(dy)))
+  local la, lb = ratioExact(R, 0, dx, dy, s, partsA, partsB)
+  if la == 0 then return 0.0 end
+  local numTop, denTop = partsA[la], partsB[lb]
+  local t0 = numTop / denTop
+  expClear()
+  for i = 1, la do expAddProduct(partsA[i], 1.0) end
+  for i = 1, lb do expAddProduct(-t0, partsB[i]) end
+  return t0 + expCompress() / denTop
+end
+
+-- The vertex index (odd) of `other` (m coordinates) deepest on the inner side of the edge
+-- p -> q of a polygon of turn w: the greatest w (q - p) x (v - p). Exact.
+local function deepest(px, py, qx, qy, w, other, m)
+  local best = 1
+  local bx, by = other[1] + 0.0, other[2] + 0.0
+  for j = 3, m - 1, 2 do
+    local vx, vy = other[j] + 0.0, other[j + 1] + 0.0
+    if cross(px, py, qx, qy, bx, by, vx, vy) * w > 0 then best, bx, by = j, vx, vy end
+  end
+  return best
+end
+
+local MISS, HIT, INSIDE = 0, 1, 2
+
+-- convexCast's walk over the edges of one polygon (`own`, turn w, its edges' u = (p, q)) against
+-- the other's vertices. moving: own is P2 (its edges move). Leaves the greatest entry with C <= 0
+-- in bestRatio (found: whether there is one yet) and appends the exits; returns MISS, or whether
+-- every C was > 0 so far (allInside).
+local function edgeWalk(own, n, w, other, m, moving, dx, dy, found, allInside)
+  local px, py = own[n - 1] + 0.0, own[n] + 0.0
+  local sigma = moving and -w or w
+  for i = 1, n - 1, 2 do
+    local qx, qy = own[i] + 0.0, own[i + 1] + 0.0
+    if qx ~= px or qy ~= py then
+      local j = deepest(px, py, qx, qy, w, other, m)
+      local vx, vy = other[j] + 0.0, other[j + 1] + 0.0
+      local c = cross(px, py, qx, qy, px, py, vx, vy) * w
+      local sd = cross(px, py, qx, qy, 0.0, 0.0, dx, dy) * w
+      if moving then sd = -sd end
+      if c <= 0 then
+        allInside = false
+        if sd <= 0 then return MISS end
+        -- an entry at t >= 0: u = (p, q); v = (v, p) for P1's edges, (p, v) for P2's
+        if moving then
+          setRatio(candidate, px, py, qx, qy, px, py, vx, vy, sigma)
+        else
+          setRatio(candidate, px, py, qx, qy, vx, vy, px, py, sigma)
+        end
+        if not found or compareRatios(candidate, 0, bestRatio, 0, dx, dy) > 0 then
+          copyRatio(bestRatio, candidate)
+          found = true
+        end
+      elseif sd < 0 then   -- an exit at t > 0
+        local b = 8 * exitCount
+        exits[b + 1], exits[b + 2], exits[b + 3], exits[b + 4] = px, py, qx, qy
+        if moving then
+          exits[b + 5], exits[b + 6], exits[b + 7], exits[b + 8] = px, py, vx, vy
+        else
+          exits[b + 5], exits[b + 6], exits[b + 7], exits[b + 8] = vx, vy, px, py
+        end
+        exitCount = exitCount + 1
+      end
+    end
+    px, py = qx, qy
+  end
+  return found, allInside
+end
+
+-- Whether convex P1 (p1[1 .. n1], turn w1) and convex P2 (turn w2) moving by t d meet for some t
+-- in [0, 1]: MISS, INSIDE (colliding at t = 0) or HIT, the entry left in bestRatio. Exact.
+local function convexCast(p1, n1, w1, p2, n2, w2, dx, dy)
+  if w1 == 0 or w2 == 0 then return MISS end   -- zero area never collides
+  exitCount = 0
+  local found, allInside = edgeWalk(p1, n1, w1, p2, n2, false, dx, dy, false, true)
+  if found == MISS then return MISS end
+  found, allInside = edgeWalk(p2, n2, w2, p1, n1, true, dx, dy, found, allInside)
+  if found == MISS then return MISS end
+  if allInside then return INSIDE end
+  if not ratioBelowOne(bestRatio, dx, dy) then return MISS end
+  for k = 0, exitCount - 1 do
+    if compareRatios(bestRatio, 0, exits, 8 * k, dx, dy) >= 0 then return MISS end
+  end
+  return HIT
+end
+
+-- Scratch for the moved polygon of the step back.
+local moved = {}
+
+-- Whether P2 moved by t d, each coordinate rounded as a game computes it (x + t * dx), collides
+-- with p1 (convex, n1 coordinates; exact), or with a near part of the list `shape` (view: its
+-- view; near: how many of nearParts).
+local nearParts = {}
+local function movedCollides(p1, n1, view, near, p2, n2, t, dx, dy)
+  for i = 1, n2 - 1, 2 do
+    moved[i] = p2[i] + t * dx
+    moved[i + 1] = p2[i + 1] + t * dy
+  end
+  if not view then return convexPenetration(p1, n1, moved, n2, true) ~= false end
+  for j = 1, near do
+    local k = nearParts[j]
+    if view.turns[k] ~= 0 and convexPenetration(p1[k], view.lengths[k], moved, n2, true) then
+      return true
+    end
+  end
+  return false
+end
+
+-- Steps after the computed entry, in units of u = eps M / |d|: the computed t is within 3 u of
+-- the exact one (within u / 4 by ratioValue, plus eps t <= 2 sqrt(2) u as |d| <= 2 sqrt(2) M), so
+-- t - 5 u stays within 8 u of it.
+local STEPS = { 0, 1, 2, 3, 5 }
+
+-- The fraction to return for the entry in bestRatio: the first of t, t - u, ... that leaves the
+-- moved polygon not colliding; past those (not expected), further back, down to 0 (the start,
+-- which does not collide).
+local function steppedFraction(p1, n1, view, near, p2, n2, dx, dy, m)
+  local _, _, len = unit(dx, dy)
+  local u = EPS * m / len
+  local t = min(ratioValue(bestRatio, dx, dy, u), 1.0)
+  for i = 1, #STEPS do
+    local f = max(t - STEPS[i] * u, 0.0)
+    if not movedCollides(p1, n1, view, near, p2, n2, f, dx, dy) then return f end
+    if f == 0 then return 0.0 end
+  end
+  local back = 8 * u
+  while true do
+    local f = max(t - back, 0.0)
+    if f == 0 or not movedCollides(p1, n1, view, near, p2, n2, f, dx, dy) then return f end
+    back = back * 2
+  end
+end
+
+-- The largest coordinate magnitude of P2 at its start and moved by d (in floating point).
+local function movingMagnitude(p2, n2, dx, dy)
+  local m = 0.0
+  for i = 1, n2 - 1, 2 do
+    local x, y = p2[i], p2[i + 1]
+    m = max(m, abs(x), abs(y), abs(x + dx), abs(y + dy))
+  end
+  return m
+end
+
+-- The contact normal of the entry in bestRatio: sigma (ey, -ex), unit.
+local function entryNormal()
+  local sigma = bestRatio[9]
+  local nx, ny = unit(sigma * (bestRatio[4] - bestRatio[2]), -sigma * (bestRatio[3] - bestRatio[1]))
+  return nx + 0.0, ny + 0.0   -- + 0.0: a component of -0 reads as 0
+end
+
+-- The answer when the pair collides at t = 0: 0 and the unit direction of polygonsCollideV's push.
+local function startPush(points1, points2)
+  local _, px, py = polygonsCollideV(points1, points2)
+  local nx, ny = unit(px, py)
+  return 0.0, nx + 0.0, ny + 0.0
+end
+
+-- Raises fname's non-finite error when points[1 .. n] holds a NaN or an infinity (at the caller
+-- of the public function, which called this function's caller).
+local function checkFinite(points, n, fname, argname, level)
+  local sum = 0.0
+  for i = 1, n do local v = points[i]; sum = sum + (v - v) end
+  if sum ~= 0 then error(("%s: %s holds a non-finite coordinate"):format(fname, argname), level) end
+end
+
+-- The sign of a polygon's area (areaSign returns a number of that sign), 1, -1 or 0.
+local function turnOf(points, n)
+  local w = areaSign(points, n)
+  return w > 0 and 1 or (w < 0 and -1 or 0)
+end
+
+-- P2's checks: a flat convex polygon of finite coordinates (a list of parts refused). Returns n2.
+local function checkMoving(fname, points2)
+  local kind = type(points2) == "table" and type(points2[1])
+  if kind ~= "number" then
+    local k
+    points2, k = resolveShape(fname, "points2", points2, kind, 3)
+    if k == "table" then
+      error(("%s: points2 is a list of parts; the moving shape must be one convex polygon (cast "
+        .. "each part, or their hull)"):format(fname), 3)
+    end
+  end
+  local n2 = checkPoints(points2, fname, "points2", 4)
+  checkFinite(points2, n2, fname, "points2", 4)
+  checkConvex(points2, n2, fname, "points2", 3)
+  return points2, n2
+end
+
+-- polygonsCast against a list of parts: false, or fraction, nx, ny.
+local function castParts(fname, shape, p2, n2, w2, dx, dy)
+  local view = listView(fname, "points1", shape)
+  call.stamp = call.stamp + 1
+  local stamp = call.stamp
+  local boxes, turns = view.boxes, view.turns
+  -- the box P2 sweeps, widened by far more than its rounding (a part beyond it cannot be met)
+  local x0, y0, x1, y1 = huge, huge, -huge, -huge
+  for i = 1, n2 - 1, 2 do
+    local x, y = p2[i] + 0.0, p2[i + 1] + 0.0
+    x0, y0, x1, y1 = min(x0, x, x + dx), min(y0, y, y + dy), max(x1, x, x + dx), max(y1, y, y + dy)
+  end
+  local pad = 2^-40 * max(abs(x0), abs(y0), abs(x1), abs(y1))
+  x0, y0, x1, y1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
+  local near, foundK = 0, 0
+  local m = movingMagnitude(p2, n2, dx, dy)
+  for k = 1, view.count do
+    local b = 4 * k
+    if boxes[b - 3] <= x1 and x0 <= boxes[b - 1] and boxes[b - 2] <= y1 and y0 <= boxes[b] then
+      if view.checked[k] ~= stamp then checkCopy(view, k, shape[k], 4) end
+      near = near + 1
+      nearParts[near] = k
+      m = max(m, abs(boxes[b - 3]), abs(boxes[b - 2]), abs(boxes[b - 1]), abs(boxes[b]))
+      local w1 = turns[k]
+      w1 = w1 > 0 and 1 or (w1 < 0 and -1 or 0)
+      local status = convexCast(shape[k], view.lengths[k], w1, p2, n2, w2, dx, dy)
+      if status == INSIDE then return startPush(shape, p2) end
+      if status == HIT and (foundK == 0 or compareRatios(bestRatio, 0, bestList, 0, dx, dy) < 0) then
+        copyRatio(bestList, bestRatio)
+        foundK = k
+      end
+    end
+  end
+  if foundK == 0 then return false end
+  copyRatio(bestRatio, bestList)
+  local f = steppedFraction(shape, 0, view, near, p2, n2, dx, dy, m)
+  local nx, ny = entryNormal()
+  return f, nx, ny
+end
+
+-- polygonsCast(points1, points2, dx, dy): where the convex polygon points2, moving by t (dx, dy)
+-- for t in [0, 1], first touches points1 (a convex polygon or a list of convex parts): fraction,
+-- nx, ny or false. See polygon.lua for the contract.
+function M.polygonsCast(points1, points2, dx, dy)
+  local fname = "polygonsCast"
+  local kind1 = type(points1) == "table" and type(points1[1])
+  if kind1 ~= "number" then
+    points1, kind1 = resolveShape(fname, "points1", points1, kind1, 2)
+  end
+  local n1
+  if kind1 ~= "table" then
+    n1 = checkPoints(points1, fname, "points1", 3)
+    checkFinite(points1, n1, fname, "points1", 3)
+    checkConvex(points1, n1, fname, "points1", 2)
+  end
+  local p2, n2 = checkMoving(fname, points2)
+  checkFiniteNumber(dx, fname, "dx")
+  checkFiniteNumber(dy, fname, "dy")
+  dx, dy = dx + 0.0, dy + 0.0
+  local w2 = turnOf(p2, n2)
+  if kind1 == "table" then
+    local f, nx, ny = castParts(fname, points1, p2, n2, w2, dx, dy)
+    if not f then return false end
+    return f, nx, ny
+  end
+  local status = convexCast(points1, n1, turnOf(points1, n1), p2, n2, w2, dx, dy)
+  if status == MISS then return false end
+  if status == INSIDE then
+    local f, nx, ny = startPush(points1, p2)
+    return f, nx, ny
+  end
+  local m = max(movingMagnitude(p2, n2, dx, dy), kernel.largestMagnitude(points1, n1, 0.0))
+  local f = steppedFraction(points1, n1, nil, 0, p2, n2, dx, dy, m)
+  local nx, ny = entryNormal()
+  return f, nx, ny
+end
+
+return M
