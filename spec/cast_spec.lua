@@ -387,3 +387,29 @@ describe("polygonsCast, random cases against the oracle", function()
     end
   end)
 end)
+
+describe("polygonsCast, hard cases: the stepped-back fraction", function()
+  it("leaves the rounded moved polygon apart, on slanted contacts far from the origin", function()
+    -- moves aimed from a vertex of b at a vertex of a, 1.5 times as long: hits on slanted faces,
+    -- where the exact contact time's moved coordinates, rounded, often overlap
+    local rng = prng.new(33)
+    local hits = 0
+    for n = 1, 1500 do
+      local o = OFFSETS[rng:int(1, #OFFSETS)]
+      local a = shapes.convex(rng, rng:int(3, 6), o, o, rng:range(5, 40), 0.3)
+      local b = shapes.convex(rng, rng:int(3, 6), o + rng:range(-80, 80), o + rng:range(-80, 80),
+        rng:range(5, 40), 0.3)
+      local i, j = 2 * rng:int(1, #a / 2) - 1, 2 * rng:int(1, #b / 2) - 1
+      local dx, dy = 1.5 * (a[i] - b[j]), 1.5 * (a[i + 1] - b[j + 1])
+      local f, nx, ny = sweepCast(a, b, dx, dy)
+      if n % 10 == 0 then
+        local ok, message = agrees(a, b, dx, dy, f, nx, ny)   -- the exact contact, for some
+        assert(ok, message)
+      elseif f and f > 0 then
+        hits = hits + 1
+        assert.is_false(polygon.polygonsCollide(a, sweeps.moveBy(b, f, dx, dy)))
+      end
+    end
+    assert.is_true(hits > 800, hits .. " hits")
+  end)
+end)
