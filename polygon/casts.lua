@@ -12,16 +12,20 @@ local views = require(_PACKAGE .. ".views")
 local sat = require(_PACKAGE .. ".sat")
 local collide = require(_PACKAGE .. ".collide")
 
-local abs, huge, min, max = math.abs, math.huge, math.min, math.max
+local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 local cross, CROSS_BOUND, EPS = kernel.cross, kernel.CROSS_BOUND, kernel.EPS
 local twoDiff, powerScale, areaSign = kernel.twoDiff, kernel.powerScale, kernel.areaSign
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expSign = kernel.expCopy, kernel.expSign
-local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
+local expLength, expansion, twoProduct = kernel.expLength, kernel.expansion, kernel.twoProduct
+local checkPoints, checkFiniteNumber, checkRadius = check.checkPoints, check.checkFiniteNumber,
+  check.checkRadius
 local checkConvex = convex.checkConvex
 local listView, call, checkCopy = views.listView, views.call, views.checkCopy
 local unit, convexPenetration = sat.unit, sat.convexPenetration
 local resolveShape, polygonsCollideV = collide.resolveShape, collide.polygonsCollideV
+local circle = require(_PACKAGE .. ".circle")
+local reaches, circlesCollideV = circle.reaches, circle.circlesCollideV
 
 local type = type
 
@@ -404,6 +408,148 @@ local function castParts(fname, shape, p2, n2, w2, dx, dy)
   return f, nx, ny
 end
 
+-- DISCS. The moving disc (centre A, radius r2) meets the static one (centre C, radius r1) at t
+-- when |w + t d| < R, w = A - C, R = r1 + r2 (exact as rh + rl, TwoSum): f(t) = Q t^2 + 2 P t + K
+-- < 0, Q = |d|^2, P = d.w, K = |w|^2 - R^2. With K < 0 they collide at t = 0. Else (K >= 0) f
+-- dips below 0 in [0, 1] exactly when f(1) < 0, or P < 0, P + Q > 0 (its least value inside) and
+-- G = P^2 - Q K = R^2 Q - X^2 > 0, X = d x w (Lagrange's identity): each a sign of a sum of
+-- products of the split differences wx = wxh + wxl, wy, of d and of rh + rl, summed exactly as an
+-- expansion. The entry is t = K / (-P + sqrt G) (no cancellation: -P > 0) from the expansions'
+-- top components as double doubles, the contact normal along X (-dy, dx) - sqrt(G) d (the
+-- contact point's offset from C times Q).
+
+-- The power of two for the disc tests (every term of degree 4 at most): into [2^186, 2^250]
+-- (circle.lua's range for its exact tests), 2^200 for the sizes games use.
+local function discScale(m)
+  if m >= 2^-14 and m <= 2^50 then return 2^200 end
+  return powerScale(m, 2^186, 2^250)
+end
+
+-- What discSetup leaves: the split differences and radius sum, scaled, and d scaled.
+local wxh, wxl, wyh, wyl, rh, rl, ddx, ddy = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+
+local function discSetup(cx, cy, R1, ax, ay, R2, dx, dy)
+  local s = discScale(max(abs(cx), abs(cy), abs(ax), abs(ay), abs(dx), abs(dy), R1, R2))
+  wxh, wxl = twoDiff(ax * s, cx * s)
+  wyh, wyl = twoDiff(ay * s, cy * s)
+  rh, rl = twoDiff(R1 * s, -R2 * s)
+  ddx, ddy = dx * s, dy * s
+end
+
+-- Adds (a + b + c)^2 times sign to the scratch expansion.
+local function expAddSquare3(a, b, c, sign)
+  expAddProduct(sign * a, a); expAddProduct(sign * b, b); expAddProduct(sign * c, c)
+  expAddProduct(2 * sign * a, b); expAddProduct(2 * sign * a, c); expAddProduct(2 * sign * b, c)
+end
+
+-- The exact sign of f(1) = |w + d|^2 - R^2.
+local function discEndSign()
+  expClear()
+  expAddSquare3(wxh, wxl, ddx, 1)
+  expAddSquare3(wyh, wyl, ddy, 1)
+  expAddSquare3(rh, rl, 0.0, -1)
+  return expSign()
+end
+
+-- The exact sign of P = d.w, and of P + Q = d.(w + d).
+local function discTowardSigns()
+  expClear()
+  expAddProduct(ddx, wxh); expAddProduct(ddx, wxl); expAddProduct(ddy, wyh); expAddProduct(ddy, wyl)
+  local p = expSign()
+  expAddProduct(ddx, ddx); expAddProduct(ddy, ddy)
+  return p, expSign()
+end
+
+local crossScratch, radiusScratch, lengthScratch = {}, {}, {}
+
+-- G = R^2 Q - X^2 into the scratch expansion (compressed); returns its sign.
+local function discGap()
+  expClear()   -- X = d x w
+  expAddProduct(ddx, wyh); expAddProduct(ddx, wyl); expAddProduct(-ddy, wxh); expAddProduct(-ddy, wxl)
+  expCompress()
+  local xLen = expCopy(crossScratch)
+  expClear()
+  expAddSquare3(rh, rl, 0.0, 1)
+  expCompress()
+  local rLen = expCopy(radiusScratch)
+  expClear()
+  expAddProduct(ddx, ddx); expAddProduct(ddy, ddy)
+  expCompress()
+  local qLen = expCopy(lengthScratch)
+  expClear()
+  for i = 1, rLen do
+    for j = 1, qLen do expAddProduct(radiusScratch[i], lengthScratch[j]) end
+  end
+  for i = 1, xLen do
+    for j = 1, xLen do expAddProduct(-crossScratch[i], crossScratch[j]) end
+  end
+  expCompress()
+  return expSign(), xLen
+end
+
+-- The top two components of the compressed scratch expansion: a double double within order
+-- eps^2 of its value.
+local function topTwo()
+  local hi = expCompress()
+  local len = expLength()
+  if len >= 2 then return hi, expansion[len - 1] end
+  return hi, 0.0
+end
+
+-- a + b as hi + lo exactly (Knuth's TwoSum).
+local function twoSum(a, b)
+  local x = a + b
+  local bv = x - a
+  local av = x - bv
+  return x, (a - av) + (b - bv)
+end
+
+-- The entry time and contact normal of a hit found by discCastStatus (discSetup's numbers):
+-- t = K / (-P + sqrt G), each from its exact expansion's top two components.
+local function discEntry()
+  discGap()
+  local gh, gl = topTwo()
+  expClear()   -- X again, its top component, for the normal
+  expAddProduct(ddx, wyh); expAddProduct(ddx, wyl); expAddProduct(-ddy, wxh); expAddProduct(-ddy, wxl)
+  local xh = expCompress()
+  expClear()   -- P
+  expAddProduct(ddx, wxh); expAddProduct(ddx, wxl); expAddProduct(ddy, wyh); expAddProduct(ddy, wyl)
+  local ph, pl = topTwo()
+  expClear()   -- K = |w|^2 - R^2
+  expAddSquare3(wxh, wxl, 0.0, 1)
+  expAddSquare3(wyh, wyl, 0.0, 1)
+  expAddSquare3(rh, rl, 0.0, -1)
+  local kh, kl = topTwo()
+  local root = sqrt(max(gh, 0.0))
+  local rootLo = 0.0
+  if root > 0 then
+    local sh, sl = twoProduct(root, root)
+    rootLo = (((gh - sh) - sl) + gl) / (2 * root)
+  end
+  local dh, dlo = twoSum(root, -ph)   -- D = sqrt G - P > 0
+  dlo = dlo + (rootLo - pl)
+  local t = kh / dh
+  local th, tl = twoProduct(t, dh)
+  t = t + ((((kh - th) - tl) + kl) - t * dlo) / dh
+  local nx, ny = unit(-root * ddx - xh * ddy, xh * ddx - root * ddy)
+  return max(t, 0.0), nx, ny
+end
+
+-- MISS, INSIDE or HIT for the disc (ax, ay, R2) moving by d against the disc (cx, cy, R1).
+local function discCastStatus(cx, cy, R1, ax, ay, R2, dx, dy)
+  discSetup(cx, cy, R1, ax, ay, R2, dx, dy)
+  expClear()   -- K = |w|^2 - R^2
+  expAddSquare3(wxh, wxl, 0.0, 1)
+  expAddSquare3(wyh, wyl, 0.0, 1)
+  expAddSquare3(rh, rl, 0.0, -1)
+  if expSign() < 0 then return INSIDE end
+  if discEndSign() < 0 then return HIT end
+  local p, pq = discTowardSigns()
+  if p >= 0 or pq <= 0 then return MISS end
+  if discGap() > 0 then return HIT end
+  return MISS
+end
+
 -- polygonsCast(points1, points2, dx, dy): where the convex polygon points2, moving by t (dx, dy)
 -- for t in [0, 1], first touches points1 (a convex polygon or a list of convex parts): fraction,
 -- nx, ny or false. See polygon.lua for the contract.
@@ -439,6 +585,43 @@ function M.polygonsCast(points1, points2, dx, dy)
   local f = steppedFraction(points1, n1, nil, 0, p2, n2, dx, dy, m)
   local nx, ny = entryNormal()
   return f, nx, ny
+end
+
+-- circlesCast(x1, y1, r1, x2, y2, r2, dx, dy): where the circle (x2, y2, r2), moving by t (dx, dy)
+-- for t in [0, 1], first touches the circle (x1, y1, r1): fraction, nx, ny or false. See
+-- polygon.lua for the contract.
+function M.circlesCast(x1, y1, r1, x2, y2, r2, dx, dy)
+  local fname = "circlesCast"
+  checkFiniteNumber(x1, fname, "x1")
+  checkFiniteNumber(y1, fname, "y1")
+  checkRadius(r1, fname, "r1")
+  checkFiniteNumber(x2, fname, "x2")
+  checkFiniteNumber(y2, fname, "y2")
+  checkRadius(r2, fname, "r2")
+  checkFiniteNumber(dx, fname, "dx")
+  checkFiniteNumber(dy, fname, "dy")
+  x1, y1, r1, x2, y2, r2 = x1 + 0.0, y1 + 0.0, r1 + 0.0, x2 + 0.0, y2 + 0.0, r2 + 0.0
+  dx, dy = dx + 0.0, dy + 0.0
+  local status = discCastStatus(x1, y1, r1, x2, y2, r2, dx, dy)
+  if status == MISS then return false end
+  if status == INSIDE then
+    local _, px, py = circlesCollideV(x1, y1, r1, x2, y2, r2)
+    local nx, ny = unit(px, py)
+    return 0.0, nx + 0.0, ny + 0.0
+  end
+  local t, nx, ny = discEntry()
+  -- stepped back as steppedFraction does, the moved centre tested exactly (circlesCollide's test)
+  local _, _, len = unit(dx, dy)
+  local u = EPS * max(abs(x1), abs(y1), abs(x2), abs(y2), abs(x2 + dx), abs(y2 + dy)) / len
+  local radiusHi, radiusLo = twoDiff(r1, -r2)
+  t = min(t, 1.0)
+  local f = 0.0
+  for i = 1, #STEPS + 24 do
+    f = max(t - (STEPS[i] or 8 * 2^(i - #STEPS - 1)) * u, 0.0)
+    if f == 0 or reaches(x1, y1, x2 + f * dx, y2 + f * dy, radiusHi, radiusLo) <= 0 then break end
+    f = 0.0
+  end
+  return f, nx + 0.0, ny + 0.0
 end
 
 return M
