@@ -309,6 +309,26 @@ polygon.circleRayCast = circleray.circleRayCast
 -- @{polygonRayCast}; points2 a list of parts too), and when dx or dy is not a finite number
 polygon.polygonsCast = casts.polygonsCast
 
+--- As @{polygonsCast}, for a moving circle (x2, y2, r2) against a static circle (x1, y1, r1): the
+-- disc of radius r1 + r2 (its rounding never changes a decision) met by the moving centre. A
+-- tangent pass is a miss. The same contract for the fraction (M over the centres, the moved
+-- centre included). Allocates nothing.
+-- @function circlesCast
+-- @number x1 the static circle
+-- @number y1
+-- @number r1
+-- @number x2 the moving circle
+-- @number y2
+-- @number r2
+-- @number dx the move
+-- @number dy
+-- @treturn number|boolean fraction; 0 when already colliding; or false
+-- @treturn number nx, the unit normal from the static centre toward the moving one at contact
+-- (when already colliding, the direction of @{circlesCollideV}'s push)
+-- @treturn number ny
+-- @raise when an argument is not a finite number or a radius is negative
+polygon.circlesCast = casts.circlesCast
+
 --- The nearest point of the polygon's boundary to (x, y), and the signed distance to it: AI
 -- sensing, snapping, aim assist. Any polygon, convex or not (a self-intersecting one too: its
 -- edges are the boundary). The point and the distance are within 8 eps M of exact (M over the

@@ -413,3 +413,113 @@ describe("polygonsCast, hard cases: the stepped-back fraction", function()
     assert.is_true(hits > 800, hits .. " hits")
   end)
 end)
+
+-- circlesCast's answer against the oracle's. Returns ok, message.
+local function discAgrees(x1, y1, r1, x2, y2, r2, dx, dy)
+  local f, nx, ny = polygon.circlesCast(x1, y1, r1, x2, y2, r2, dx, dy)
+  local where = ("(%.17g, %.17g, %.17g) moving (%.17g, %.17g, %.17g) by (%.17g, %.17g)"):format(x1,
+    y1, r1, x2, y2, r2, dx, dy)
+  local contact = sweeps.discContact(x1, y1, r1, x2, y2, r2, dx, dy)
+  if contact == nil then
+    return f == false and nx == nil, ("expected a miss for %s, got %s"):format(where, tostring(f))
+  end
+  if contact == "inside" then
+    local _, px, py = polygon.circlesCollideV(x1, y1, r1, x2, y2, r2)
+    local ux, uy = unitOf(px, py)
+    return f == 0 and math.abs(nx - ux) <= 16 * EPS and math.abs(ny - uy) <= 16 * EPS,
+      ("expected 0 and the push's direction for %s, got %s, %s, %s"):format(where, tostring(f),
+      tostring(nx), tostring(ny))
+  end
+  if type(f) ~= "number" then return false, ("expected a hit for %s, got %s"):format(where, tostring(f)) end
+  if polygon.circlesCollideV(x1, y1, r1, x2 + f * dx, y2 + f * dy, r2) then
+    return false, ("moved by fraction %.17g the circles collide, %s"):format(f, where)
+  end
+  local M = math.max(math.abs(x1), math.abs(y1), math.abs(x2), math.abs(y2), math.abs(x2 + dx),
+    math.abs(y2 + dy))
+  local b = 8 * EPS * M / math.sqrt(dx * dx + dy * dy) * (1 - 2 ^ -30)
+  if not sweeps.discFractionNear(f, b, x1, y1, r1, x2, y2, r2, dx, dy) then
+    return false, ("fraction %.17g is more than 8 eps M / |d| from the exact entry, %s"):format(f, where)
+  end
+  -- the normal: along the centres at the contact, from the static circle toward the moving one
+  local cx, cy = (x2 + f * dx) - x1, (y2 + f * dy) - y1
+  local ux, uy = unitOf(cx, cy)
+  local tolerance = 1e-6 + 64 * EPS * M / (r1 + r2)
+  if math.abs(nx - ux) > tolerance or math.abs(ny - uy) > tolerance or math.abs(nx * nx + ny * ny - 1) > 8 * EPS then
+    return false, ("normal (%.17g, %.17g), expected about (%.17g, %.17g), %s"):format(nx, ny, ux, uy, where)
+  end
+  return true, f, nx, ny
+end
+
+local function discChecked(...)
+  local ok, f, nx, ny = discAgrees(...)
+  assert(ok, f)
+  return f, nx, ny
+end
+
+describe("circlesCast", function()
+  describe("when computed by hand", function()
+    it("meets a circle when the centres are r1 + r2 apart, the normal along the centres", function()
+      -- centres 20 apart closing by 20: they touch at distance 10 = 5 + 5, t = 10 / 20 = 0.5
+      assert.are.same({ 0.5, 1, 0 }, { discChecked(0, 0, 5, 20, 0, 5, -20, 0) })
+      -- passing 9 above the centre: x^2 = 10^2 - 9^2 = 19 at contact, t = (20 - sqrt 19) / 40
+      local f, nx, ny = discChecked(0, 0, 5, 20, 9, 5, -40, 0)
+      assert.is_true(math.abs(f - (20 - math.sqrt(19)) / 40) < 1e-15)
+      assert.is_true(math.abs(nx - math.sqrt(19) / 10) < 1e-15 and math.abs(ny - 0.9) < 1e-15)
+    end)
+
+    it("misses a tangent pass, a short move and no move; gives 0 and the push when overlapping", function()
+      assert.is_false(polygon.circlesCast(0, 0, 5, 20, 10, 5, -40, 0))   -- passes at distance 10
+      assert.is_false(polygon.circlesCast(0, 0, 5, 20, 0, 5, -10, 0))    -- ends touching
+      assert.is_false(polygon.circlesCast(0, 0, 5, 20, 0, 5, 0, 0))
+      assert.are.same({ 0, 1, 0 }, { polygon.circlesCast(0, 0, 5, 3, 0, 5, 10, 0) })
+      assert.are.same({ 0, 0, -1 }, { polygon.circlesCast(0, 0, 5, 0, -3, 5, 0, 0) })
+      assert.is_false(polygon.circlesCast(0, 0, 0, 20, 0, 0, -40, 0))    -- radius 0: points
+    end)
+
+    it("refuses bad arguments at the caller's line", function()
+      assert.has_error(function() polygon.circlesCast(0, 0, -1, 20, 0, 5, 1, 0) end,
+        "circlesCast: r1 must not be negative, got -1")
+      assert.has_error(function() polygon.circlesCast(0, 0, 1, 20, 0 / 0, 5, 1, 0) end,
+        "circlesCast: y2 must be finite, got " .. tostring(0 / 0))
+      assert.has_error(function() polygon.circlesCast(0, 0, 1, 20, 0, 5, 1, "x") end,
+        "circlesCast: dy must be a number, got string")
+      local ok, err = callsite.raisesAtCaller(polygon.circlesCast, { 0, 0, 1, 2, 2, 1, 1 / 0, 0 })
+      assert.is_true(ok, err)
+    end)
+  end)
+end)
+
+describe("circlesCast, hard cases: tangent passes and one ulp either way", function()
+  for _, o in ipairs(OFFSETS) do
+    it("misses a tangent pass, hits one ulp inside, misses one ulp outside (offset " .. o .. ")", function()
+      -- radii 3 and 5: R = 8 exactly; the moving centre runs along y = o + 8
+      local y = o + 8
+      assert.is_false(polygon.circlesCast(o, o, 3, o - 50, y, 5, 100, 0))
+      discChecked(o, o, 3, o - 50, y, 5, 100, 0)
+      discChecked(o, o, 3, o - 50, nextDown(y), 5, 100, 0)
+      discChecked(o, o, 3, o - 50, nextUp(y), 5, 100, 0)
+      -- radii whose sum rounds: 0.1 + 0.2 is not 0.3
+      discChecked(o, o, 0.1, o + 0.3, o - 50, 0.2, 0, 100)
+      discChecked(o, o, 0.1, nextDown(o + 0.3), o - 50, 0.2, 0, 100)
+      discChecked(o, o, 0.1, o - 50, o, 0.2, 100, 0)
+      discChecked(o, o, 0.1, o - 50, o, 0.2, 0, 0)
+    end)
+  end
+end)
+
+describe("circlesCast, random cases against the oracle", function()
+  it("agree on random circles and moves, near tangents and overlapping starts included", function()
+    local rng = prng.new(34)
+    for _ = 1, 400 do
+      local o = OFFSETS[rng:int(1, #OFFSETS)]
+      local x1, y1 = o + rng:range(-50, 50), o + rng:range(-50, 50)
+      local r1, r2 = rng:range(0, 30), rng:range(0, 30)
+      local x2, y2 = o + rng:range(-100, 100), o + rng:range(-100, 100)
+      local dx, dy = rng:range(-200, 200), rng:range(-200, 200)
+      if rng:float() < 0.3 then   -- aimed at the static centre, or beside it by r1 + r2
+        dx, dy = 1.5 * (x1 - x2), 1.5 * (y1 - y2) + (rng:float() < 0.5 and (r1 + r2) or 0)
+      end
+      discChecked(x1, y1, r1, x2, y2, r2, dx, dy)
+    end
+  end)
+end)

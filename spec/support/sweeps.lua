@@ -198,4 +198,44 @@ function sweeps.overlap(a, b)
   return interiorsMeet(points(a), points(b))
 end
 
+-- Discs: the moving centre A + t d against C with R = r1 + r2: g(t) = Q t^2 + 2 P t + K, w = A - C,
+-- Q = |d|^2, P = d.w, K = |w|^2 - R^2, all exact.
+local function discTerms(x1, y1, r1, x2, y2, r2, dx, dy)
+  local wx, wy = sub(new(x2), new(x1)), sub(new(y2), new(y1))
+  local Dx, Dy = new(dx), new(dy)
+  local R = add(new(r1), new(r2))
+  return add(mul(Dx, Dx), mul(Dy, Dy)), add(mul(Dx, wx), mul(Dy, wy)),
+    sub(add(mul(wx, wx), mul(wy, wy)), mul(R, R))
+end
+
+-- g(t) for the exact value of the double t.
+local function discValue(Q, P, K, t)
+  local T = new(t)
+  return add(add(mul(Q, mul(T, T)), mul(mul(new(2), P), T)), K)
+end
+
+--- The moving disc (x2, y2, r2) + t (dx, dy) against the disc (x1, y1, r1): nil (no overlap for t
+-- in [0, 1]), "inside" (overlapping at t = 0), or "enters".
+function sweeps.discContact(x1, y1, r1, x2, y2, r2, dx, dy)
+  local Q, P, K = discTerms(x1, y1, r1, x2, y2, r2, dx, dy)
+  if sign(K) < 0 then return "inside" end
+  if sign(discValue(Q, P, K, 1)) < 0 then return "enters" end
+  -- the least of g at -P / Q inside (0, 1) below 0: P < 0, -P < Q, P^2 > Q K
+  if sign(P) < 0 and compare(neg(P), Q) < 0 and compare(mul(P, P), mul(Q, K)) > 0 then return "enters" end
+  return nil
+end
+
+--- Whether the fraction f is within b of the first root t_c of g (the disc's entry), b a double
+-- at most 8 eps M / |d|: f - b < 0, or g(f - b) >= 0 with f - b before the vertex -P / Q (then
+-- f - b <= t_c), and g(f + b) <= 0 or f + b past the vertex -P / Q.
+function sweeps.discFractionNear(f, b, x1, y1, r1, x2, y2, r2, dx, dy)
+  local Q, P, K = discTerms(x1, y1, r1, x2, y2, r2, dx, dy)
+  local lo, hi = f - b, f + b
+  if lo > 0 and (sign(discValue(Q, P, K, lo)) < 0 or compare(mul(new(lo), Q), neg(P)) > 0) then
+    return false
+  end
+  if sign(discValue(Q, P, K, hi)) <= 0 then return true end
+  return compare(mul(new(hi), Q), neg(P)) > 0   -- past the vertex: t_c <= vertex < hi
+end
+
 return sweeps
