@@ -384,7 +384,8 @@ function evaluate.circleCast(wl, call)
   local a, wrong = wl.args, 0
   local collide = require("polygon").circlesCollideV
   for i = 1, wl.n do
-    local x1, y1, r1, x2, y2, r2, dx, dy = a[1][i], a[2][i], a[3][i], a[4][i], a[5][i], a[6][i], a[7][i], a[8][i]
+    local x1, y1, r1, x2, y2, r2 = a[1][i], a[2][i], a[3][i], a[4][i], a[5][i], a[6][i]
+    local dx, dy = a[7][i], a[8][i]
     local contact = sweeps.discContact(x1, y1, r1, x2, y2, r2, dx, dy)
     local f = call(i)
     if contact == nil then

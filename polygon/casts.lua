@@ -12,7 +12,8 @@ local views = require(_PACKAGE .. ".views")
 local sat = require(_PACKAGE .. ".sat")
 local collide = require(_PACKAGE .. ".collide")
 
-local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
+local abs, huge, min, max, sqrt, floor = math.abs, math.huge, math.min, math.max, math.sqrt,
+  math.floor
 local cross, CROSS_BOUND, EPS = kernel.cross, kernel.CROSS_BOUND, kernel.EPS
 local twoDiff, powerScale, areaSign = kernel.twoDiff, kernel.powerScale, kernel.areaSign
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
@@ -288,29 +289,36 @@ local function movedCollides(p1, n1, view, near, p2, n2, t, dx, dy)
   return false
 end
 
--- Steps after the computed entry, in units of u = eps M / |d|: the computed t is within 3 u of
--- the exact one (within u / 4 by ratioValue, plus eps t <= 2 sqrt(2) u as |d| <= 2 sqrt(2) M), so
--- t - 5 u stays within 8 u of it.
-local STEPS = { 0, 1, 2, 3, 5 }
+-- The steps back from the computed entry t, in units of u = eps M / |d|. The computed t is within
+-- e = u / 4 + 2 eps t of the exact one (ratioValue's bound, or the disc's double doubles, plus the
+-- final roundings; 2 eps t <= 2 sqrt(2) u t as |d| <= 2 sqrt(2) M), so every t - k u / 4 down to
+-- t - (8 u - e) is no earlier than 8 u before it: each is tried in turn. Where the motion grazes
+-- the contact (nearly parallel to it) a step back of u hardly moves the shapes apart, and the
+-- rounding of the moved coordinates, which changes every quarter u or so, decides. Past the
+-- window (grazing contacts only) the steps double from 8 u, down to 0 (the start, which does not
+-- collide): the move is never allowed to end colliding, even where no fraction within 8 u of
+-- the contact leaves the rounded shapes apart.
+local function windowSteps(t, u)
+  return floor((8 * u - (0.25 * u + 2 * EPS * t)) / (0.25 * u) * (1 - 2^-20)) + 1
+end
 
--- The fraction to return for the entry in bestRatio: the first of t, t - u, ... that leaves the
--- moved polygon not colliding; past those (not expected), further back, down to 0 (the start,
--- which does not collide).
+local function stepBack(k, window)
+  if k <= window then return (k - 1) * 0.25 end
+  return 8 * 2^(k - window - 1)
+end
+
+-- The fraction to return for the entry in bestRatio: the first of t, t - u / 4, ... that leaves
+-- the moved polygon not colliding.
 local function steppedFraction(p1, n1, view, near, p2, n2, dx, dy, m)
   local _, _, len = unit(dx, dy)
   local u = EPS * m / len
   local t = min(ratioValue(bestRatio, dx, dy, u), 1.0)
-  for i = 1, #STEPS do
-    local f = max(t - STEPS[i] * u, 0.0)
-    if not movedCollides(p1, n1, view, near, p2, n2, f, dx, dy) then return f end
-    if f == 0 then return 0.0 end
-  end
-  local back = 8 * u
-  while true do
-    local f = max(t - back, 0.0)
+  local window = windowSteps(t, u)
+  for k = 1, window + 1060 do
+    local f = max(t - stepBack(k, window) * u, 0.0)
     if f == 0 or not movedCollides(p1, n1, view, near, p2, n2, f, dx, dy) then return f end
-    back = back * 2
   end
+  return 0.0
 end
 
 -- The largest coordinate magnitude of P2 at its start and moved by d (in floating point).
@@ -425,6 +433,14 @@ local function discScale(m)
   return powerScale(m, 2^186, 2^250)
 end
 
+-- a + b as hi + lo exactly (Knuth's TwoSum).
+local function twoSum(a, b)
+  local x = a + b
+  local bv = x - a
+  local av = x - bv
+  return x, (a - av) + (b - bv)
+end
+
 -- What discSetup leaves: the split differences and radius sum, scaled, and d scaled.
 local wxh, wxl, wyh, wyl, rh, rl, ddx, ddy = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
 
@@ -496,13 +512,6 @@ local function topTwo()
   return hi, 0.0
 end
 
--- a + b as hi + lo exactly (Knuth's TwoSum).
-local function twoSum(a, b)
-  local x = a + b
-  local bv = x - a
-  local av = x - bv
-  return x, (a - av) + (b - bv)
-end
 
 -- The entry time and contact normal of a hit found by discCastStatus (discSetup's numbers):
 -- t = K / (-P + sqrt G), each from its exact expansion's top two components.
@@ -535,8 +544,100 @@ local function discEntry()
   return max(t, 0.0), nx, ny
 end
 
+-- The signs discCastStatus needs, in floating point first: each value with a bound on its error
+-- (w = A - C rounded once, w + d twice, r1 + r2 once; each square or product once more, each
+-- sum once more: a few eps times the sizes of the terms, with the rounding of w + d counted
+-- against |w| + |d| as it may cancel), 8 or 16 eps times the terms' size, which is more than
+-- twice that. 0 where the bound cannot vouch (or a value nears overflow or underflow).
+local function vouched(value, size)
+  if (value > size or -value > size) and size > 2^-900 and size < 2^1000 then return value end
+  return 0.0
+end
+
+-- discEntry's numbers as double doubles, with no loop (as circleray.lua's circleEntryDD, with d
+-- exact and R = rh + rl): the differences split exactly, each product's main part exact
+-- (TwoProduct), first-order terms added, each sum of high parts exact (TwoSum, TwoDiff). What is
+-- dropped is below 2^-100 times a quantity's terms, so K, G and D = sqrt(G) - P are within
+-- 2^-100 c of themselves, c their terms over them, and t = K / D, corrected once, is within eps
+-- plus order eps^2 when c stays below 2^30 for K and G; else nil (the expansions).
+local function discEntryDD(cx, cy, R1, ax, ay, R2, dx, dy)
+  local wx, wxLo = twoDiff(ax, cx)
+  local wy, wyLo = twoDiff(ay, cy)
+  local rHi, rLo = twoSum(R1, R2)
+  local m = max(abs(wx), abs(wy), abs(dx), abs(dy), rHi)
+  if m > 2^200 or m < 2^-200 then return nil end   -- (products' range)
+  local h, l = twoProduct(dx, wy)   -- X = d x w
+  local h2, l2 = twoProduct(dy, wx)
+  local xh, xl = twoDiff(h, h2)
+  xl = xl + (l - l2) + (dx * wyLo - dy * wxLo)
+  xh, xl = twoSum(xh, xl)
+  h, l = twoProduct(dx, dx)   -- Q = |d|^2
+  h2, l2 = twoProduct(dy, dy)
+  local qh, ql = twoSum(h, h2)
+  ql = ql + (l + l2)
+  h, l = twoProduct(dx, wx)   -- P = d.w
+  h2, l2 = twoProduct(dy, wy)
+  local ph, pl = twoSum(h, h2)
+  pl = pl + (l + l2) + (dx * wxLo + dy * wyLo)
+  local rrh, rrl = twoProduct(rHi, rHi)   -- R^2
+  rrl = rrl + 2 * rHi * rLo
+  h, l = twoProduct(wx, wx)   -- K = |w|^2 - R^2
+  h2, l2 = twoProduct(wy, wy)
+  local kh, kl = twoSum(h, h2)
+  local kTerms = kh + rrh
+  kl = kl + (l + l2) + 2 * (wx * wxLo + wy * wyLo)
+  local e
+  kh, e = twoDiff(kh, rrh)
+  kl = kl + e - rrl
+  kh, kl = twoSum(kh, kl)
+  h, l = twoProduct(rrh, qh)   -- G = R^2 Q - X^2
+  h2, l2 = twoProduct(xh, xh)
+  local gTerms = h + h2
+  local gh, gl = twoDiff(h, h2)
+  gl = gl + (l - l2) + (rrh * ql + rrl * qh) - 2 * xh * xl
+  gh, gl = twoSum(gh, gl)
+  if not (kh > 0 and gh > 0 and kTerms < 2^30 * kh and gTerms < 2^30 * gh) then return nil end
+  local root = sqrt(gh)   -- sqrt(G) as hi + lo: one Newton step
+  local sh, sl = twoProduct(root, root)
+  local rootLo = (((gh - sh) - sl) + gl) / (2 * root)
+  local dh, dlo = twoDiff(root, ph)   -- D = sqrt G - P > 0
+  dlo = dlo + (rootLo - pl)
+  local t = kh / dh
+  local th, tl = twoProduct(t, dh)
+  t = t + ((((kh - th) - tl) + kl) - t * dlo) / dh
+  local nx, ny = unit(-root * dx - xh * dy, xh * dx - root * dy)
+  return max(t, 0.0), nx, ny
+end
+
+-- MISS, INSIDE or HIT from the float signs, or nil where one of them cannot be vouched for.
+local function discCastFiltered(cx, cy, R1, ax, ay, R2, dx, dy)
+  local wx, wy, R = ax - cx, ay - cy, R1 + R2
+  local ww, rr = wx * wx + wy * wy, R * R
+  local k = vouched(ww - rr, 8 * EPS * (ww + rr))
+  if k == 0 then return nil end
+  if k < 0 then return INSIDE end
+  local ux, uy = wx + dx, wy + dy
+  local sx, sy = abs(wx) + abs(dx), abs(wy) + abs(dy)
+  local f1 = vouched(ux * ux + uy * uy - rr, 8 * EPS * (sx * sx + sy * sy + rr))
+  if f1 == 0 then return nil end
+  if f1 < 0 then return HIT end
+  local p = vouched(dx * wx + dy * wy, 8 * EPS * (abs(dx * wx) + abs(dy * wy)))
+  if p == 0 then return nil end
+  if p > 0 then return MISS end
+  local pq = vouched(dx * ux + dy * uy, 8 * EPS * (abs(dx) * sx + abs(dy) * sy))
+  if pq == 0 then return nil end
+  if pq < 0 then return MISS end
+  local l, r = dx * wy, dy * wx
+  local x, terms, q = l - r, abs(l) + abs(r), dx * dx + dy * dy
+  local g = vouched(rr * q - x * x, 16 * EPS * (rr * q + terms * terms))
+  if g == 0 then return nil end
+  return g > 0 and HIT or MISS
+end
+
 -- MISS, INSIDE or HIT for the disc (ax, ay, R2) moving by d against the disc (cx, cy, R1).
 local function discCastStatus(cx, cy, R1, ax, ay, R2, dx, dy)
+  local status = discCastFiltered(cx, cy, R1, ax, ay, R2, dx, dy)
+  if status then return status end
   discSetup(cx, cy, R1, ax, ay, R2, dx, dy)
   expClear()   -- K = |w|^2 - R^2
   expAddSquare3(wxh, wxl, 0.0, 1)
@@ -609,19 +710,24 @@ function M.circlesCast(x1, y1, r1, x2, y2, r2, dx, dy)
     local nx, ny = unit(px, py)
     return 0.0, nx + 0.0, ny + 0.0
   end
-  local t, nx, ny = discEntry()
+  local t, nx, ny = discEntryDD(x1, y1, r1, x2, y2, r2, dx, dy)
+  if not t then
+    discSetup(x1, y1, r1, x2, y2, r2, dx, dy)
+    t, nx, ny = discEntry()
+  end
   -- stepped back as steppedFraction does, the moved centre tested exactly (circlesCollide's test)
   local _, _, len = unit(dx, dy)
   local u = EPS * max(abs(x1), abs(y1), abs(x2), abs(y2), abs(x2 + dx), abs(y2 + dy)) / len
   local radiusHi, radiusLo = twoDiff(r1, -r2)
   t = min(t, 1.0)
-  local f = 0.0
-  for i = 1, #STEPS + 24 do
-    f = max(t - (STEPS[i] or 8 * 2^(i - #STEPS - 1)) * u, 0.0)
-    if f == 0 or reaches(x1, y1, x2 + f * dx, y2 + f * dy, radiusHi, radiusLo) <= 0 then break end
-    f = 0.0
+  local window = windowSteps(t, u)
+  for k = 1, window + 1060 do
+    local f = max(t - stepBack(k, window) * u, 0.0)
+    if f == 0 or reaches(x1, y1, x2 + f * dx, y2 + f * dy, radiusHi, radiusLo) <= 0 then
+      return f, nx + 0.0, ny + 0.0
+    end
   end
-  return f, nx + 0.0, ny + 0.0
+  return 0.0, nx + 0.0, ny + 0.0
 end
 
 return M

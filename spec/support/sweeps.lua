@@ -238,4 +238,12 @@ function sweeps.discFractionNear(f, b, x1, y1, r1, x2, y2, r2, dx, dy)
   return compare(mul(new(hi), Q), neg(P)) > 0   -- past the vertex: t_c <= vertex < hi
 end
 
+--- Whether the double t lies no later than the disc's entry: t <= 0, or g(t) > 0 with t before
+-- the vertex -P / Q.
+function sweeps.discBefore(t, x1, y1, r1, x2, y2, r2, dx, dy)
+  if t <= 0 then return true end
+  local Q, P, K = discTerms(x1, y1, r1, x2, y2, r2, dx, dy)
+  return sign(discValue(Q, P, K, t)) > 0 and compare(mul(new(t), Q), neg(P)) <= 0
+end
+
 return sweeps
