@@ -294,7 +294,9 @@ polygon.circleRayCast = circleray.circleRayCast
 -- moving points2 by fraction * (dx, dy) the way a game does (each coordinate x + fraction * dx,
 -- rounded) leaves the pair not colliding by @{polygonsCollide}, and it is no earlier than the
 -- exact contact time less 8 eps M / |(dx, dy)| (eps = 2^-53, M the largest coordinate magnitude
--- involved, moved positions included). Allocates nothing.
+-- involved, moved positions included), save where the motion grazes the contact so closely that
+-- every fraction in that window leaves the rounded shapes colliding: then the latest one found
+-- that does not. Allocates nothing.
 -- @function polygonsCast
 -- @tparam table points1 the static shape: flat array, or a list of convex parts
 -- @tparam table points2 the moving convex polygon, flat array
