@@ -175,12 +175,45 @@ local function ratioBelowOne(R, dx, dy)
   return expSign() * partsSign(partsB, lb) < 0
 end
 
--- t(R) within u / 4 (u = eps M / |d|, the caller's unit of step): the float value when its bound
--- allows, else the quotient of the exact expansions' top components corrected once by the exact
--- residual n - t0 d (within an ulp of t, plus order eps^2).
+-- t(R) from double doubles, with no loop (raycast.lua's edgeFractionDD with d exact): every
+-- difference split exactly (TwoDiff), each cross product the exact difference of its two main
+-- products (TwoProduct, then TwoDiff) plus its first-order terms, then the quotient corrected once
+-- by its residual. What is dropped is below 2^-100 (|l| + |r|) (l and r a cross product's two
+-- products), so t is within eps |t| (its own rounding) plus 2^-99 c |t|, c = (|l| + |r|) / |cross|
+-- for either cross product: nil when c passes 2^30, or a product nears overflow or underflow.
+local function ratioValueDD(R, dx, dy)
+  local exh, exl = twoDiff(R[3], R[1])
+  local eyh, eyl = twoDiff(R[4], R[2])
+  local wxh, wxl = twoDiff(R[7], R[5])
+  local wyh, wyl = twoDiff(R[8], R[6])
+  local lh, ll = twoProduct(exh, wyh)
+  local rh, rl = twoProduct(eyh, wxh)
+  local nh, n0 = twoDiff(lh, rh)
+  local numLow = n0 + (ll - rl) + ((exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh))
+  local numSize = abs(lh) + abs(rh)
+  lh, ll = twoProduct(exh, dy)
+  rh, rl = twoProduct(eyh, dx)
+  local dh, d0 = twoDiff(lh, rh)
+  local denLow = d0 + (ll - rl) + (exl * dy - eyl * dx)
+  local denSize = abs(lh) + abs(rh)
+  if not (numSize < 2^30 * abs(nh) and denSize < 2^30 * abs(dh) and numSize > 2^-800
+      and denSize > 2^-800 and numSize < 2^900 and denSize < 2^900) then
+    return nil
+  end
+  local t = nh / dh
+  local th, tl = twoProduct(t, dh)
+  return t + ((((nh - th) - tl) + numLow) - t * denLow) / dh   -- nh - th exact (Sterbenz)
+end
+
+-- t(R) within u / 4 (u = eps M / |d|, the caller's unit of step) before its final rounding: the
+-- float value when its bound allows, else ratioValueDD's, else the quotient of the exact
+-- expansions' top components corrected once by the exact residual n - t0 d (within an ulp of t,
+-- plus order eps^2).
 local function ratioValue(R, dx, dy, u)
   local t, e = ratioEstimate(R, 0, dx, dy)
   if e <= 0.25 * u then return t end
+  t = ratioValueDD(R, dx, dy)
+  if t then return t end
   local s = productScale(max(ratioMagnitude(R, 0), abs(dx), abs(dy)))
   local la, lb = ratioExact(R, 0, dx, dy, s, partsA, partsB)
   if la == 0 then return 0.0 end
@@ -302,19 +335,22 @@ local function windowSteps(t, u)
   return floor((8 * u - (0.25 * u + 2 * EPS * t)) / (0.25 * u) * (1 - 2^-20)) + 1
 end
 
+local COARSE = { 0, 1, 2, 3, 5 }   -- tried first: one or two tests find most answers
 local function stepBack(k, window)
+  if k <= #COARSE then return COARSE[k] end
+  k = k - #COARSE
   if k <= window then return (k - 1) * 0.25 end
   return 8 * 2^(k - window - 1)
 end
 
--- The fraction to return for the entry in bestRatio: the first of t, t - u / 4, ... that leaves
--- the moved polygon not colliding.
+-- The fraction to return for the entry in bestRatio: the first of t, t - u, t - 2 u, t - 3 u,
+-- t - 5 u, then t, t - u / 4, ... that leaves the moved polygon not colliding.
 local function steppedFraction(p1, n1, view, near, p2, n2, dx, dy, m)
   local _, _, len = unit(dx, dy)
   local u = EPS * m / len
   local t = min(ratioValue(bestRatio, dx, dy, u), 1.0)
   local window = windowSteps(t, u)
-  for k = 1, window + 1060 do
+  for k = 1, #COARSE + window + 1060 do
     local f = max(t - stepBack(k, window) * u, 0.0)
     if f == 0 or not movedCollides(p1, n1, view, near, p2, n2, f, dx, dy) then return f end
   end
@@ -735,7 +771,7 @@ function M.circlesCast(x1, y1, r1, x2, y2, r2, dx, dy)
   local radiusHi, radiusLo = twoDiff(r1, -r2)
   t = min(t, 1.0)
   local window = windowSteps(t, u)
-  for k = 1, window + 1060 do
+  for k = 1, #COARSE + window + 1060 do
     local f = max(t - stepBack(k, window) * u, 0.0)
     if f == 0 or reaches(x1, y1, x2 + f * dx, y2 + f * dy, radiusHi, radiusLo) <= 0 then
       return f, nx + 0.0, ny + 0.0
