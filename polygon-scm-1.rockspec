@@ -42,6 +42,7 @@ build = {
     ["polygon.raycast"] = "polygon/raycast.lua",
     ["polygon.circleray"] = "polygon/circleray.lua",
     ["polygon.closest"] = "polygon/closest.lua",
+    ["polygon.casts"] = "polygon/casts.lua",
   },
 }
 test = {

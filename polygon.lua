@@ -55,6 +55,7 @@ local object      = require(_PACKAGE .. "object")
 local raycast     = require(_PACKAGE .. "raycast")
 local circleray   = require(_PACKAGE .. "circleray")
 local closest     = require(_PACKAGE .. "closest")
+local casts       = require(_PACKAGE .. "casts")
 
 --- Measures
 -- @section measures
@@ -284,6 +285,51 @@ polygon.polygonRayCast = raycast.polygonRayCast
 -- @treturn number ny
 -- @raise when an argument is not a finite number or the radius is negative
 polygon.circleRayCast = circleray.circleRayCast
+
+--- Where a convex polygon moving by t (dx, dy), t in [0, 1], first touches a static convex
+-- polygon or list of convex parts: a swept move, so that a fast body never passes through a
+-- thin wall between two frames. They collide at t when their open interiors meet (sliding along
+-- a face or grazing a corner is a miss; passing through a thin wall within one move is a hit);
+-- the hit or miss is exact. The fraction is stepped back from the exact contact time so that
+-- moving points2 by fraction * (dx, dy) the way a game does (each coordinate x + fraction * dx,
+-- rounded) leaves the pair not colliding by @{polygonsCollide}, and it is no earlier than the
+-- exact contact time less 8 eps M / |(dx, dy)| (eps = 2^-53, M the largest coordinate magnitude
+-- involved, moved positions included), save where the motion grazes the contact so closely that
+-- every fraction in that window leaves the rounded shapes colliding: then the latest one found
+-- that does not. Allocates nothing.
+-- @function polygonsCast
+-- @tparam table points1 the static shape: flat array, or a list of convex parts
+-- @tparam table points2 the moving convex polygon, flat array
+-- @number dx the move
+-- @number dy
+-- @treturn number|boolean fraction in [0, 1]; 0 when the pair already collides at t = 0; or
+-- false (also for no move, unless already colliding)
+-- @treturn number nx, the unit contact normal from points1 toward points2 (it opposes the
+-- motion); when already colliding, the direction of @{polygonsCollideV}'s push
+-- @treturn number ny
+-- @raise as @{polygonsCollideV} for points1 and points2 (a segment too: cast it with
+-- @{polygonRayCast}; points2 a list of parts too), and when dx or dy is not a finite number
+polygon.polygonsCast = casts.polygonsCast
+
+--- As @{polygonsCast}, for a moving circle (x2, y2, r2) against a static circle (x1, y1, r1): the
+-- disc of radius r1 + r2 (its rounding never changes a decision) met by the moving centre. A
+-- tangent pass is a miss. The same contract for the fraction (M over the centres, the moved
+-- centre included). Allocates nothing.
+-- @function circlesCast
+-- @number x1 the static circle
+-- @number y1
+-- @number r1
+-- @number x2 the moving circle
+-- @number y2
+-- @number r2
+-- @number dx the move
+-- @number dy
+-- @treturn number|boolean fraction; 0 when already colliding; or false
+-- @treturn number nx, the unit normal from the static centre toward the moving one at contact
+-- (when already colliding, the direction of @{circlesCollideV}'s push)
+-- @treturn number ny
+-- @raise when an argument is not a finite number or a radius is negative
+polygon.circlesCast = casts.circlesCast
 
 --- The nearest point of the polygon's boundary to (x, y), and the signed distance to it: AI
 -- sensing, snapping, aim assist. Any polygon, convex or not (a self-intersecting one too: its

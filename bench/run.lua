@@ -34,6 +34,7 @@ local shapes = require "shapes"
 local exact = require "exact"
 local rays = require "rays"
 local nearest = require "nearest"
+local sweeps = require "sweeps"
 
 local huge, sqrt, abs, max = math.huge, math.sqrt, math.abs, math.max
 local clock, jit = os.clock, rawget(_G, "jit")
@@ -94,7 +95,7 @@ local FOLDS = {
   v3 = "if a then acc = acc + a + 0.5 * b + 0.25 * c end",
 }
 local TEMPLATE = [[
-local f, A1, A2, A3, A4, A5, A6, A7 = ...
+local f, A1, A2, A3, A4, A5, A6, A7, A8 = ...
 return function(n, reps)
   local acc = 0
   for _ = 1, reps do
@@ -113,7 +114,8 @@ local function makeKernel(wl, fold, f, args)
   for k = 1, #args do call[k] = ("A%d[i]"):format(k) end
   call = wl.method and "A1[i]:contains(A2[i], A3[i])" or "f(" .. table.concat(call, ", ") .. ")"
   local src = TEMPLATE:gsub("CALL", call):gsub("FOLD", FOLDS[fold])
-  return assert(loadstring(src, "=kernel"))(f, args[1], args[2], args[3], args[4], args[5], args[6], args[7])
+  return assert(loadstring(src, "=kernel"))(f, args[1], args[2], args[3], args[4], args[5], args[6], args[7],
+    args[8])
 end
 
 local function timeKernel(kernel, n, reps)
@@ -194,6 +196,9 @@ workload("rFar", "convex 4-12, segments, mixed, translated by 1e6", { shapes.tra
   -0.6e6), W.shift(segments[2], 1e6), W.shift(segments[3], -0.6e6), W.shift(segments[4], 1e6),
   W.shift(segments[5], -0.6e6) })
 workload("crMix", "discs, segments: 1/4 through, passing, short, from inside", W.circleRays(SIZES.circles))
+workload("scMix", "convex 4-8 static, 4-6 moving: 1/4 hit, 1/4 pass by, 1/4 short, 1/4 overlapped",
+         W.casts(SIZES.circles))
+workload("ccMix", "circles: 1/4 hit, 1/4 pass by, 1/4 short, 1/4 overlapped", W.circleCasts(SIZES.circles))
 workload("npOrd", "4-16 vertices, half convex, points in and around the box", W.nearestQueries(ordinary))
 workload("prOrd", "convex 6-8, a vertex and an edge normal", W.projections(mixed[1]))
 workload("pcOrd", "random circle, point and axis", W.circleProjections(SIZES.circles))
@@ -347,6 +352,59 @@ function evaluate.circleRay(wl, call)
     text = ("wrong %d/%d (beyond 8 eps M or 16 eps)"):format(wrong, wl.n) }
 end
 
+-- casts: `wrong` counts hit, miss and overlapped answers other than the exact ones
+-- (spec/support/sweeps.lua), and hits whose fraction leaves the moved polygon colliding or is
+-- beyond 8 eps M / |d| of the exact contact time
+function evaluate.cast(wl, call)
+  local a, wrong = wl.args, 0
+  local collide = require("polygon").polygonsCollide
+  for i = 1, wl.n do
+    local p1, p2, dx, dy = a[1][i], a[2][i], a[3][i], a[4][i]
+    local contact = sweeps.convexContact(p1, p2, dx, dy)
+    local f = call(i)
+    if contact == nil then
+      if f ~= false then wrong = wrong + 1 end
+    elseif contact == "inside" then
+      if f ~= 0 then wrong = wrong + 1 end
+    else
+      local M = 0
+      for _, v in ipairs(p1) do M = max(M, abs(v)) end
+      for k = 1, #p2, 2 do M = max(M, abs(p2[k]), abs(p2[k + 1]), abs(p2[k] + dx), abs(p2[k + 1] + dy)) end
+      if type(f) ~= "number" or collide(p1, sweeps.moveBy(p2, f, dx, dy))
+          or not sweeps.fractionNear(f, contact, dx, dy, M) then
+        wrong = wrong + 1
+      end
+    end
+  end
+  return { wrong = wrong, total = wl.n,
+    text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, wl.n) }
+end
+
+function evaluate.circleCast(wl, call)
+  local a, wrong = wl.args, 0
+  local collide = require("polygon").circlesCollideV
+  for i = 1, wl.n do
+    local x1, y1, r1, x2, y2, r2 = a[1][i], a[2][i], a[3][i], a[4][i], a[5][i], a[6][i]
+    local dx, dy = a[7][i], a[8][i]
+    local contact = sweeps.discContact(x1, y1, r1, x2, y2, r2, dx, dy)
+    local f = call(i)
+    if contact == nil then
+      if f ~= false then wrong = wrong + 1 end
+    elseif contact == "inside" then
+      if f ~= 0 then wrong = wrong + 1 end
+    else
+      local M = max(abs(x1), abs(y1), abs(x2), abs(y2), abs(x2 + dx), abs(y2 + dy))
+      local b = 8 * 2 ^ -53 * M / sqrt(dx * dx + dy * dy) * (1 - 2 ^ -30)
+      if type(f) ~= "number" or collide(x1, y1, r1, x2 + f * dx, y2 + f * dy, r2)
+          or not sweeps.discFractionNear(f, b, x1, y1, r1, x2, y2, r2, dx, dy) then
+        wrong = wrong + 1
+      end
+    end
+  end
+  return { wrong = wrong, total = wl.n,
+    text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, wl.n) }
+end
+
 -- nearest points: `wrong` counts answers nearest.check refuses (sign, distance or point beyond
 -- 8 eps M of exact)
 function evaluate.nearest(wl, call)
@@ -412,6 +470,8 @@ row("validate", "ord", "bool", "valid", "validate")
 for _, k in ipairs({ "rMix", "rHit", "rMiss", "rFar" }) do row("polygonRayCast", k, "v3", "ray") end
 row("circleRayCast", "crMix", "v3", "circleRay")
 row("polygonClosestPoint", "npOrd", "v3", "nearest")
+row("polygonsCast", "scMix", "v3", "cast")
+row("circlesCast", "ccMix", "v3", "circleCast")
 -- the convexity check's cost (issue 29): each collision row against the same function without it
 for _, f in ipairs({ { "polygonCollidesWith", "bool", "collide1" }, { "polygonsCollide", "bool", "collide2" },
                      { "polygonCollidesWithV", "v3", "collideV1" },

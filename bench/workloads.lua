@@ -379,4 +379,55 @@ function W.circleProjections(count)
   return A
 end
 
+---------------------------------------------------------------------------------------------
+-- Casts (issue 30)
+---------------------------------------------------------------------------------------------
+-- points1, points2, dx, dy: a static convex polygon of 4 to 8 vertices and a moving one of 4 to 6
+-- from 3 sizes away. kinds: 1 a move through the static one's middle (a hit), 2 passing it by,
+-- 3 stopping short of it, 4 starting overlapped
+function W.casts(count)
+  local P1, P2, DX, DY = {}, {}, {}, {}
+  for i = 1, count do
+    local kind, size = (i - 1) % 4 + 1, uniform(10, 50)
+    local cx, cy = uniform(-100, 100), uniform(-100, 100)
+    local t = uniform(0, 2 * pi)
+    local distance = kind == 4 and 0.5 * size or 3 * size
+    local mx, my = cx + distance * cos(t), cy + distance * sin(t)
+    local moving = convex(4 + (i - 1) % 3, mx, my, 0.4 * size)
+    local dx, dy
+    if kind == 1 or kind == 4 then
+      dx, dy = 2 * (cx + uniform(-0.3, 0.3) * size - mx), 2 * (cy + uniform(-0.3, 0.3) * size - my)
+    elseif kind == 2 then
+      local s = t + pi + uniform(0.8, 1.2) * (randint(0, 1) * 2 - 1)
+      dx, dy = 6 * size * cos(s), 6 * size * sin(s)
+    else
+      dx, dy = 0.2 * (cx - mx), 0.2 * (cy - my)
+    end
+    P1[i], P2[i], DX[i], DY[i] = convex(4 + (i - 1) % 5, cx, cy, size), moving, dx, dy
+  end
+  return { P1, P2, DX, DY }
+end
+
+-- x1, y1, r1, x2, y2, r2, dx, dy: the same four kinds for circles of radius 5 to 50
+function W.circleCasts(count)
+  local A = { {}, {}, {}, {}, {}, {}, {}, {} }
+  for i = 1, count do
+    local kind, r1, r2 = (i - 1) % 4 + 1, uniform(10, 50), uniform(5, 20)
+    local cx, cy, t = uniform(-100, 100), uniform(-100, 100), uniform(0, 2 * pi)
+    local distance = kind == 4 and 0.5 * r1 or 3 * (r1 + r2)
+    local mx, my = cx + distance * cos(t), cy + distance * sin(t)
+    local dx, dy
+    if kind == 1 or kind == 4 then
+      dx, dy = 2 * (cx + uniform(-0.3, 0.3) * r1 - mx), 2 * (cy + uniform(-0.3, 0.3) * r1 - my)
+    elseif kind == 2 then
+      local s = t + pi + uniform(0.8, 1.2) * (randint(0, 1) * 2 - 1)
+      dx, dy = 6 * r1 * cos(s), 6 * r1 * sin(s)
+    else
+      dx, dy = 0.2 * (cx - mx), 0.2 * (cy - my)
+    end
+    A[1][i], A[2][i], A[3][i], A[4][i], A[5][i], A[6][i], A[7][i], A[8][i] = cx, cy, r1, mx, my, r2, dx, dy
+  end
+  return A
+end
+
 return W

@@ -33,6 +33,8 @@ local RAYS = {
   { 0, 5, 20, 5 }, { 10, -5, 10, 25 }, { 5, 5, 5, 5 }, { 12, 14, 12, 14 }, { 40, 40, 50, 50 },
   { 10, 10, 0, 0 }, { 7, -3, 13, 17 },
 }
+-- moves for the casts: across, along axes (slides), diagonal, long (through), none
+local MOVES = { { -30, 0 }, { 30, 0 }, { 0, 25 }, { -17, -13 }, { 400, 3 }, { 0, 0 }, { 11, -40 } }
 -- lists of parts: two tiles side by side, an L of three tiles, a convex polygon as one part
 local LISTS = {
   { { 0, 0, 10, 0, 10, 10, 0, 10 }, { 10, 0, 20, 0, 20, 10, 10, 10 } },
@@ -89,6 +91,16 @@ local CASES = {
   circleRayCast = function(i)
     local c, r = CIRCLES[i % #CIRCLES + 1], RAYS[i % #RAYS + 1]
     polygon.circleRayCast(c[1], c[2], c[3], r[1], r[2], r[3], r[4])
+  end,
+  -- casts that hit (the fraction stepped back), miss, slide along a face, start overlapped (the
+  -- push), of no length, over every convex pair
+  polygonsCast = function(i)
+    local pair, m = PAIRS[i % #PAIRS + 1], MOVES[i % #MOVES + 1]
+    polygon.polygonsCast(pair[1], pair[2], m[1], m[2])
+  end,
+  ["polygonsCast (parts)"] = function(i)
+    local m = MOVES[i % #MOVES + 1]
+    polygon.polygonsCast(LISTS[i % #LISTS + 1], CONVEX[i % #CONVEX + 1], m[1], m[2])
   end,
 }
 -- the functions of one polygon, over every polygon in turn

@@ -45,6 +45,7 @@ describe("the front, polygon.lua", function()
       raycast = { "polygonRayCast" },
       circleray = { "circleRayCast" },
       closest = { "polygonClosestPoint" },
+      casts = { "polygonsCast", "circlesCast" },
     }
     local count = 0
     for file, names in pairs(where) do
