@@ -3,9 +3,9 @@
 -- A rock with two caves in it (an outline with two holes, split once by polygonConvexParts) and
 -- a thin wall, all one list of parts. From the eye, polygonRayCast(level, eye, target) gives line
 -- of sight to the target (drag it): clear, or blocked at a hit point with the outward normal of
--- the edge hit, a hitscan's mark. A bullet flies 45 pixels a frame, farther than the thin wall is
--- wide, moved each frame by casting its step: it stops at what it hits, bounces along the
--- normal, and never passes through the wall (a per-frame overlap test would, on most frames).
+-- the edge hit, a hitscan's mark. A bullet (a small square) flies 45 pixels a frame, farther than
+-- the thin wall is wide, moved each frame by polygonsCast: it stops where it first touches,
+-- bounces along the normal, and never passes through the wall (a per-frame overlap test would).
 
 return function(polygon, ui)
   local colors = ui.colors
@@ -20,68 +20,55 @@ return function(polygon, ui)
     { 700, 400, 800, 360, 830, 470, 720, 500 },
   }
   local WALL = { 250, 330, 254, 330, 254, 590, 250, 590 }   -- 4 pixels thick
-  local FIELD = { 24, 150, 936, 600 }   -- the bullet bounces inside this box too: x0, y0, x1, y1
   local EYE, TARGET = { 110, 250 }, { 860, 560 }
-  local BULLET = { 60, 470, 45, -9 }   -- x, y, vx, vy: pixels and pixels a frame
-  local SKIN = 0.01   -- a hit point is left this far out along the normal, off the boundary
+  local BULLET = { 60, 470, 45, -9 }   -- centre x, y, then vx, vy: pixels and pixels a frame
+  local HALF = 4                        -- the bullet is a square 8 pixels a side
 
   local level = assert(polygon.polygonConvexParts(ROCK, CAVES))
   local rockParts = #level
   level[#level + 1] = WALL
-
-  -- true when (x, y) lies strictly inside the level: a zero-length ray from it answers 0
-  local function inside(x, y)
-    return polygon.polygonRayCast(level, x, y, x, y) == 0
-  end
+  -- the bullet's world: the level and four slabs around the field (x 24..936, y 150..600)
+  local world = { { 0, 130, 960, 130, 960, 150, 0, 150 }, { 0, 600, 960, 600, 960, 620, 0, 620 },
+    { 4, 150, 24, 150, 24, 600, 4, 600 }, { 936, 150, 956, 150, 956, 600, 936, 600 } }
+  for _, part in ipairs(level) do world[#world + 1] = part end
 
   function scene.reset()
     scene.eye = { EYE[1], EYE[2] }
     scene.target = { TARGET[1], TARGET[2] }
-    scene.bullet = { BULLET[1], BULLET[2], BULLET[3], BULLET[4] }
-    scene.trail = { BULLET[1], BULLET[2] }
+    local x, y = BULLET[1], BULLET[2]
+    scene.bullet = { x - HALF, y - HALF, x + HALF, y - HALF, x + HALF, y + HALF, x - HALF, y + HALF }
+    scene.velocity = { BULLET[3], BULLET[4] }
+    scene.trail = { x, y }
     scene.bounces, scene.wallHits, scene.frames, scene.wentInside = 0, 0, 0, false
     scene.grab = nil
   end
 
-  -- One frame of the bullet: cast its step against the level and the field's sides, move to the
-  -- first hit (SKIN out along the normal), turn the velocity about the normal and spend the rest
-  -- of the step the same way (at most four bounces a frame).
+  -- One frame of the bullet: polygonsCast(world, bullet, move) gives where it first touches;
+  -- move it that far (the fraction is stepped back so that it never overlaps), turn the velocity
+  -- about the normal and spend the rest of the move the same way (at most four bounces a frame).
   local function stepBullet()
-    local b = scene.bullet
+    local b, v = scene.bullet, scene.velocity
     local left = 1
     for _ = 1, 4 do
-      local x, y = b[1], b[2]
-      local tx, ty = x + b[3] * left, y + b[4] * left
-      local f, nx, ny = polygon.polygonRayCast(level, x, y, tx, ty)
-      -- the field's sides: the first one the step leaves through (plain floats: a box's sides)
-      local side, sx, sy = false, 0, 0
-      local across = tx < FIELD[1] and FIELD[1] or tx > FIELD[3] and FIELD[3]
-      if across then side, sx = (across - x) / (tx - x), tx < x and 1 or -1 end
-      local down = ty < FIELD[2] and FIELD[2] or ty > FIELD[4] and FIELD[4]
-      if down and (not side or (down - y) / (ty - y) < side) then
-        side, sx, sy = (down - y) / (ty - y), 0, ty < y and 1 or -1
-      end
-      if side and (not f or side < f) then
-        f, nx, ny = side, sx, sy
-      elseif f then
-        scene.bounces = scene.bounces + 1
-        -- the wall is the last part: is the hit point on it?
-        local hx = x + (tx - x) * f
-        if hx >= WALL[1] - 1 and hx <= WALL[3] + 1 then scene.wallHits = scene.wallHits + 1 end
-      end
+      local dx, dy = v[1] * left, v[2] * left
+      local f, nx, ny = polygon.polygonsCast(world, b, dx, dy)
       if not f then
-        b[1], b[2] = tx, ty
+        polygon.polygonTranslate(b, dx, dy, b)
         break
       end
-      b[1], b[2] = x + (tx - x) * f + nx * SKIN, y + (ty - y) * f + ny * SKIN
-      local along = b[3] * nx + b[4] * ny
-      b[3], b[4] = b[3] - 2 * along * nx, b[4] - 2 * along * ny
+      polygon.polygonTranslate(b, f * dx, f * dy, b)
+      scene.bounces = scene.bounces + 1
+      if nx ~= 0 and b[1] < WALL[3] + 1 and b[3] > WALL[1] - 1 then   -- a side of the thin wall
+        scene.wallHits = scene.wallHits + 1
+      end
+      local along = v[1] * nx + v[2] * ny
+      v[1], v[2] = v[1] - 2 * along * nx, v[2] - 2 * along * ny
       left = left * (1 - f)
-      scene.trail[#scene.trail + 1], scene.trail[#scene.trail + 2] = b[1], b[2]
+      scene.trail[#scene.trail + 1], scene.trail[#scene.trail + 2] = b[1] + HALF, b[2] + HALF
     end
-    scene.trail[#scene.trail + 1], scene.trail[#scene.trail + 2] = b[1], b[2]
+    scene.trail[#scene.trail + 1], scene.trail[#scene.trail + 2] = b[1] + HALF, b[2] + HALF
     while #scene.trail > 2 * 40 do table.remove(scene.trail, 1); table.remove(scene.trail, 1) end
-    if inside(b[1], b[2]) then scene.wentInside = true end
+    if polygon.polygonsCollide(world, b) then scene.wentInside = true end
     scene.frames = scene.frames + 1
   end
   scene.update = stepBullet
@@ -121,15 +108,15 @@ return function(polygon, ui)
       love.graphics.setLineWidth(1)
       love.graphics.line(scene.trail)
     end
-    ui.dot(scene.bullet[1], scene.bullet[2], colors.orange, 4)
+    ui.drawPolygon(scene.bullet, colors.orange)
 
     ui.panel({
       ("polygonConvexParts(rock, {cave1, cave2}): %d parts, + a wall 4 px thick"):format(rockParts),
       ("polygonRayCast(level, eye, target) = %s"):format(ui.showAll(f, nx, ny)),
       f and { colors.red, "line of sight blocked: hit point and normal" }
         or { colors.green, "clear line of sight" },
-      ("bullet: 45 px a frame, %d frames, %d bounces, %d off the thin wall"):format(scene.frames,
-        scene.bounces, scene.wallHits),
+      ("bullet: polygonsCast(world, bullet, move), 45 px a frame: %d frames, %d bounces, %d off"
+        .. " the thin wall"):format(scene.frames, scene.bounces, scene.wallHits),
     }, 24, 40)
   end
 
@@ -166,7 +153,7 @@ return function(polygon, ui)
     assert(f and f > 0 and f < 1, "scene 7: the rock should block the line of sight")
     assert(nx < 0, "scene 7: the normal of the rock's left side points left, got " .. ui.showAll(nx, ny))
     assert(scene.wallHits >= 1, "scene 7: the bullet should bounce off the thin wall")
-    assert(not scene.wentInside, "scene 7: the bullet went inside the level")
+    assert(not scene.wentInside, "scene 7: the bullet ended a frame overlapping the level")
   end
 
   scene.reset()
