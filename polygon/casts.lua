@@ -19,7 +19,8 @@ local cross, CROSS_BOUND, EPS = kernel.cross, kernel.CROSS_BOUND, kernel.EPS
 local twoDiff, powerScale, areaSign = kernel.twoDiff, kernel.powerScale, kernel.areaSign
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expSign = kernel.expCopy, kernel.expSign
-local expLength, expansion, twoProduct = kernel.expLength, kernel.expansion, kernel.twoProduct
+local twoProduct, twoSum, quotientDD, expTopTwo = kernel.twoProduct, kernel.twoSum, kernel.quotientDD,
+  kernel.expTopTwo
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
 local checkConvex = convex.checkConvex
 local listView, call, checkCopy = views.listView, views.call, views.checkCopy
@@ -196,13 +197,7 @@ local function ratioValueDD(R, dx, dy)
   local dh, d0 = twoDiff(lh, rh)
   local denLow = d0 + (ll - rl) + (exl * dy - eyl * dx)
   local denSize = abs(lh) + abs(rh)
-  if not (numSize < 2^30 * abs(nh) and denSize < 2^30 * abs(dh) and numSize > 2^-800
-      and denSize > 2^-800 and numSize < 2^900 and denSize < 2^900) then
-    return nil
-  end
-  local t = nh / dh
-  local th, tl = twoProduct(t, dh)
-  return t + ((((nh - th) - tl) + numLow) - t * denLow) / dh   -- nh - th exact (Sterbenz)
+  return quotientDD(nh, numLow, numSize, dh, denLow, denSize)
 end
 
 -- t(R) within u / 4 (u = eps M / |d|, the caller's unit of step) before its final rounding: the
@@ -469,14 +464,6 @@ local function discScale(m)
   return powerScale(m, 2^186, 2^250)
 end
 
--- a + b as hi + lo exactly (Knuth's TwoSum).
-local function twoSum(a, b)
-  local x = a + b
-  local bv = x - a
-  local av = x - bv
-  return x, (a - av) + (b - bv)
-end
-
 -- What discSetup leaves: the split differences and radius sum, scaled, and d scaled.
 local wxh, wxl, wyh, wyl, rh, rl, ddx, ddy = 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
 
@@ -539,32 +526,23 @@ local function discGap()
   return expSign(), xLen
 end
 
--- The top two components of the compressed scratch expansion: a double double within order
--- eps^2 of its value.
-local function topTwo()
-  local hi = expCompress()
-  local len = expLength()
-  if len >= 2 then return hi, expansion[len - 1] end
-  return hi, 0.0
-end
-
 
 -- The entry time and contact normal of a hit found by discCastStatus (discSetup's numbers):
 -- t = K / (-P + sqrt G), each from its exact expansion's top two components.
 local function discEntry()
   discGap()
-  local gh, gl = topTwo()
+  local gh, gl = expTopTwo()
   expClear()   -- X again, its top component, for the normal
   expAddProduct(ddx, wyh); expAddProduct(ddx, wyl); expAddProduct(-ddy, wxh); expAddProduct(-ddy, wxl)
   local xh = expCompress()
   expClear()   -- P
   expAddProduct(ddx, wxh); expAddProduct(ddx, wxl); expAddProduct(ddy, wyh); expAddProduct(ddy, wyl)
-  local ph, pl = topTwo()
+  local ph, pl = expTopTwo()
   expClear()   -- K = |w|^2 - R^2
   expAddSquare3(wxh, wxl, 0.0, 1)
   expAddSquare3(wyh, wyl, 0.0, 1)
   expAddSquare3(rh, rl, 0.0, -1)
-  local kh, kl = topTwo()
+  local kh, kl = expTopTwo()
   local root = sqrt(max(gh, 0.0))
   local rootLo = 0.0
   if root > 0 then

@@ -13,7 +13,7 @@ local abs, sqrt, min, max = math.abs, math.sqrt, math.min, math.max
 local twoDiff, twoProduct, powerScale = kernel.twoDiff, kernel.twoProduct, kernel.powerScale
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expAddSquare = kernel.expCopy, kernel.expAddSquare
-local expLength, expansion = kernel.expLength, kernel.expansion
+local expTopTwo, twoSum, sqrtDD, divideDD = kernel.expTopTwo, kernel.twoSum, kernel.sqrtDD, kernel.divideDD
 local checkFiniteNumber, checkRadius = check.checkFiniteNumber, check.checkRadius
 local unit = sat.unit
 local reaches, lineWithin, dot = circle.reaches, circle.lineWithin, circle.dot
@@ -34,37 +34,6 @@ local numParts, denParts = {}, {}
 -- Near a tangent G is a small difference of large degree-4 terms, so every quantity is taken
 -- from exact expansions of the split differences and carried as hi + lo to the end: t within
 -- eps (plus order eps^2), the normal within a few ulps.
-
--- a + b as hi + lo exactly (Knuth's TwoSum).
-local function twoSum(a, b)
-  local x = a + b
-  local bv = x - a
-  local av = x - bv
-  return x, (a - av) + (b - bv)
-end
-
--- The square root of hi + lo > 0 as a double double (one Newton step).
-local function sqrtDD(hi, lo)
-  local root = sqrt(hi)
-  local sh, sl = twoProduct(root, root)
-  return twoSum(root, (((hi - sh) - sl) + lo) / (2 * root))
-end
-
--- (xh + xl) / (yh + yl) to within eps, plus order eps^2: the quotient corrected once.
-local function divideDD(xh, xl, yh, yl)
-  local q = xh / yh
-  local ph, pl = twoProduct(q, yh)
-  return q + ((((xh - ph) - pl) + xl) - q * yl) / yh
-end
-
--- The largest two components of kernel's scratch expansion after compressing it: a double
--- double within order eps^2 of the value.
-local function topTwo()
-  local hi = expCompress()
-  local len = expLength()
-  if len >= 2 then return hi, expansion[len - 1] end
-  return hi, 0.0
-end
 
 -- fraction, nx, ny of the entry of the segment A -> B into the disc (C, r), which it meets and
 -- A does not lie strictly inside.
@@ -98,16 +67,16 @@ local function circleEntry(cx, cy, r, ax, ay, bx, by)
   for i = 1, xLen do
     for j = 1, xLen do expAddProduct(-numParts[i], numParts[j]) end
   end
-  local gh, gl = topTwo()
+  local gh, gl = expTopTwo()
   expClear()   -- P = d.w
   expAddProduct(dxh, wxh); expAddProduct(dxh, wxl); expAddProduct(dxl, wxh); expAddProduct(dxl, wxl)
   expAddProduct(dyh, wyh); expAddProduct(dyh, wyl); expAddProduct(dyl, wyh); expAddProduct(dyl, wyl)
-  local ph, pl = topTwo()
+  local ph, pl = expTopTwo()
   expClear()   -- K = |w|^2 - r^2
   expAddSquare(wxh, wxl, 1)
   expAddSquare(wyh, wyl, 1)
   expAddProduct(-r, r)
-  local kh, kl = topTwo()
+  local kh, kl = expTopTwo()
   -- sqrt(G) as hi + lo: one Newton step from the root of its high part
   local root = sqrt(gh)
   local sh, sl = twoProduct(root, root)

@@ -10,10 +10,11 @@ local object = require(_PACKAGE .. ".object")
 local contains = require(_PACKAGE .. ".contains")
 local circle = require(_PACKAGE .. ".circle")
 
-local abs, sqrt, min, max = math.abs, math.sqrt, math.min, math.max
+local abs, min, max = math.abs, math.min, math.max
 local type = type
 local EPS, CROSS_BOUND, cross, JIT = kernel.EPS, kernel.CROSS_BOUND, kernel.cross, kernel.JIT
 local twoDiff, twoProduct, powerScale = kernel.twoDiff, kernel.twoProduct, kernel.powerScale
+local twoSum, sqrtDD, divideDD = kernel.twoSum, kernel.sqrtDD, kernel.divideDD
 local expClear, expAddProduct, expAddSquare = kernel.expClear, kernel.expAddProduct, kernel.expAddSquare
 local expCompress, expLength, expansion, expSign = kernel.expCompress, kernel.expLength,
   kernel.expansion, kernel.expSign
@@ -198,28 +199,6 @@ local function compareEdges(ax, ay, bx, by, cx, cy, dx, dy, px, py)
   addProducts(left, leftLen, ONE, 1, 1)
   addProducts(right, rightLen, ONE, 1, -1)
   return expSign()
-end
-
--- Double doubles: a + b as hi + lo exactly (Knuth's TwoSum).
-local function twoSum(a, b)
-  local x = a + b
-  local bv = x - a
-  local av = x - bv
-  return x, (a - av) + (b - bv)
-end
-
--- The square root of hi + lo > 0 as a double double (one Newton step).
-local function sqrtDD(hi, lo)
-  local root = sqrt(hi)
-  local sh, sl = twoProduct(root, root)
-  return twoSum(root, (((hi - sh) - sl) + lo) / (2 * root))
-end
-
--- (xh + xl) / (yh + yl) to within eps, plus order eps^2: the quotient corrected once.
-local function divideDD(xh, xl, yh, yl)
-  local q = xh / yh
-  local ph, pl = twoProduct(q, yh)
-  return q + ((((xh - ph) - pl) + xl) - q * yl) / yh
 end
 
 -- The distance from p to the point v, within eps (plus order eps^2): the differences exact,

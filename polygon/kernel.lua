@@ -3,7 +3,7 @@
 -- sums. It relies on nothing but math.
 
 
-local abs, huge, min, max = math.abs, math.huge, math.min, math.max
+local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 
 local M = {}
 
@@ -160,6 +160,51 @@ local function expCompress()
   top = top + 1; expansion[top] = q
   expLen = top
   return q
+end
+
+-- The largest two components of the scratch expansion after compressing it: a double double
+-- within order eps^2 of its value.
+local function expTopTwo()
+  local hi = expCompress()
+  if expLen >= 2 then return hi, expansion[expLen - 1] end
+  return hi, 0.0
+end
+
+-- Double doubles, for the fractions of rays and casts and the nearest points' distances.
+-- a + b as hi + lo exactly (Knuth's TwoSum).
+local function twoSum(a, b)
+  local x = a + b
+  local bv = x - a
+  local av = x - bv
+  return x, (a - av) + (b - bv)
+end
+
+-- The square root of hi + lo > 0 as a double double (one Newton step).
+local function sqrtDD(hi, lo)
+  local root = sqrt(hi)
+  local sh, sl = twoProduct(root, root)
+  return twoSum(root, (((hi - sh) - sl) + lo) / (2 * root))
+end
+
+-- (xh + xl) / (yh + yl) to within eps, plus order eps^2: the quotient corrected once.
+local function divideDD(xh, xl, yh, yl)
+  local q = xh / yh
+  local ph, pl = twoProduct(q, yh)
+  return q + ((((xh - ph) - pl) + xl) - q * yl) / yh
+end
+
+-- (nh + nl) / (dh + dl) for a numerator and a denominator each made as a difference of two
+-- products (nh the rounded difference, nl the rest, numSize the sum of the products' sizes;
+-- likewise the denominator): nil where cancellation or the range leaves the double doubles
+-- untrustworthy (the caller takes exact expansions then).
+local function quotientDD(nh, nl, numSize, dh, dl, denSize)
+  if not (numSize < 2^30 * abs(nh) and denSize < 2^30 * abs(dh) and numSize > 2^-800
+      and denSize > 2^-800 and numSize < 2^900 and denSize < 2^900) then
+    return nil
+  end
+  local t = nh / dh
+  local th, tl = twoProduct(t, dh)
+  return t + ((((nh - th) - tl) + nl) - t * dl) / dh   -- nh - th exact (Sterbenz)
 end
 
 -- A power of two s that brings m > 0 into [lo, hi] (hi / lo >= 2^64): multiplying coordinates
@@ -581,6 +626,11 @@ M.crossPuc = crossPuc
 M.expClear = expClear
 M.expAddTriple = expAddTriple
 M.expLength = expLength
+M.expTopTwo = expTopTwo
+M.twoSum = twoSum
+M.sqrtDD = sqrtDD
+M.divideDD = divideDD
+M.quotientDD = quotientDD
 M.expCopy = expCopy
 M.powerScale = powerScale
 M.largestMagnitude = largestMagnitude

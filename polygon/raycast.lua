@@ -15,6 +15,7 @@ local collide = require(_PACKAGE .. ".collide")
 local abs, huge, min, max = math.abs, math.huge, math.min, math.max
 local cross, crossExact, CROSS_BOUND, JIT = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND, kernel.JIT
 local EPS, twoDiff, twoProduct, powerScale = kernel.EPS, kernel.twoDiff, kernel.twoProduct, kernel.powerScale
+local quotientDD = kernel.quotientDD
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expSign = kernel.expCopy, kernel.expSign
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
@@ -245,13 +246,7 @@ local function edgeFractionDD(px, py, qx, qy, ax, ay, bx, by)
   local dh, d0 = twoDiff(lh, rh)
   local denLow = d0 + (ll - rl) + ((dxh * eyl + dxl * eyh) - (dyh * exl + dyl * exh))
   local denSize = abs(lh) + abs(rh)
-  if not (numSize < 2^30 * abs(nh) and denSize < 2^30 * abs(dh) and numSize > 2^-800
-      and denSize > 2^-800 and numSize < 2^900 and denSize < 2^900) then
-    return nil
-  end
-  local t = nh / dh
-  local th, tl = twoProduct(t, dh)
-  return t + ((((nh - th) - tl) + numLow) - t * denLow) / dh   -- nh - th exact (Sterbenz)
+  return quotientDD(nh, numLow, numSize, dh, denLow, denSize)
 end
 
 -- The fraction where the ray crosses the line of the edge p -> q (not parallel to it) in
