@@ -18,7 +18,7 @@ local abs, huge, min, max, sqrt, floor = math.abs, math.huge, math.min, math.max
 local cross, CROSS_BOUND, EPS = kernel.cross, kernel.CROSS_BOUND, kernel.EPS
 local twoDiff, powerScale, areaSign = kernel.twoDiff, kernel.powerScale, kernel.areaSign
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
-local expCopy, expSign = kernel.expCopy, kernel.expSign
+local expCopy, expSign, expCrossScaled = kernel.expCopy, kernel.expSign, kernel.expCrossScaled
 local twoProduct, twoSum, quotientDD, expTopTwo = kernel.twoProduct, kernel.twoSum, kernel.quotientDD,
   kernel.expTopTwo
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
@@ -27,6 +27,7 @@ local listView, call, checkCopy = views.listView, views.call, views.checkCopy
 local unit, convexPenetration = sat.unit, sat.convexPenetration
 local resolveShape, polygonsCollideV = collide.resolveShape, collide.polygonsCollideV
 local circle = require(_PACKAGE .. ".circle")
+local discEntryTerms = require(_PACKAGE .. ".circleray").discEntryTerms
 local reaches, circlesCollideV = circle.reaches, circle.circlesCollideV
 
 local type = type
@@ -99,15 +100,7 @@ local partsA, partsB, partsC, partsD = {}, {}, {}, {}
 -- The exact (u1 - u0) x (v1 - v0) of the coordinates times s (a power of two) into `into`,
 -- compressed (its largest component last, within an ulp of the value); returns its length.
 local function crossInto(into, u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, s)
-  local axh, axl = twoDiff(u1x * s, u0x * s)
-  local ayh, ayl = twoDiff(u1y * s, u0y * s)
-  local bxh, bxl = twoDiff(v1x * s, v0x * s)
-  local byh, byl = twoDiff(v1y * s, v0y * s)
-  expClear()
-  expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
-  expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh)
-  expAddProduct(-ayl, bxl)
-  expCompress()
+  expCrossScaled(u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, s)
   return expCopy(into)
 end
 
@@ -580,46 +573,10 @@ local function discEntryDD(cx, cy, R1, ax, ay, R2, dx, dy)
   local rHi, rLo = twoSum(R1, R2)
   local m = max(abs(wx), abs(wy), abs(dx), abs(dy), rHi)
   if m > 2^200 or m < 2^-200 then return nil end   -- (products' range)
-  local h, l = twoProduct(dx, wy)   -- X = d x w
-  local h2, l2 = twoProduct(dy, wx)
-  local xh, xl = twoDiff(h, h2)
-  xl = xl + (l - l2) + (dx * wyLo - dy * wxLo)
-  xh, xl = twoSum(xh, xl)
-  h, l = twoProduct(dx, dx)   -- Q = |d|^2
-  h2, l2 = twoProduct(dy, dy)
-  local qh, ql = twoSum(h, h2)
-  ql = ql + (l + l2)
-  h, l = twoProduct(dx, wx)   -- P = d.w
-  h2, l2 = twoProduct(dy, wy)
-  local ph, pl = twoSum(h, h2)
-  pl = pl + (l + l2) + (dx * wxLo + dy * wyLo)
   local rrh, rrl = twoProduct(rHi, rHi)   -- R^2
   rrl = rrl + 2 * rHi * rLo
-  h, l = twoProduct(wx, wx)   -- K = |w|^2 - R^2
-  h2, l2 = twoProduct(wy, wy)
-  local kh, kl = twoSum(h, h2)
-  local kTerms = kh + rrh
-  kl = kl + (l + l2) + 2 * (wx * wxLo + wy * wyLo)
-  local e
-  kh, e = twoDiff(kh, rrh)
-  kl = kl + e - rrl
-  kh, kl = twoSum(kh, kl)
-  h, l = twoProduct(rrh, qh)   -- G = R^2 Q - X^2
-  h2, l2 = twoProduct(xh, xh)
-  local gTerms = h + h2
-  local gh, gl = twoDiff(h, h2)
-  gl = gl + (l - l2) + (rrh * ql + rrl * qh) - 2 * xh * xl
-  gh, gl = twoSum(gh, gl)
-  if not (kh > 0 and gh > 0 and kTerms < 2^30 * kh and gTerms < 2^30 * gh) then return nil end
-  local root = sqrt(gh)   -- sqrt(G) as hi + lo: one Newton step
-  local sh, sl = twoProduct(root, root)
-  local rootLo = (((gh - sh) - sl) + gl) / (2 * root)
-  local dh, dlo = twoDiff(root, ph)   -- D = sqrt G - P > 0
-  dlo = dlo + (rootLo - pl)
-  local t = kh / dh
-  local th, tl = twoProduct(t, dh)
-  t = t + ((((kh - th) - tl) + kl) - t * dlo) / dh
-  local nx, ny = unit(-root * dx - xh * dy, xh * dx - root * dy)
+  local t, nx, ny = discEntryTerms(wx, wxLo, wy, wyLo, dx, 0.0, dy, 0.0, rrh, rrl)
+  if not t then return nil end
   return max(t, 0.0), nx, ny
 end
 

@@ -98,13 +98,11 @@ end
 -- them (D has no cancellation: -P > 0), and t = K / D, corrected once, is within eps plus
 -- order eps^2 when c stays below 2^30 for K (A near the circle) and for G (a near tangent);
 -- else nil (circleEntry's expansions). The normal from the high parts: within a few eps.
-local function circleEntryDD(cx, cy, r, ax, ay, bx, by)
-  local wx, wxl = twoDiff(ax, cx)
-  local wy, wyl = twoDiff(ay, cy)
-  local dx, dxl = twoDiff(bx, ax)
-  local dy, dyl = twoDiff(by, ay)
-  local m = max(abs(wx), abs(wy), abs(dx), abs(dy), r)
-  if m > 2^200 or m < 2^-200 then return nil end   -- (products' range)
+--
+-- The work from w = A - C and d = B - A as hi + lo (low parts exact) and r^2 as hi + lo: t
+-- (unclamped), nx, ny, or nil. casts.lua's circlesCast takes it too, with d exact and R^2 of
+-- R = r1 + r2 held as a TwoSum.
+local function discEntryTerms(wx, wxl, wy, wyl, dx, dxl, dy, dyl, rrh, rrl)
   local h, l, h2, l2, e
   h, l = twoProduct(dx, wy)   -- X = d x w
   h2, l2 = twoProduct(dy, wx)
@@ -119,7 +117,6 @@ local function circleEntryDD(cx, cy, r, ax, ay, bx, by)
   h2, l2 = twoProduct(dy, wy)
   local ph, pl = twoSum(h, h2)
   pl = pl + (l + l2) + ((dx * wxl + dxl * wx) + (dy * wyl + dyl * wy))
-  local rrh, rrl = twoProduct(r, r)
   h, l = twoProduct(wx, wx)   -- K = |w|^2 - r^2
   h2, l2 = twoProduct(wy, wy)
   local kh, kl = twoSum(h, h2)
@@ -140,6 +137,20 @@ local function circleEntryDD(cx, cy, r, ax, ay, bx, by)
   dl = dl + (rootL - pl)
   local t = divideDD(kh, kl, dh, dl)
   local nx, ny = unit(-rootH * dx - xh * dy, xh * dx - rootH * dy)
+  return t, nx, ny
+end
+M.discEntryTerms = discEntryTerms
+
+local function circleEntryDD(cx, cy, r, ax, ay, bx, by)
+  local wx, wxl = twoDiff(ax, cx)
+  local wy, wyl = twoDiff(ay, cy)
+  local dx, dxl = twoDiff(bx, ax)
+  local dy, dyl = twoDiff(by, ay)
+  local m = max(abs(wx), abs(wy), abs(dx), abs(dy), r)
+  if m > 2^200 or m < 2^-200 then return nil end   -- (products' range)
+  local rrh, rrl = twoProduct(r, r)
+  local t, nx, ny = discEntryTerms(wx, wxl, wy, wyl, dx, dxl, dy, dyl, rrh, rrl)
+  if not t then return nil end
   return min(max(t, 0.0), 1.0), nx, ny
 end
 

@@ -170,6 +170,21 @@ local function expTopTwo()
   return hi, 0.0
 end
 
+-- The exact (u1 - u0) x (v1 - v0) of the coordinates times s (a power of two, so that no
+-- product overflows or underflows) into the scratch expansion, compressed; returns its largest
+-- component (within an ulp of the value). For the exact fractions of rays and casts.
+local function expCrossScaled(u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, s)
+  local axh, axl = twoDiff(u1x * s, u0x * s)
+  local ayh, ayl = twoDiff(u1y * s, u0y * s)
+  local bxh, bxl = twoDiff(v1x * s, v0x * s)
+  local byh, byl = twoDiff(v1y * s, v0y * s)
+  expLen = 0
+  expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
+  expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh)
+  expAddProduct(-ayl, bxl)
+  return expCompress()
+end
+
 -- Double doubles, for the fractions of rays and casts and the nearest points' distances.
 -- a + b as hi + lo exactly (Knuth's TwoSum).
 local function twoSum(a, b)
@@ -627,6 +642,7 @@ M.expClear = expClear
 M.expAddTriple = expAddTriple
 M.expLength = expLength
 M.expTopTwo = expTopTwo
+M.expCrossScaled = expCrossScaled
 M.twoSum = twoSum
 M.sqrtDD = sqrtDD
 M.divideDD = divideDD

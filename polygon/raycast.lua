@@ -185,17 +185,7 @@ local numParts, denParts, partsA, partsB = {}, {}, {}, {}
 
 -- The exact (u1 - u0) x (v1 - v0) of the coordinates times s (a power of two) into kernel's
 -- scratch expansion, compressed; returns its largest component (within an ulp of the value).
-local function crossValue(u0x, u0y, u1x, u1y, v0x, v0y, v1x, v1y, s)
-  local axh, axl = twoDiff(u1x * s, u0x * s)
-  local ayh, ayl = twoDiff(u1y * s, u0y * s)
-  local bxh, bxl = twoDiff(v1x * s, v0x * s)
-  local byh, byl = twoDiff(v1y * s, v0y * s)
-  expClear()
-  expAddProduct(axh, byh); expAddProduct(axh, byl); expAddProduct(axl, byh); expAddProduct(axl, byl)
-  expAddProduct(-ayh, bxh); expAddProduct(-ayh, bxl); expAddProduct(-ayl, bxh)
-  expAddProduct(-ayl, bxl)
-  return expCompress()
-end
+local crossValue = kernel.expCrossScaled
 
 -- The power of two for the exact fractions: coordinates beyond 2^400 or below 2^-400 in
 -- magnitude are brought into [2^-64, 1] (exact, short of underflow), so that no product of two
