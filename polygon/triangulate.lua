@@ -623,11 +623,13 @@ end
 -- and sweep.lua's functions start interpreted (jit.off), and are compiled (jit.on) once the
 -- triangulations have spent INTERPRETED_BUDGET seconds of CPU time in the interpreter: the
 -- ski-rental rule, never more than about twice the better of the two choices made in hindsight.
--- The room for compiled code is raised at that moment: on outlines with a thousand holes the
--- traces need 1.2 MB, past LuaJIT 2.1's defaults (1,000 traces, 512 KB), and a full area makes
--- LuaJIT throw away every trace, the game's too, and compile again, each call: 5 to 40 times
--- slower (see bench/NOTES.md). Raised to 6,000 and 8 MB, which LuaJIT fills only as it needs; a
--- game that wants other limits sets them with jit.opt.start after that.
+-- The room for compiled code is raised at the first triangulation: on outlines with a thousand
+-- holes the traces need 1.2 MB, past LuaJIT 2.1's defaults (1,000 traces, 512 KB), and a full
+-- area makes LuaJIT throw away every trace, the game's too, and compile again, each call: 5 to
+-- 40 times slower (see bench/NOTES.md). Raised to 6,000 and 8 MB, which LuaJIT fills only as it
+-- needs; a game that wants other limits sets them with jit.opt.start after its first
+-- triangulation (at the first, so that the game knows when: not at the switch, which comes
+-- whenever the budget runs out).
 local INTERPRETED_BUDGET = 0.05
 local compiled = not JIT
 local interpreted = 0
@@ -639,12 +641,17 @@ if JIT then
   jit.off(sweep.chunk, true)
 end
 
+local roomMade = not JIT
+local function makeRoom()
+  roomMade = true
+  if jit.opt and jit.opt.start then pcall(jit.opt.start, "maxtrace=6000", "maxmcode=8192") end
+end
+
 -- Charges the interpreter's time since t0 and compiles once the budget is spent.
 local function charge(t0)
   interpreted = interpreted + (clock() - t0)
   if interpreted < INTERPRETED_BUDGET then return end
   compiled = true
-  if jit.opt and jit.opt.start then pcall(jit.opt.start, "maxtrace=6000", "maxmcode=8192") end
   jit.on(chunk, true)
   jit.on(sweep.chunk, true)
 end
@@ -654,6 +661,7 @@ local build
 -- Checks the arguments and triangulates: the triangles' nodes (a flat array, three per
 -- triangle), or nil and a message. Leaves the node arrays set for the caller to read.
 local function triangulate(fname, points, holes, checkOnly)
+  if not roomMade then makeRoom() end
   local n = checkPoints(points, fname, "points", 4)
   if holes ~= nil and type(holes) ~= "table" then
     error(("%s: holes must be a table, got %s"):format(fname, type(holes)), 3)
