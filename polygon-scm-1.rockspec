@@ -40,6 +40,7 @@ build = {
     ["polygon.collide"] = "polygon/collide.lua",
     ["polygon.transform"] = "polygon/transform.lua",
     ["polygon.raycast"] = "polygon/raycast.lua",
+    ["polygon.rayjit"] = "polygon/rayjit.lua",
     ["polygon.circleray"] = "polygon/circleray.lua",
     ["polygon.closest"] = "polygon/closest.lua",
     ["polygon.casts"] = "polygon/casts.lua",

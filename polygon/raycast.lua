@@ -11,6 +11,7 @@ local convex = require(_PACKAGE .. ".convex")
 local views = require(_PACKAGE .. ".views")
 local sat = require(_PACKAGE .. ".sat")
 local collide = require(_PACKAGE .. ".collide")
+local rayjit = require(_PACKAGE .. ".rayjit")
 
 local abs, huge, min, max = math.abs, math.huge, math.min, math.max
 local cross, crossExact, CROSS_BOUND, JIT = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND, kernel.JIT
@@ -379,56 +380,12 @@ local function castFinishPuc(points, w, fp, fq, fz, rp, rq, rz, ax, ay, bx, by)
   return t, nx, ny
 end
 
--- A nonzero double times BIG twice is at least 2^926 in magnitude: min(1, max(0, x BIG BIG)) is
--- 1 for x > 0 and 0 otherwise, with no branch (LuaJIT's min and max are single instructions).
-local BIG = 2^1000
-
--- castFinish for LuaJIT, without a branch: the same float numbers with abs, min and max (single
--- instructions there), each outcome a margin (> 0 when the bounds vouch for it), the answer a
--- code: 1 a hit, 2 A inside, 3 a miss, 0 when the bounds vouch for none (the exact path then).
--- Every branch on LuaJIT is a side exit, and the side traces of branches among these many
--- numbers failed to compile ("NYI: register coalescing too complex", bench/NOTES.md): the
--- caller branches on the code with only the code, the normal and the entry edge's ends alive.
--- Every number stays finite (no NaN, whose min and max differ between LuaJIT's interpreter and
--- its traces): sizes clamped before their products, divisors kept from 0; coordinates beyond
--- 2^400 never come here.
-local function finishCodeJit(points, w, fp, fq, rp, rq, ax, ay, bx, by)
-  local entering = 0.5 + 0.5 * w   -- 1: the falling edge is the entry
-  local p, xp = rp + (fp - rp) * entering, fp + (rp - fp) * entering
-  local q, xq = rq + (fq - rq) * entering, fq + (rq - fq) * entering
-  local rx, ry = points[xp] + 0.0, points[xp + 1] + 0.0
-  local sx, sy = points[xq] + 0.0, points[xq + 1] + 0.0
-  local l = (sx - rx) * (ay - ry)
-  local r = (sy - ry) * (ax - rx)
-  local sideSize = abs(l) + abs(r)
-  local sideMargin = (l - r) * w - CROSS_BOUND * sideSize
-  local px, py = points[p] + 0.0, points[p + 1] + 0.0
-  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
-  local dx, dy = bx - ax, by - ay
-  local ex, ey = qx - px, qy - py
-  local nl, nr = (px - ax) * ey, (py - ay) * ex
-  local dl, dr = dx * ey, dy * ex
-  local num, den = nl - nr, dl - dr
-  local numSize, denSize = min(abs(nl) + abs(nr), 2^500), min(abs(dl) + abs(dr), 2^500)
-  local numAbs, denAbs = min(abs(num), 2^500), min(abs(den), 2^500)
-  -- the bound err holds: no product near overflow or underflow, neither determinant cancelled
-  -- by more than 2^22
-  local valid = min(min(numSize, denSize) - 2^-800, 2^499 - max(numSize, denSize),
-    2^499 - min(sideSize, 2^500),
-    2^-22 * numAbs * denAbs - CROSS_BOUND * (numSize * denAbs + denSize * numAbs))
-  local t = num / (den + (1 - min(1, denAbs * BIG * BIG)))   -- (den 0: valid <= 0 anyway)
-  local ratios = min(numSize / max(numAbs, 2^-900) + denSize / max(denAbs, 2^-900), 2^100)
-  local err = (CROSS_BOUND * ratios + EPS) * min(abs(t), 2^100) * (1 + 2^-18)
-  local hit = min(valid, sideMargin, 1 - t - err, t - err)
-  local missed = min(valid, max(t - err - 1, -sideMargin - 2 * CROSS_BOUND * sideSize))
-  local inside = min(valid, sideMargin, -t - err)
-  local code = min(1, max(0, hit * BIG * BIG)) + 3 * min(1, max(0, missed * BIG * BIG))
-    + 2 * min(1, max(0, inside * BIG * BIG))
-  local nx, ny = unit(ey * w, -ex * w)
-  -- a hit's fraction, computed for every code (after a branch on the code its side trace
-  -- failed to compile): within `valid` c < 2^29.5, where edgeFractionDD never declines
-  return code, edgeFractionDD(px, py, qx, qy, ax, ay, bx, by) or 0.0, nx, ny
-end
+-- LuaJIT's pieces of castConvexJit (rayjit.lua), and the scratch its rarer outcomes read:
+-- the segment's ends and the entry edge (numbers: nothing allocated).
+local filterJit8, filterJit16 = rayjit.filterJit8, rayjit.filterJit16
+local sidesJit8, sidesJit16, sidesJitLoop = rayjit.sidesJit8, rayjit.sidesJit16, rayjit.sidesJitLoop
+local finishJit, entryFractionDD = rayjit.finishJit, rayjit.entryFractionDD
+local tailAx, tailAy, tailBx, tailBy, tailP, tailQ = 0.0, 0.0, 0.0, 0.0, 1, 1
 
 -- A convex polygon, PUC Lua's: the collision functions' convexity filter (convex.lua's
 -- convexFilterPuc, the same numbers: spec/raycast_spec.lua compares them) and the sides' walk
@@ -510,100 +467,6 @@ local function castConvexPuc(points, n, ax, ay, bx, by, fname)
   return f, nx, ny
 end
 
--- LuaJIT's sides' walk, with no branch (each comparison that goes both ways is a side exit, and
--- a loop of a polygon's few vertices is copied unrolled into the calling trace with an exit for
--- every other size, whose side traces failed to compile: bench/NOTES.md). Each side is
--- lineSide's float number with how far it clears its error bound (< 0: not sure); a fall from
--- > 0 to <= 0 and a rise from < 0 to >= 0 are 0 or 1 by min and max, so the crossing edges'
--- indices are sums (a convex polygon has one of each, or none).
-local function sideJit(x, y, ax, ay, dx, dy)
-  local l, r = dx * (y - ay), dy * (x - ax)
-  local o = l - r
-  return o, abs(o) - CROSS_BOUND * (abs(l) + abs(r))
-end
-
--- 1 when the side goes from oPrev > 0 to o <= 0, else 0; rise: from < 0 to >= 0.
-local function fall(oPrev, o)
-  return min(1, max(0, oPrev * BIG * BIG)) * (1 - min(1, max(0, o * BIG * BIG)))
-end
-local function rise(oPrev, o)
-  return min(1, max(0, -oPrev * BIG * BIG)) * (1 - min(1, max(0, -o * BIG * BIG)))
-end
--- Up to 8 vertices written out (as convex.lua's convexFilterJit): slot k holds vertex min(k, m),
--- slot 8 the last; the edges run from slot k - 1 to slot k (slot 0 is slot 8), and those between
--- repeated slots have equal sides at both ends, no crossing. Returns the falling edge's ends
--- (flat indices), the rising edge's, and the least clearance of the sides (< 0: redo exactly).
-local function sidesJit8(points, n, ax, ay, dx, dy)
-  local i4, i5, i6, i7, i8 = min(7, n - 1), min(9, n - 1), min(11, n - 1), min(13, n - 1), n - 1
-  local o1, c1 = sideJit(points[1] + 0.0, points[2] + 0.0, ax, ay, dx, dy)
-  local o2, c2 = sideJit(points[3] + 0.0, points[4] + 0.0, ax, ay, dx, dy)
-  local o3, c3 = sideJit(points[5] + 0.0, points[6] + 0.0, ax, ay, dx, dy)
-  local o4, c4 = sideJit(points[i4] + 0.0, points[i4 + 1] + 0.0, ax, ay, dx, dy)
-  local o5, c5 = sideJit(points[i5] + 0.0, points[i5 + 1] + 0.0, ax, ay, dx, dy)
-  local o6, c6 = sideJit(points[i6] + 0.0, points[i6 + 1] + 0.0, ax, ay, dx, dy)
-  local o7, c7 = sideJit(points[i7] + 0.0, points[i7 + 1] + 0.0, ax, ay, dx, dy)
-  local o8, c8 = sideJit(points[i8] + 0.0, points[i8 + 1] + 0.0, ax, ay, dx, dy)
-  local sure = min(c1, c2, c3, c4, c5, c6, c7, c8)
-  local f1, f2, f3, f4 = fall(o8, o1), fall(o1, o2), fall(o2, o3), fall(o3, o4)
-  local f5, f6, f7, f8 = fall(o4, o5), fall(o5, o6), fall(o6, o7), fall(o7, o8)
-  local fq = f1 + 3 * f2 + 5 * f3 + i4 * f4 + i5 * f5 + i6 * f6 + i7 * f7 + i8 * f8
-  local fp = i8 * f1 + f2 + 3 * f3 + 5 * f4 + i4 * f5 + i5 * f6 + i6 * f7 + i7 * f8
-  f1, f2, f3, f4 = rise(o8, o1), rise(o1, o2), rise(o2, o3), rise(o3, o4)
-  f5, f6, f7, f8 = rise(o4, o5), rise(o5, o6), rise(o6, o7), rise(o7, o8)
-  local rq = f1 + 3 * f2 + 5 * f3 + i4 * f4 + i5 * f5 + i6 * f6 + i7 * f7 + i8 * f8
-  local rp = i8 * f1 + f2 + 3 * f3 + 5 * f4 + i4 * f5 + i5 * f6 + i6 * f7 + i7 * f8
-  return fp, fq, rp, rq, sure
-end
-
--- Four slots of the walk (flat indices ia .. id, after the slot of index prevIndex whose side is
--- prev): the sums and the clearance carried on, and the last slot's side and index.
-local function sideQuad(points, ia, ib, ic, id, prev, prevIndex, ax, ay, dx, dy, fp, fq, rp, rq, sure)
-  local oa, ca = sideJit(points[ia] + 0.0, points[ia + 1] + 0.0, ax, ay, dx, dy)
-  local ob, cb = sideJit(points[ib] + 0.0, points[ib + 1] + 0.0, ax, ay, dx, dy)
-  local oc, cc = sideJit(points[ic] + 0.0, points[ic + 1] + 0.0, ax, ay, dx, dy)
-  local od, cd = sideJit(points[id] + 0.0, points[id + 1] + 0.0, ax, ay, dx, dy)
-  local f1, f2, f3, f4 = fall(prev, oa), fall(oa, ob), fall(ob, oc), fall(oc, od)
-  fq = fq + ia * f1 + ib * f2 + ic * f3 + id * f4
-  fp = fp + prevIndex * f1 + ia * f2 + ib * f3 + ic * f4
-  f1, f2, f3, f4 = rise(prev, oa), rise(oa, ob), rise(ob, oc), rise(oc, od)
-  rq = rq + ia * f1 + ib * f2 + ic * f3 + id * f4
-  rp = rp + prevIndex * f1 + ia * f2 + ib * f3 + ic * f4
-  return fp, fq, rp, rq, min(sure, ca, cb, cc, cd), od, id
-end
-
--- 9 to 16 vertices written out the same way, four slots at a time: a loop of 9 to 16 steps
--- became a root trace in some draws, with the rest of the call in its side traces, which
--- failed to compile ("trace too long", "too many spill slots": bench/NOTES.md).
-local function sidesJit16(points, n, ax, ay, dx, dy)
-  local last = n - 1
-  local prev, sure = sideJit(points[last] + 0.0, points[last + 1] + 0.0, ax, ay, dx, dy)
-  local fp, fq, rp, rq, index = 0, 0, 0, 0, last
-  fp, fq, rp, rq, sure, prev, index = sideQuad(points, 1, 3, 5, 7, prev, index, ax, ay, dx, dy,
-    fp, fq, rp, rq, sure)
-  fp, fq, rp, rq, sure, prev, index = sideQuad(points, 9, 11, 13, 15, prev, index, ax, ay, dx, dy,
-    fp, fq, rp, rq, sure)
-  fp, fq, rp, rq, sure, prev, index = sideQuad(points, min(17, last), min(19, last), min(21, last),
-    min(23, last), prev, index, ax, ay, dx, dy, fp, fq, rp, rq, sure)
-  fp, fq, rp, rq, sure = sideQuad(points, min(25, last), min(27, last), min(29, last), last, prev,
-    index, ax, ay, dx, dy, fp, fq, rp, rq, sure)
-  return fp, fq, rp, rq, sure
-end
-
--- Beyond 16 vertices the same in a loop (long enough to be a trace of its own).
-local function sidesJitLoop(points, n, ax, ay, dx, dy)
-  local prev, sure = sideJit(points[n - 1] + 0.0, points[n] + 0.0, ax, ay, dx, dy)
-  local fp, fq, rp, rq = 0, 0, 0, 0
-  local prevIndex = n - 1
-  for i = 1, n - 1, 2 do
-    local o, c = sideJit(points[i] + 0.0, points[i + 1] + 0.0, ax, ay, dx, dy)
-    local f, r = fall(prev, o), rise(prev, o)
-    fp, fq, rp, rq = fp + f * prevIndex, fq + f * i, rp + r * prevIndex, rq + r * i
-    sure = min(sure, c)
-    prev, prevIndex = o, i
-  end
-  return fp, fq, rp, rq, sure
-end
-
 -- A convex polygon by the exact predicates alone, from its sides' exact walk: the rare path of
 -- castConvexJit (it takes over no number of the fast path: see finishCodeJit).
 local function castConvexExact(points, n, ax, ay, bx, by)
@@ -613,42 +476,68 @@ local function castConvexExact(points, n, ax, ay, bx, by)
   return f, nx, ny
 end
 
--- A convex polygon, LuaJIT's: convex.lua's check, the sides' walk without branches, the area
--- sign by crossedTurn, finishCodeJit's code; castConvexExact where a bound cannot vouch. A
--- hit's fraction comes from edgeFractionDD: the float one missed the 7 eps M test in about half
--- the hits of the benchmark, and the branch on it was another side exit.
-local function castConvexJit(points, n, ax, ay, bx, by, fname)
-  checkConvex(points, n, fname, "points", 3)
-  local dx, dy = bx - ax, by - ay
-  if dx == 0 and dy == 0 then   -- a point: inside or not
-    if insideConvex(points, n, ax, ay) then return 0.0, 0.0, 0.0 end
-    return false
+-- castConvexJit's rarer outcomes (code as finishJit's): the precise fraction, a miss, A inside,
+-- or the exact path; the segment's ends and the entry edge from finishJit's scratch.
+local function castTailJit(points, n, code, nx, ny)
+  local ax, ay, bx, by = tailAx, tailAy, tailBx, tailBy
+  if code == 4 then
+    local p, q = tailP, tailQ
+    local px, py, qx, qy = points[p], points[p + 1], points[q], points[q + 1]
+    local t = entryFractionDD(px, py, qx, qy, ax, ay, bx, by)
+      or edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
+    return min(max(t, 0.0), 1.0), nx, ny
   end
-  local fp, fq, rp, rq, sure
-  if n <= 16 then
-    fp, fq, rp, rq, sure = sidesJit8(points, n, ax, ay, dx, dy)
-  elseif n <= 32 then
-    fp, fq, rp, rq, sure = sidesJit16(points, n, ax, ay, dx, dy)
+  if code == 3 then return false end
+  if code == 2 then return 0.0, 0.0, 0.0 end
+  local f
+  f, nx, ny = castConvexExact(points, n, ax, ay, bx, by)
+  return f, nx, ny
+end
+
+-- A convex polygon, LuaJIT's: up to 16 vertices the filter (filterJit8 or 16: the area sign
+-- too) and the sides' walk written out, beyond convex.lua's check and the walk's loop (the area
+-- sign by crossedTurn then, or where only the careful check vouched); finishJit's code;
+-- castConvexExact where a bound cannot vouch. A hit's fraction needs double doubles in about
+-- two thirds of the benchmark's hits (the float bound cannot vouch for 7 eps M): entryFractionDD
+-- on a side trace of its own.
+local function castConvexJit(points, n, ax, ay, bx, by, fname)
+  local dx, dy = bx - ax, by - ay
+  local fp, fq, rp, rq, sure, w
+  if n >= 6 and n <= 32 and (dx ~= 0 or dy ~= 0) then
+    if n <= 16 then w = filterJit8(points, n) else w = filterJit16(points, n) end
+    if w == 0 then checkConvex(points, n, fname, "points", 3) end   -- raises unless convex
+    if n <= 16 then
+      fp, fq, rp, rq, sure = sidesJit8(points, n, ax, ay, dx, dy)
+    else
+      fp, fq, rp, rq, sure = sidesJit16(points, n, ax, ay, dx, dy)
+    end
   else
+    checkConvex(points, n, fname, "points", 3)
+    if dx == 0 and dy == 0 then   -- a point: inside or not
+      if insideConvex(points, n, ax, ay) then return 0.0, 0.0, 0.0 end
+      return false
+    end
     fp, fq, rp, rq, sure = sidesJitLoop(points, n, ax, ay, dx, dy)
+    w = 0
   end
   if sure < 0 or max(abs(ax), abs(ay), abs(bx), abs(by)) > 2^400 then
     local f, nx, ny = castConvexExact(points, n, ax, ay, bx, by)
     return f, nx, ny
   end
   if fp == 0 or rp == 0 then return false end   -- the line misses the open interior
-  fallP, fallQ, riseP, riseQ = fp, fq, rp, rq
-  local w = crossedTurn(points)
-  if w == 0 then return false end
+  if w == 0 then
+    fallP, fallQ, riseP, riseQ = fp, fq, rp, rq
+    w = crossedTurn(points)
+    if w == 0 then return false end
+  end
   local m = max(abs(points[fp]), abs(points[fp + 1]), abs(points[fq]), abs(points[fq + 1]),
     abs(points[rp]), abs(points[rp + 1]), abs(points[rq]), abs(points[rq + 1]))
-  local code, t, nx, ny = 0, 0.0, 0.0, 0.0
-  if m <= 2^400 then code, t, nx, ny = finishCodeJit(points, w, fp, fq, rp, rq, ax, ay, bx, by) end
+  local code, t, nx, ny, p, q = 0, 0.0, 0.0, 0.0, 1, 1
+  if m <= 2^400 then code, t, nx, ny, p, q = finishJit(points, w, fp, fq, rp, rq, ax, ay, bx, by) end
+  tailAx, tailAy, tailBx, tailBy, tailP, tailQ = ax, ay, bx, by, p, q
   if code == 1 then return min(max(t, 0.0), 1.0), nx, ny end
-  if code == 3 then return false end
-  if code == 2 then return 0.0, 0.0, 0.0 end
   local f
-  f, nx, ny = castConvexExact(points, n, ax, ay, bx, by)
+  f, nx, ny = castTailJit(points, n, code, nx, ny)
   return f, nx, ny
 end
 
