@@ -21,6 +21,7 @@ local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProdu
 local expCopy, expSign, expCrossScaled = kernel.expCopy, kernel.expSign, kernel.expCrossScaled
 local twoProduct, twoSum, quotientDD, expTopTwo = kernel.twoProduct, kernel.twoSum, kernel.quotientDD,
   kernel.expTopTwo
+local crossDD = kernel.crossDD
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
 local checkConvex = convex.checkConvex
 local listView, call, checkCopy = views.listView, views.call, views.checkCopy
@@ -180,13 +181,9 @@ local function ratioValueDD(R, dx, dy)
   local eyh, eyl = twoDiff(R[4], R[2])
   local wxh, wxl = twoDiff(R[7], R[5])
   local wyh, wyl = twoDiff(R[8], R[6])
-  local lh, ll = twoProduct(exh, wyh)
-  local rh, rl = twoProduct(eyh, wxh)
-  local nh, n0 = twoDiff(lh, rh)
-  local numLow = n0 + (ll - rl) + ((exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh))
-  local numSize = abs(lh) + abs(rh)
-  lh, ll = twoProduct(exh, dy)
-  rh, rl = twoProduct(eyh, dx)
+  local nh, numLow, numSize = crossDD(exh, exl, eyh, eyl, wxh, wxl, wyh, wyl)
+  local lh, ll = twoProduct(exh, dy)
+  local rh, rl = twoProduct(eyh, dx)
   local dh, d0 = twoDiff(lh, rh)
   local denLow = d0 + (ll - rl) + (exl * dy - eyl * dx)
   local denSize = abs(lh) + abs(rh)

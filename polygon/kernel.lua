@@ -208,6 +208,20 @@ local function divideDD(xh, xl, yh, yl)
   return q + ((((xh - ph) - pl) + xl) - q * yl) / yh
 end
 
+-- u x v = ux vy - uy vx from double-double differences (each coordinate hi + lo, as twoDiff
+-- gives it), for quotientDD: hi, the rounded difference of the two main products (TwoProduct,
+-- then TwoDiff, exact); lo, the rest to first order (the products' low parts and the cross
+-- terms; what is dropped is below 2^-100 size); size = |ux vy| + |uy vx| of the main products.
+-- The callers split the differences themselves, so one shared by two cross products (the ray's
+-- edge in raycast.lua) is split once.
+local function crossDD(uxh, uxl, uyh, uyl, vxh, vxl, vyh, vyl)
+  local lh, ll = twoProduct(uxh, vyh)
+  local rh, rl = twoProduct(uyh, vxh)
+  local h, h0 = twoDiff(lh, rh)
+  local lo = h0 + (ll - rl) + ((uxh * vyl + uxl * vyh) - (uyh * vxl + uyl * vxh))
+  return h, lo, abs(lh) + abs(rh)
+end
+
 -- (nh + nl) / (dh + dl) for a numerator and a denominator each made as a difference of two
 -- products (nh the rounded difference, nl the rest, numSize the sum of the products' sizes;
 -- likewise the denominator): nil where cancellation or the range leaves the double doubles
@@ -647,6 +661,7 @@ M.twoSum = twoSum
 M.sqrtDD = sqrtDD
 M.divideDD = divideDD
 M.quotientDD = quotientDD
+M.crossDD = crossDD
 M.expCopy = expCopy
 M.powerScale = powerScale
 M.largestMagnitude = largestMagnitude

@@ -16,7 +16,7 @@ local rayjit = require(_PACKAGE .. ".rayjit")
 local abs, huge, min, max = math.abs, math.huge, math.min, math.max
 local cross, crossExact, CROSS_BOUND, JIT = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND, kernel.JIT
 local EPS, twoDiff, twoProduct, powerScale = kernel.EPS, kernel.twoDiff, kernel.twoProduct, kernel.powerScale
-local quotientDD = kernel.quotientDD
+local quotientDD, crossDD = kernel.quotientDD, kernel.crossDD
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expSign = kernel.expCopy, kernel.expSign
 local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
@@ -227,16 +227,8 @@ local function edgeFractionDD(px, py, qx, qy, ax, ay, bx, by)
   local eyh, eyl = twoDiff(qy, py)
   local dxh, dxl = twoDiff(bx, ax)
   local dyh, dyl = twoDiff(by, ay)
-  local lh, ll = twoProduct(wxh, eyh)
-  local rh, rl = twoProduct(wyh, exh)
-  local nh, n0 = twoDiff(lh, rh)
-  local numLow = n0 + (ll - rl) + ((wxh * eyl + wxl * eyh) - (wyh * exl + wyl * exh))
-  local numSize = abs(lh) + abs(rh)
-  lh, ll = twoProduct(dxh, eyh)
-  rh, rl = twoProduct(dyh, exh)
-  local dh, d0 = twoDiff(lh, rh)
-  local denLow = d0 + (ll - rl) + ((dxh * eyl + dxl * eyh) - (dyh * exl + dyl * exh))
-  local denSize = abs(lh) + abs(rh)
+  local nh, numLow, numSize = crossDD(wxh, wxl, wyh, wyl, exh, exl, eyh, eyl)
+  local dh, denLow, denSize = crossDD(dxh, dxl, dyh, dyl, exh, exl, eyh, eyl)
   return quotientDD(nh, numLow, numSize, dh, denLow, denSize)
 end
 

@@ -1,18 +1,28 @@
--- The README's quoted outputs cannot go stale: every ```lua block that shows what it prints
--- (`--> text` at the end of a line) is run, and its printed lines compared with those texts in
--- order; the arena checksum the README quotes is the one examples/arena.lua prints.
+-- The quoted outputs of the README and of the docs pages its examples moved to cannot go stale:
+-- every ```lua block that shows what it prints (`--> text` at the end of a line) is run, and its
+-- printed lines compared with those texts in order; the arena checksum the README quotes is the
+-- one examples/arena.lua prints.
 local interpreter = require "interpreter"
 
 local loadChunk = rawget(_G, "loadstring") or load   -- Lua 5.1's load takes no string
 
-local function readme()
-  local f = assert(io.open("README.md", "rb"))
+-- Each page whose examples are run, and how many blocks with output it holds at least (so that a
+-- page whose blocks the parser stopped finding fails).
+local PAGES = {
+  { file = "README.md", least = 3 },           -- the example, the U floor, the game loop
+  { file = "docs/reference.md", least = 3 },   -- polygonRayCast, polygonClosestPoint, polygonsCast
+  { file = "docs/levels.md", least = 4 },      -- a room, caves, what is refused, a tile map
+  { file = "docs/arena.md", least = 1 },       -- a swept move
+}
+
+local function read(file)
+  local f = assert(io.open(file, "rb"))
   local text = f:read("*a")
   f:close()
   return text
 end
 
--- Every ```lua block with at least one `-->`: its code, its first line in the README, and the
+-- Every ```lua block with at least one `-->`: its code, its first line in the page, and the
 -- texts after `-->`, one per line that has one.
 local function blocksWithOutput(text)
   local blocks, lineNo, inBlock, current = {}, 0, false, nil
@@ -32,8 +42,8 @@ local function blocksWithOutput(text)
   return blocks
 end
 
--- Runs a block with print collecting its lines.
-local function run(block)
+-- Runs a block of a page with print collecting its lines.
+local function run(file, block)
   local printed = {}
   local function collect(...)
     local parts = {}
@@ -42,24 +52,29 @@ local function run(block)
     printed[#printed + 1] = table.concat(parts, "\t"):gsub("%s+", " ")
   end
   local chunk = assert(loadChunk("local print = ...\n" .. table.concat(block.code, "\n"),
-    "README.md:" .. block.line))
+    file .. ":" .. block.line))
   chunk(collect)
   return printed
 end
 
-describe("README.md", function()
-  local text = readme()
-  local blocks = blocksWithOutput(text)
+for _, page in ipairs(PAGES) do
+  describe(page.file, function()
+    local blocks = blocksWithOutput(read(page.file))
 
-  it("shows the output of at least the example and the concave levels", function()
-    assert.is_true(#blocks >= 4)
-  end)
-
-  for _, block in ipairs(blocks) do
-    it("prints what it shows in the block at line " .. block.line, function()
-      assert.are.same(block.expected, run(block))
+    it("shows the output of at least " .. page.least .. " examples", function()
+      assert.is_true(#blocks >= page.least)
     end)
-  end
+
+    for _, block in ipairs(blocks) do
+      it("prints what it shows in the block at line " .. block.line, function()
+        assert.are.same(block.expected, run(page.file, block))
+      end)
+    end
+  end)
+end
+
+describe("README.md", function()
+  local text = read("README.md")
 
   it("quotes the checksum examples/arena.lua prints after 300 frames", function()
     local quoted = text:match("examples/arena.lua 300` ends with `checksum ([%d%.]+)`")
