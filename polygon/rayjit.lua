@@ -12,7 +12,7 @@ local sat = require(_PACKAGE .. ".sat")
 
 local abs, huge, min, max = math.abs, math.huge, math.min, math.max
 local CROSS_BOUND, EPS = kernel.CROSS_BOUND, kernel.EPS
-local twoDiff, twoProduct = kernel.twoDiff, kernel.twoProduct
+local twoDiff, crossDD = kernel.twoDiff, kernel.crossDD
 local unit = sat.unit
 local TINY = convex.TINY
 
@@ -66,9 +66,9 @@ local function turnSlot(points, i, pad, px, py, ex, ey, lo, hi, agree, bsum)
     agree + min(1, max(-1, ex * fx * 2^1000)), bsum + b
 end
 
--- The area sign when the filter vouches for convexity (every turn surely positive, or every
--- one surely negative, one winding, no overflow), else 0 (convex.lua's careful check decides).
-local function filterJit8(points, n)
+-- Slots 1 to 7 of either body (the same there): the filter's sums after them, and the last
+-- vertex and edge.
+local function firstTurns(points, n)
   local last = n - 1
   local px, py = points[last], points[n]
   local ex, ey = px - points[n - 3], py - points[n - 2]
@@ -87,32 +87,27 @@ local function filterJit8(points, n)
     turnSlot(points, min(11, last), PAD * min(1, max(0, 12 - n)), px, py, ex, ey, lo, hi, agree, bsum)
   px, py, ex, ey, lo, hi, agree, bsum =
     turnSlot(points, min(13, last), PAD * min(1, max(0, 14 - n)), px, py, ex, ey, lo, hi, agree, bsum)
-  local _
-  _, _, _, _, lo, hi, agree, bsum =
-    turnSlot(points, last, PAD * min(1, max(0, 16 - n)), px, py, ex, ey, lo, hi, agree, bsum)
+  return px, py, ex, ey, lo, hi, agree, bsum
+end
+
+-- The area sign when the filter vouches for convexity (every turn surely positive, or every
+-- one surely negative, one winding, no overflow), else 0 (convex.lua's careful check decides).
+local function turnSign(n, lo, hi, agree, bsum)
   if agree ~= n / 2 - 4 or bsum == huge then return 0 end
   return min(1, max(0, lo * BIG * BIG)) - min(1, max(0, -hi * BIG * BIG))
 end
 
+local function filterJit8(points, n)
+  local px, py, ex, ey, lo, hi, agree, bsum = firstTurns(points, n)
+  local _
+  _, _, _, _, lo, hi, agree, bsum =
+    turnSlot(points, n - 1, PAD * min(1, max(0, 16 - n)), px, py, ex, ey, lo, hi, agree, bsum)
+  return turnSign(n, lo, hi, agree, bsum)
+end
+
 local function filterJit16(points, n)
   local last = n - 1
-  local px, py = points[last], points[n]
-  local ex, ey = px - points[n - 3], py - points[n - 2]
-  local lo, hi, agree, bsum = huge, -huge, 0, 0
-  px, py, ex, ey, lo, hi, agree, bsum =
-    turnSlot(points, 1, 0, px, py, ex, ey, lo, hi, agree, bsum)
-  px, py, ex, ey, lo, hi, agree, bsum =
-    turnSlot(points, 3, 0, px, py, ex, ey, lo, hi, agree, bsum)
-  px, py, ex, ey, lo, hi, agree, bsum =
-    turnSlot(points, 5, 0, px, py, ex, ey, lo, hi, agree, bsum)
-  px, py, ex, ey, lo, hi, agree, bsum =
-    turnSlot(points, min(7, last), PAD * min(1, max(0, 8 - n)), px, py, ex, ey, lo, hi, agree, bsum)
-  px, py, ex, ey, lo, hi, agree, bsum =
-    turnSlot(points, min(9, last), PAD * min(1, max(0, 10 - n)), px, py, ex, ey, lo, hi, agree, bsum)
-  px, py, ex, ey, lo, hi, agree, bsum =
-    turnSlot(points, min(11, last), PAD * min(1, max(0, 12 - n)), px, py, ex, ey, lo, hi, agree, bsum)
-  px, py, ex, ey, lo, hi, agree, bsum =
-    turnSlot(points, min(13, last), PAD * min(1, max(0, 14 - n)), px, py, ex, ey, lo, hi, agree, bsum)
+  local px, py, ex, ey, lo, hi, agree, bsum = firstTurns(points, n)
   px, py, ex, ey, lo, hi, agree, bsum =
     turnSlot(points, min(15, last), PAD * min(1, max(0, 16 - n)), px, py, ex, ey, lo, hi, agree, bsum)
   px, py, ex, ey, lo, hi, agree, bsum =
@@ -132,8 +127,7 @@ local function filterJit16(points, n)
   local _
   _, _, _, _, lo, hi, agree, bsum =
     turnSlot(points, last, PAD * min(1, max(0, 32 - n)), px, py, ex, ey, lo, hi, agree, bsum)
-  if agree ~= n / 2 - 4 or bsum == huge then return 0 end
-  return min(1, max(0, lo * BIG * BIG)) - min(1, max(0, -hi * BIG * BIG))
+  return turnSign(n, lo, hi, agree, bsum)
 end
 
 -- The walk's slot: the side of the vertex at flat index i (its sign, -1, 0 or 1, by min and
@@ -147,10 +141,8 @@ local function sideSlot(points, i, signPrev, ax, ay, dx, dy, sure, fq, rq)
   return sign, min(sure, c), fq, rq
 end
 
--- The falling edge's ends (flat indices: the vertex before q is q - 2, or the last for the
--- first; 0 ends when there is none: fq 0), the rising edge's, and the least clearance of the
--- sides (< 0: redo exactly).
-local function sidesJit8(points, n, ax, ay, dx, dy)
+-- Slots 1 to 7 of either walk (the same there): the last slot's sign and the sums after them.
+local function firstSides(points, n, ax, ay, dx, dy)
   local last = n - 1
   local o, sure = sideJit(points[last], points[n], ax, ay, dx, dy)
   local sign, fq, rq = min(1, max(-1, o * BIG * BIG)), 0, 0
@@ -161,23 +153,27 @@ local function sidesJit8(points, n, ax, ay, dx, dy)
   sign, sure, fq, rq = sideSlot(points, min(9, last), sign, ax, ay, dx, dy, sure, fq, rq)
   sign, sure, fq, rq = sideSlot(points, min(11, last), sign, ax, ay, dx, dy, sure, fq, rq)
   sign, sure, fq, rq = sideSlot(points, min(13, last), sign, ax, ay, dx, dy, sure, fq, rq)
-  local _
-  _, sure, fq, rq = sideSlot(points, last, sign, ax, ay, dx, dy, sure, fq, rq)
+  return sign, sure, fq, rq
+end
+
+-- The falling edge's ends (flat indices: the vertex before q is q - 2, or the last for the
+-- first; 0 ends when there is none: fq 0), the rising edge's, and the least clearance of the
+-- sides (< 0: redo exactly).
+local function crossings(n, fq, rq, sure)
   return (fq - 2 + n * (1 - min(1, fq - 1))) * min(1, fq), fq,
     (rq - 2 + n * (1 - min(1, rq - 1))) * min(1, rq), rq, sure
 end
 
+local function sidesJit8(points, n, ax, ay, dx, dy)
+  local sign, sure, fq, rq = firstSides(points, n, ax, ay, dx, dy)
+  local _
+  _, sure, fq, rq = sideSlot(points, n - 1, sign, ax, ay, dx, dy, sure, fq, rq)
+  return crossings(n, fq, rq, sure)
+end
+
 local function sidesJit16(points, n, ax, ay, dx, dy)
   local last = n - 1
-  local o, sure = sideJit(points[last], points[n], ax, ay, dx, dy)
-  local sign, fq, rq = min(1, max(-1, o * BIG * BIG)), 0, 0
-  sign, sure, fq, rq = sideSlot(points, 1, sign, ax, ay, dx, dy, sure, fq, rq)
-  sign, sure, fq, rq = sideSlot(points, 3, sign, ax, ay, dx, dy, sure, fq, rq)
-  sign, sure, fq, rq = sideSlot(points, 5, sign, ax, ay, dx, dy, sure, fq, rq)
-  sign, sure, fq, rq = sideSlot(points, min(7, last), sign, ax, ay, dx, dy, sure, fq, rq)
-  sign, sure, fq, rq = sideSlot(points, min(9, last), sign, ax, ay, dx, dy, sure, fq, rq)
-  sign, sure, fq, rq = sideSlot(points, min(11, last), sign, ax, ay, dx, dy, sure, fq, rq)
-  sign, sure, fq, rq = sideSlot(points, min(13, last), sign, ax, ay, dx, dy, sure, fq, rq)
+  local sign, sure, fq, rq = firstSides(points, n, ax, ay, dx, dy)
   sign, sure, fq, rq = sideSlot(points, min(15, last), sign, ax, ay, dx, dy, sure, fq, rq)
   sign, sure, fq, rq = sideSlot(points, min(17, last), sign, ax, ay, dx, dy, sure, fq, rq)
   sign, sure, fq, rq = sideSlot(points, min(19, last), sign, ax, ay, dx, dy, sure, fq, rq)
@@ -188,8 +184,7 @@ local function sidesJit16(points, n, ax, ay, dx, dy)
   sign, sure, fq, rq = sideSlot(points, min(29, last), sign, ax, ay, dx, dy, sure, fq, rq)
   local _
   _, sure, fq, rq = sideSlot(points, last, sign, ax, ay, dx, dy, sure, fq, rq)
-  return (fq - 2 + n * (1 - min(1, fq - 1))) * min(1, fq), fq,
-    (rq - 2 + n * (1 - min(1, rq - 1))) * min(1, rq), rq, sure
+  return crossings(n, fq, rq, sure)
 end
 
 -- Beyond 16 vertices the same in a loop (long enough to be a trace of its own).
@@ -264,18 +259,11 @@ local function entryFractionDD(px, py, qx, qy, ax, ay, bx, by)
   local eyh, eyl = twoDiff(qy, py)
   local uxh, uxl = twoDiff(ax, px)
   local uyh, uyl = twoDiff(ay, py)
-  local lh, ll = twoProduct(exh, uyh)
-  local rh, rl = twoProduct(eyh, uxh)
-  local ah, a0 = twoDiff(lh, rh)
-  local a = ah + (a0 + (ll - rl) + ((exh * uyl + exl * uyh) - (eyh * uxl + eyl * uxh)))
-  local size = abs(lh) + abs(rh)
+  local ah, al, sizeA = crossDD(exh, exl, eyh, eyl, uxh, uxl, uyh, uyl)
   uxh, uxl = twoDiff(bx, px)
   uyh, uyl = twoDiff(by, py)
-  lh, ll = twoProduct(exh, uyh)
-  rh, rl = twoProduct(eyh, uxh)
-  local bh, b0 = twoDiff(lh, rh)
-  local b = bh + (b0 + (ll - rl) + ((exh * uyl + exl * uyh) - (eyh * uxl + eyl * uxh)))
-  size = size + abs(lh) + abs(rh)
+  local bh, bl, sizeB = crossDD(exh, exl, eyh, eyl, uxh, uxl, uyh, uyl)
+  local a, b, size = ah + al, bh + bl, sizeA + sizeB
   local den = abs(a) + abs(b)
   if den < size * 2^-40 or size < 2^-800 then return nil end
   return abs(a) / den
