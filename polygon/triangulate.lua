@@ -644,7 +644,7 @@ end
 local roomMade = not JIT
 local function makeRoom()
   roomMade = true
-  if jit.opt and jit.opt.start then pcall(jit.opt.start, "maxtrace=6000", "maxmcode=8192") end
+  if jit.opt and jit.opt.start then pcall(jit.opt.start, "maxtrace=8000", "maxmcode=16384") end
 end
 
 -- Charges the interpreter's time since t0 and compiles once the budget is spent.
