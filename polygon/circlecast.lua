@@ -142,9 +142,9 @@ end
 -- crosses the line moved out by r when h(t) = r |e|: t = (h0 - r |e|) / -h1 (h1 < 0: moving
 -- toward the polygon), an entry when the foot q(t) = (C(t) - a).e lies in [0, |e|^2] there.
 -- Every quantity as a double double (the differences split exactly, the main products exact,
--- first-order terms added): t within eps plus order eps^2 c, c the terms of h0 - r |e| over
--- it. Where the foot lies within that rounding of an end of the edge, the corner disc there is
--- entered within as little of the same time (the moved line is tangent to it), so either
+-- first-order terms added, each renormalised by TwoSum: near a slide e x d is all low parts):
+-- t within eps plus order eps^2 c, c the terms of h0 - r |e| over it. Where the foot lies
+-- within that rounding of an end of the edge, the corner disc there is entered within as little of the same time (the moved line is tangent to it), so either
 -- answer serves; an entry whose foot falls outside is kept aside (by how far) in case no
 -- other candidate of a part that is hit remains.
 local faceT, faceNx, faceNy, faceOff = 0.0, 0.0, 0.0, 0.0
@@ -168,10 +168,12 @@ local function faceEntry(ax, ay, bx, by, w, cx, cy, dx, dy, r)
   h2, l2 = twoProduct(eyh, wxh)
   local ch, cl = twoDiff(h, h2)
   cl = cl + (l - l2) + ((exh * wyl + exl * wyh) - (eyh * wxl + eyl * wxh))
+  ch, cl = twoSum(ch, cl)
   h, l = twoProduct(exh, dy)   -- e x d
   h2, l2 = twoProduct(eyh, dx)
   local sh, sl = twoDiff(h, h2)
   sl = sl + (l - l2) + (exl * dy - eyl * dx)
+  sh, sl = twoSum(sh, sl)
   h, l = twoProduct(exh, exh)   -- |e|^2
   h2, l2 = twoProduct(eyh, eyh)
   local qh, ql = twoSum(h, h2)
@@ -180,9 +182,11 @@ local function faceEntry(ax, ay, bx, by, w, cx, cy, dx, dy, r)
   local lh, ll = sqrtDD(qh, ql)
   h, l = twoProduct(r, lh)   -- r |e|
   l = l + r * ll
+  h, l = twoSum(h, l)
   -- numerator h0 - r |e| = -w (e x (C - a)) - r |e|; denominator -h1 = w (e x d) > 0
   local nh, nl = twoDiff(-w * ch, h)
   nl = nl + (-w * cl - l)
+  nh, nl = twoSum(nh, nl)
   local dh, dl = w * sh, w * sl
   local t = nh / dh
   h, l = twoProduct(t, dh)
@@ -193,10 +197,12 @@ local function faceEntry(ax, ay, bx, by, w, cx, cy, dx, dy, r)
   h2, l2 = twoProduct(eyh, wyh)
   local ah, al = twoSum(h, h2)
   al = al + (l + l2) + ((exh * wxl + exl * wxh) + (eyh * wyl + eyl * wyh))
+  ah, al = twoSum(ah, al)
   h, l = twoProduct(exh, dx)
   h2, l2 = twoProduct(eyh, dy)
   local bh, bl = twoSum(h, h2)
   bl = bl + (l + l2) + (exl * dx + eyl * dy)
+  bh, bl = twoSum(bh, bl)
   h, l = twoProduct(t, bh)
   local fh, fl = twoSum(ah, h)
   fl = fl + al + l + t * bl + tl * bh
@@ -229,7 +235,8 @@ local function partCast(points, n, w, cx, cy, r, dx, dy)
       if t < partT then partT, partNx, partNy = t, nx, ny end
     end
     if bx ~= ax or by ~= ay then
-      if cross(ax, ay, bx, by, 0.0, 0.0, dx, dy) * w > 0 and faceEntry(ax, ay, bx, by, w, cx, cy, dx, dy, r) then
+      if cross(ax, ay, bx, by, 0.0, 0.0, dx, dy) * w > 0
+          and faceEntry(ax, ay, bx, by, w, cx, cy, dx, dy, r) then
         if faceOff == 0 then
           if faceT < partT then partT, partNx, partNy = faceT, faceNx, faceNy end
         elseif faceOff < asideOff then
