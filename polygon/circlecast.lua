@@ -144,9 +144,10 @@ end
 -- Every quantity as a double double (the differences split exactly, the main products exact,
 -- first-order terms added, each renormalised by TwoSum: near a slide e x d is all low parts):
 -- t within eps plus order eps^2 c, c the terms of h0 - r |e| over it. Where the foot lies
--- within that rounding of an end of the edge, the corner disc there is entered within as little of the same time (the moved line is tangent to it), so either
--- answer serves; an entry whose foot falls outside is kept aside (by how far) in case no
--- other candidate of a part that is hit remains.
+-- within that rounding of an end of the edge, the corner disc there is entered within as
+-- little of the same time (the moved line is tangent to it), so either answer serves; an entry
+-- whose foot falls outside is kept aside (by how far) in case no other candidate of a part
+-- that is hit remains.
 local faceT, faceNx, faceNy, faceOff = 0.0, 0.0, 0.0, 0.0
 
 -- Sets faceT, faceNx, faceNy and faceOff (0 when the foot lies on the edge, else how far
