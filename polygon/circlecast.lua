@@ -15,7 +15,7 @@ local collide = require(_PACKAGE .. ".collide")
 local circle = require(_PACKAGE .. ".circle")
 local casts = require(_PACKAGE .. ".casts")
 
-local abs, huge, min, max = math.abs, math.huge, math.min, math.max
+local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 local cross, EPS = kernel.cross, kernel.EPS
 local twoDiff, twoProduct, twoSum, sqrtDD = kernel.twoDiff, kernel.twoProduct, kernel.twoSum,
   kernel.sqrtDD
@@ -132,8 +132,9 @@ local function endWithinEdge(ax, ay, bx, by, cx, cy, dx, dy, r)
   if not (dotBound > FILTER_LO and gapBound < FILTER_HI) then
     return endWithinEdgeExact(ax, ay, bx, by, cx, cy, dx, dy, r)
   end
-  if da < -dotBound or db > dotBound or gap < -gapBound then return false end   -- certainly not
-  if da > dotBound and db < -dotBound and gap > gapBound then return true end   -- certainly
+  -- one comparison each (on LuaJIT every comparison that goes both ways grows a side trace)
+  if max(-da - dotBound, db - dotBound, -gap - gapBound) > 0 then return false end   -- certainly not
+  if min(da - dotBound, -db - dotBound, gap - gapBound) > 0 then return true end     -- certainly
   return endWithinEdgeExact(ax, ay, bx, by, cx, cy, dx, dy, r)
 end
 
@@ -152,8 +153,32 @@ local faceT, faceNx, faceNy, faceOff = 0.0, 0.0, 0.0, 0.0
 
 -- Sets faceT, faceNx, faceNy and faceOff (0 when the foot lies on the edge, else how far
 -- outside, relative to |e|^2) for the edge a -> b, h1 < 0; returns false when t < -2^-30 (the
--- line was crossed before the start: the centre entered the strip beyond an end, at a corner).
+-- line was crossed before the start: the centre entered the strip beyond an end, at a corner),
+-- or when floating point alone shows t > 1, t < 0 or the foot off the edge.
 local function faceEntry(ax, ay, bx, by, w, cx, cy, dx, dy, r)
+  -- First in floating point: each cross or dot product and r |e| within 8 eps of its terms; when
+  -- numerator and denominator are each within 2^-30 of themselves, t is within 2^-28 of itself
+  -- and the foot within 2^-27 of its terms, so a crossing after 1 or before the start, or one
+  -- whose foot lies clearly off the edge, needs no double doubles.
+  do
+    local ex, ey, wx, wy = bx - ax, by - ay, cx - ax, cy - ay
+    local c1, c2, s1, s2 = ex * wy, ey * wx, ex * dy, ey * dx
+    local lengthSq = ex * ex + ey * ey
+    local reach = r * sqrt(lengthSq)
+    local num, den = -w * (c1 - c2) - reach, w * (s1 - s2)
+    local numTerms, denTerms = abs(c1) + abs(c2) + reach, abs(s1) + abs(s2)
+    -- one comparison each (as in endWithinEdge)
+    if min(abs(num) * 2^-30 - 8 * EPS * numTerms, abs(den) * 2^-30 - 8 * EPS * denTerms,
+        numTerms - 2^-900, 2^900 - numTerms, denTerms - 2^-900, 2^900 - denTerms) > 0 then
+      local t = num / den
+      local a1, a2, b1, b2 = ex * wx, ey * wy, ex * dx, ey * dy
+      local foot = (a1 + a2) + t * (b1 + b2)
+      local footRoom = 2^-20 * (abs(a1) + abs(a2) + abs(t) * (abs(b1) + abs(b2)) + lengthSq)
+      if max(t - (1 + 2^-20), -2^-20 - t, -footRoom - foot, foot - lengthSq - footRoom) > 0 then
+        return false
+      end
+    end
+  end
   local m = max(abs(ax), abs(ay), abs(bx), abs(by), abs(cx), abs(cy), abs(dx), abs(dy), r)
   if m > 2^200 or m < 2^-200 then   -- t is unchanged by a common scale; keep products in range
     local s = powerScale(m, 1.0, 2^64)
@@ -217,6 +242,21 @@ local function faceEntry(ax, ay, bx, by, w, cx, cy, dx, dy, r)
   return true
 end
 
+-- False when the vertex (px, py) certainly lies farther than r from the segment C -> C + d, by
+-- floating point: the squared distance (to the nearest point of the segment) is within a few eps
+-- of S = |v - C|^2 + |d|^2 + r^2, far less than the 2^-40 S of room. Most vertices of a part
+-- are far; they skip the exact test (and on LuaJIT its float filter's branches, whose side
+-- traces failed to compile with partCast's values live: "register coalescing too complex").
+local function cornerNear(px, py, cx, cy, r, dx, dy)
+  local wx, wy = px - cx, py - cy
+  local ww, dd, rr = wx * wx + wy * wy, dx * dx + dy * dy, r * r
+  local along = min(max(wx * dx + wy * dy, 0.0), dd)
+  local ux, uy = wx - dx * (along / dd), wy - dy * (along / dd)
+  if dd == 0 then ux, uy = wx, wy end
+  local S = ww + dd + rr
+  return not (ux * ux + uy * uy - rr > 2^-40 * S and S < 2^1000 and S > 2^-900)
+end
+
 -- The best candidate of the part being cast (partT = huge: none), and of the aside entries.
 local partT, partNx, partNy = huge, 0.0, 0.0
 local asideT, asideNx, asideNy, asideOff = huge, 0.0, 0.0, huge
@@ -230,7 +270,7 @@ local function partCast(points, n, w, cx, cy, r, dx, dy)
   local ax, ay = points[n - 1] + 0.0, points[n] + 0.0
   for i = 1, n - 1, 2 do
     local bx, by = points[i] + 0.0, points[i + 1] + 0.0
-    if cornerCastStatus(bx, by, cx, cy, r, dx, dy) == HIT then
+    if cornerNear(bx, by, cx, cy, r, dx, dy) and cornerCastStatus(bx, by, cx, cy, r, dx, dy) == HIT then
       hit = true
       local t, nx, ny = cornerEntry(bx, by, cx, cy, r, dx, dy)
       if t < partT then partT, partNx, partNy = t, nx, ny end
