@@ -289,7 +289,7 @@ local function partCast(points, n, w, cx, cy, r, dx, dy)
     ax, ay = bx, by
   end
   if not hit and not pathMeetsInterior(points, n, w, cx, cy, dx, dy) then return false end
-  if partT == huge then partT, partNx, partNy = asideT, asideNx, asideNy end
+  if partT == huge then partT, partNx, partNy = min(asideT, 1.0), asideNx, asideNy end
   return true
 end
 
