@@ -44,6 +44,7 @@ build = {
     ["polygon.circleray"] = "polygon/circleray.lua",
     ["polygon.closest"] = "polygon/closest.lua",
     ["polygon.casts"] = "polygon/casts.lua",
+    ["polygon.circlecast"] = "polygon/circlecast.lua",
   },
 }
 test = {

@@ -56,6 +56,7 @@ local raycast     = require(_PACKAGE .. "raycast")
 local circleray   = require(_PACKAGE .. "circleray")
 local closest     = require(_PACKAGE .. "closest")
 local casts       = require(_PACKAGE .. "casts")
+local circlecast  = require(_PACKAGE .. "circlecast")
 
 --- Measures
 -- @section measures
@@ -330,6 +331,31 @@ polygon.polygonsCast = casts.polygonsCast
 -- @treturn number ny
 -- @raise when an argument is not a finite number or a radius is negative
 polygon.circlesCast = casts.circlesCast
+
+--- As @{polygonsCast}, for a moving circle (centre (cx, cy), its radius) against a static convex
+-- polygon or list of convex parts: they collide at t when the open disc meets the shape's open
+-- interior, the centre within the radius of the shape (sliding along a face or grazing a corner
+-- at exactly the radius is a miss; passing through a thin wall within one move is a hit), and a
+-- seam between parts is never met. The hit or miss is exact. The same contract for the fraction
+-- (the moved centre, each coordinate rounded, leaves @{polygonCircleCollideV} false; no earlier
+-- than the exact contact less 8 eps M / |(dx, dy)|, M over the shape and the centre moved or
+-- not, with the same exception where the motion grazes the contact). Allocates nothing.
+-- @function polygonCircleCast
+-- @tparam table points the static shape: flat array, or a list of convex parts
+-- @number cx the moving circle's centre
+-- @number cy
+-- @number radius
+-- @number dx the move
+-- @number dy
+-- @treturn number|boolean fraction in [0, 1]; 0 when already colliding; or false (also for no
+-- move, unless already colliding, and always for radius 0)
+-- @treturn number nx, the unit contact normal from the shape toward the circle: a face's
+-- outward normal, or from the corner toward the centre at contact (when already colliding, the
+-- direction of @{polygonCircleCollideV}'s push)
+-- @treturn number ny
+-- @raise as @{polygonsCast} for points, and when cx, cy, radius, dx or dy is not a finite
+-- number or the radius is negative
+polygon.polygonCircleCast = circlecast.polygonCircleCast
 
 --- The nearest point of the polygon's boundary to (x, y), and the signed distance to it: AI
 -- sensing, snapping, aim assist. Any polygon, convex or not (a self-intersecting one too: its

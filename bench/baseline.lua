@@ -333,6 +333,50 @@ function baseline.circlesCast(x1, y1, r1, x2, y2, r2, dx, dy)
   return t, (fx + t * dx) / r, (fy + t * dy) / r
 end
 
+-- The loop a user writes for a circle swept against a convex polygon: for each edge, where the
+-- centre crosses the edge's line moved out by r (its foot on the edge), and where it comes within
+-- r of the edge's end (the school formula); the least, or 0 when it starts within r.
+function baseline.polygonCircleCast(points, cx, cy, r, dx, dy)
+  local n = #points
+  local w = 0
+  for i = 1, n - 1, 2 do
+    local j = i + 2 > n and 1 or i + 2
+    w = w + points[i] * points[j + 1] - points[j] * points[i + 1]
+  end
+  w = w > 0 and 1 or -1
+  local best, bnx, bny, inside = math.huge, 0, 0, true
+  local ax, ay = points[n - 1], points[n]
+  local qa = dx * dx + dy * dy
+  for i = 1, n - 1, 2 do
+    local bx, by = points[i], points[i + 1]
+    local ex, ey = bx - ax, by - ay
+    local len = sqrt(ex * ex + ey * ey)
+    local nx, ny = w * ey / len, -w * ex / len
+    local h0 = (cx - ax) * nx + (cy - ay) * ny
+    local s0 = ((cx - ax) * ex + (cy - ay) * ey) / (len * len)
+    if h0 > 0 then inside = false end
+    if h0 >= 0 and h0 < r and s0 >= 0 and s0 <= 1 then return 0, nx, ny end
+    local h1 = dx * nx + dy * ny
+    if h1 < 0 and h0 >= r then
+      local t = (h0 - r) / -h1
+      local s = ((cx + t * dx - ax) * ex + (cy + t * dy - ay) * ey) / (len * len)
+      if t <= 1 and s >= 0 and s <= 1 and t < best then best, bnx, bny = t, nx, ny end
+    end
+    local fx, fy = cx - bx, cy - by
+    local p, c = fx * dx + fy * dy, fx * fx + fy * fy - r * r
+    if c < 0 then return 0, fx / sqrt(fx * fx + fy * fy), fy / sqrt(fx * fx + fy * fy) end
+    local disc = p * p - qa * c
+    if qa > 0 and disc > 0 and p < 0 then
+      local t = (-p - sqrt(disc)) / qa
+      if t <= 1 and t < best then best, bnx, bny = t, (fx + t * dx) / r, (fy + t * dy) / r end
+    end
+    ax, ay = bx, by
+  end
+  if inside then return 0, 1, 0 end
+  if best == math.huge then return false end
+  return best, bnx, bny
+end
+
 -- The tutorial's class, reduced to what the benchmark times.
 local Polygon = {}
 Polygon.__index = Polygon

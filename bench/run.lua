@@ -199,6 +199,8 @@ workload("crMix", "discs, segments: 1/4 through, passing, short, from inside", W
 workload("scMix", "convex 4-8 static, 4-6 moving: 1/4 hit, 1/4 pass by, 1/4 short, 1/4 overlapped",
          W.casts(SIZES.circles))
 workload("ccMix", "circles: 1/4 hit, 1/4 pass by, 1/4 short, 1/4 overlapped", W.circleCasts(SIZES.circles))
+workload("pccMix", "convex 4-8 static, a circle: 1/4 hit, 1/4 pass by, 1/4 short, 1/4 overlapped",
+         W.polygonCircleCasts(SIZES.circles))
 workload("npOrd", "4-16 vertices, half convex, points in and around the box", W.nearestQueries(ordinary))
 workload("prOrd", "convex 6-8, a vertex and an edge normal", W.projections(mixed[1]))
 workload("pcOrd", "random circle, point and axis", W.circleProjections(SIZES.circles))
@@ -405,6 +407,33 @@ function evaluate.circleCast(wl, call)
     text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, wl.n) }
 end
 
+-- a circle against a polygon: `wrong` counts hit, miss and overlapped answers other than
+-- sweeps.discReach's, and hits whose moved circle collides or whose fraction is more than
+-- 8 eps M / |d| before the exact contact
+function evaluate.polygonCircleCast(wl, call)
+  local a, wrong = wl.args, 0
+  local collide = require("polygon").polygonCircleCollideV
+  for i = 1, wl.n do
+    local p, cx, cy, r, dx, dy = a[1][i], a[2][i], a[3][i], a[4][i], a[5][i], a[6][i]
+    local f = call(i)
+    if sweeps.discReach(p, cx, cy, r, dx, dy, 0) then
+      if f ~= 0 then wrong = wrong + 1 end
+    elseif not sweeps.discReach(p, cx, cy, r, dx, dy, 1) then
+      if f ~= false then wrong = wrong + 1 end
+    else
+      local M = max(abs(cx), abs(cy), abs(cx + dx), abs(cy + dy))
+      for _, v in ipairs(p) do M = max(M, abs(v)) end
+      local b = 8 * 2 ^ -53 * M / sqrt(dx * dx + dy * dy) * (1 - 2 ^ -30)
+      if type(f) ~= "number" or collide(p, cx + f * dx, cy + f * dy, r)
+          or not sweeps.discReach(p, cx, cy, r, dx, dy, f, b) then
+        wrong = wrong + 1
+      end
+    end
+  end
+  return { wrong = wrong, total = wl.n,
+    text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, wl.n) }
+end
+
 -- nearest points: `wrong` counts answers nearest.check refuses (sign, distance or point beyond
 -- 8 eps M of exact)
 function evaluate.nearest(wl, call)
@@ -472,6 +501,7 @@ row("circleRayCast", "crMix", "v3", "circleRay")
 row("polygonClosestPoint", "npOrd", "v3", "nearest")
 row("polygonsCast", "scMix", "v3", "cast")
 row("circlesCast", "ccMix", "v3", "circleCast")
+row("polygonCircleCast", "pccMix", "v3", "polygonCircleCast")
 -- the convexity check's cost (issue 29): each collision row against the same function without it
 for _, f in ipairs({ { "polygonCollidesWith", "bool", "collide1" }, { "polygonsCollide", "bool", "collide2" },
                      { "polygonCollidesWithV", "v3", "collideV1" },

@@ -430,4 +430,29 @@ function W.circleCasts(count)
   return A
 end
 
+-- points, cx, cy, radius, dx, dy: a static convex polygon of 4 to 8 vertices and a circle of
+-- radius 0.2 to 0.6 of its size, the same four kinds as W.casts
+function W.polygonCircleCasts(count)
+  local A = { {}, {}, {}, {}, {}, {} }
+  for i = 1, count do
+    local kind, size = (i - 1) % 4 + 1, uniform(10, 50)
+    local cx, cy, t = uniform(-100, 100), uniform(-100, 100), uniform(0, 2 * pi)
+    local r = uniform(0.2, 0.6) * size
+    local distance = kind == 4 and 0.5 * size or 3 * size
+    local mx, my = cx + distance * cos(t), cy + distance * sin(t)
+    local dx, dy
+    if kind == 1 or kind == 4 then
+      dx, dy = 2 * (cx + uniform(-0.3, 0.3) * size - mx), 2 * (cy + uniform(-0.3, 0.3) * size - my)
+    elseif kind == 2 then
+      local s = t + pi + uniform(0.8, 1.2) * (randint(0, 1) * 2 - 1)
+      dx, dy = 6 * size * cos(s), 6 * size * sin(s)
+    else
+      dx, dy = 0.2 * (cx - mx), 0.2 * (cy - my)
+    end
+    A[1][i], A[2][i], A[3][i], A[4][i], A[5][i], A[6][i] = convex(4 + (i - 1) % 5, cx, cy, size), mx, my, r,
+      dx, dy
+  end
+  return A
+end
+
 return W

@@ -712,4 +712,44 @@ function M.circlesCast(x1, y1, r1, x2, y2, r2, dx, dy)
   return 0.0, nx + 0.0, ny + 0.0
 end
 
+-- For polygon/circlecast.lua (polygonCircleCast): the swept point against a convex polygon, the
+-- moving disc against a point (a corner), and the step back.
+local pointScratch = { 0.0, 0.0 }
+
+-- Whether the point (cx, cy), moving by t d for t in [0, 1], meets the open interior of the convex
+-- polygon p1[1 .. n1] (turn w1 = 1 or -1): convexCast's walk over p1's edges with P2 a point.
+-- Exact.
+function M.pathMeetsInterior(p1, n1, w1, cx, cy, dx, dy)
+  pointScratch[1], pointScratch[2] = cx, cy
+  exitCount = 0
+  local found, allInside = edgeWalk(p1, n1, w1, pointScratch, 2, false, dx, dy, false, true)
+  if found == MISS then return false end
+  if allInside then return true end
+  if not ratioBelowOne(bestRatio, dx, dy) then return false end
+  for k = 0, exitCount - 1 do
+    if compareRatios(bestRatio, 0, exits, 8 * k, dx, dy) >= 0 then return false end
+  end
+  return true
+end
+
+-- MISS, INSIDE or HIT for the disc (ax, ay, R2) moving by d against the point (px, py) (a disc
+-- of radius 0). Exact.
+function M.cornerCastStatus(px, py, ax, ay, R2, dx, dy)
+  return discCastStatus(px, py, 0.0, ax, ay, R2, dx, dy)
+end
+
+-- The entry time (unclamped below 1) and unit normal of a hit found by cornerCastStatus.
+function M.cornerEntry(px, py, ax, ay, R2, dx, dy)
+  local t, nx, ny = discEntryDD(px, py, 0.0, ax, ay, R2, dx, dy)
+  if not t then
+    discSetup(px, py, 0.0, ax, ay, R2, dx, dy)
+    t, nx, ny = discEntry()
+  end
+  return t, nx, ny
+end
+
+M.MISS, M.HIT, M.INSIDE = MISS, HIT, INSIDE
+M.windowSteps, M.stepBack, M.COARSE_COUNT = windowSteps, stepBack, #COARSE
+M.checkFinite = checkFinite
+
 return M

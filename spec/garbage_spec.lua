@@ -102,6 +102,14 @@ local CASES = {
     local m = MOVES[i % #MOVES + 1]
     polygon.polygonsCast(LISTS[i % #LISTS + 1], CONVEX[i % #CONVEX + 1], m[1], m[2])
   end,
+  polygonCircleCast = function(i)
+    local c, m = CIRCLES[i % #CIRCLES + 1], MOVES[i % #MOVES + 1]
+    polygon.polygonCircleCast(CONVEX[i % #CONVEX + 1], c[1], c[2], c[3], m[1], m[2])
+  end,
+  ["polygonCircleCast (parts)"] = function(i)
+    local c, m = CIRCLES[i % #CIRCLES + 1], MOVES[i % #MOVES + 1]
+    polygon.polygonCircleCast(LISTS[i % #LISTS + 1], c[1], c[2], c[3], m[1], m[2])
+  end,
 }
 -- the functions of one polygon, over every polygon in turn
 local ONE_POLYGON = {

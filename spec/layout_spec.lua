@@ -46,6 +46,7 @@ describe("the front, polygon.lua", function()
       circleray = { "circleRayCast" },
       closest = { "polygonClosestPoint" },
       casts = { "polygonsCast", "circlesCast" },
+      circlecast = { "polygonCircleCast" },
     }
     local count = 0
     for file, names in pairs(where) do

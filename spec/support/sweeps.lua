@@ -246,4 +246,96 @@ function sweeps.discBefore(t, x1, y1, r1, x2, y2, r2, dx, dy)
   return sign(discValue(Q, P, K, t)) > 0 and compare(mul(new(t), Q), neg(P)) <= 0
 end
 
+-- A moving disc against a convex polygon: the centre X(t) = C + t d and the squared distance
+-- D(t) from X(t) to the closed polygon, which is convex in t (the distance to a convex set is
+-- convex). D is a quadratic between the times where X crosses an edge's line or the line through
+-- an edge's end perpendicular to it (where its nearest feature changes); within such a piece it
+-- is least at an end, or (nearest a vertex v) where X is nearest v. So the least of D over
+-- [0, T] is its least at those candidate times, each a rational num / den, and D at a rational
+-- time is a rational (the polygon's points and X scaled by den): the disc meets the polygon's
+-- interior (D < r^2) somewhere in [0, T] exactly when it does at a candidate. Nothing here is
+-- the library's method (it works from the move's end and swept point, with no candidate times).
+
+-- Whether D(num / den) < r^2 (den > 0): X den = C den + num d against the polygon scaled by den.
+local function discMeetsAt(P, w, C, D, R, num, den)
+  local X = { add(mul(C[1], den), mul(num, D[1])), add(mul(C[2], den), mul(num, D[2])) }
+  local rr = mul(mul(R, R), mul(den, den))
+  local inside = true
+  for i = 1, #P do
+    local a, b = P[i], P[i % #P + 1]
+    local ad, bd = { mul(a[1], den), mul(a[2], den) }, { mul(b[1], den), mul(b[2], den) }
+    local ex, ey = sub(b[1], a[1]), sub(b[2], a[2])
+    local ux, uy = sub(X[1], ad[1]), sub(X[2], ad[2])
+    local side = sign(sub(mul(ex, uy), mul(ey, ux))) * w
+    if side < 0 then inside = false end
+    if sign(ex) ~= 0 or sign(ey) ~= 0 then
+      local along = add(mul(ux, ex), mul(uy, ey))   -- (X - a den).e
+      local lengthSq = add(mul(ex, ex), mul(ey, ey))
+      if sign(along) <= 0 then
+        if compare(add(mul(ux, ux), mul(uy, uy)), rr) < 0 then return true end
+      elseif compare(along, mul(lengthSq, den)) >= 0 then
+        local vx, vy = sub(X[1], bd[1]), sub(X[2], bd[2])
+        if compare(add(mul(vx, vx), mul(vy, vy)), rr) < 0 then return true end
+      else
+        local c = sub(mul(ex, uy), mul(ey, ux))
+        if compare(mul(c, c), mul(rr, lengthSq)) < 0 then return true end
+      end
+    end
+  end
+  return inside
+end
+
+-- Appends num / den (den > 0) when den ~= 0.
+local function candidate(out, num, den)
+  if sign(den) == 0 then return end
+  if sign(den) < 0 then num, den = neg(num), neg(den) end
+  out[#out + 1] = { num, den }
+end
+
+-- Whether the disc (cx, cy, r) moved by t (dx, dy) meets the convex polygon `flat`'s open
+-- interior for some t in [0, T], T = t1 + t2 (exact sum of two doubles >= 0 in all).
+local function discReachConvex(flat, cx, cy, r, dx, dy, t1, t2)
+  local P = points(flat)
+  local w = areaSign(P)
+  if w == 0 then return false end
+  local C, D, R = { new(cx), new(cy) }, { new(dx), new(dy) }, new(r)
+  local ONE = new(1)
+  local T = add(new(t1), new(t2))
+  local times = { { exact.ZERO, ONE }, { T, ONE } }
+  local dd = add(mul(D[1], D[1]), mul(D[2], D[2]))
+  for i = 1, #P do
+    local a, b = P[i], P[i % #P + 1]
+    local ex, ey = sub(b[1], a[1]), sub(b[2], a[2])
+    -- the edge's line: e x (C + t d - a) = 0
+    candidate(times, sub(mul(ex, sub(a[2], C[2])), mul(ey, sub(a[1], C[1]))),
+      sub(mul(ex, D[2]), mul(ey, D[1])))
+    -- the perpendiculars at a and b: (C + t d - p).e = 0
+    local de = add(mul(D[1], ex), mul(D[2], ey))
+    for _, p in ipairs({ a, b }) do
+      candidate(times, add(mul(sub(p[1], C[1]), ex), mul(sub(p[2], C[2]), ey)), de)
+    end
+    -- nearest the vertex a: (C + t d - a).d = 0
+    candidate(times, add(mul(sub(a[1], C[1]), D[1]), mul(sub(a[2], C[2]), D[2])), dd)
+  end
+  for _, c in ipairs(times) do
+    -- within [0, T]: num >= 0 and num <= T den
+    if sign(c[1]) >= 0 and compare(c[1], mul(T, c[2])) <= 0 and discMeetsAt(P, w, C, D, R, c[1], c[2]) then
+      return true
+    end
+  end
+  return false
+end
+
+--- Whether the disc (cx, cy, r) moved by t (dx, dy) meets the open interior of `static` (a convex
+-- polygon or a list of convex parts, flat arrays) for some t in [0, t1 + t2] (t1, t2 doubles,
+-- summed exactly; t2 defaults to 0): t1 = 1 asks whether the move hits, t1 = 0 whether it
+-- starts colliding.
+function sweeps.discReach(static, cx, cy, r, dx, dy, t1, t2)
+  t2 = t2 or 0
+  for _, part in ipairs(type(static[1]) == "table" and static or { static }) do
+    if discReachConvex(part, cx, cy, r, dx, dy, t1, t2) then return true end
+  end
+  return false
+end
+
 return sweeps
