@@ -354,6 +354,13 @@ function evaluate.circleRay(wl, call)
     text = ("wrong %d/%d (beyond 8 eps M or 16 eps)"):format(wrong, wl.n) }
 end
 
+-- The casts' tally: `wrong` of n answers (a miss or hit other than the oracle's, or a hit whose
+-- moved shape collides or whose fraction is beyond 8 eps M of the exact contact).
+local function castTally(wrong, n)
+  return { wrong = wrong, total = n,
+    text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, n) }
+end
+
 -- casts: `wrong` counts hit, miss and overlapped answers other than the exact ones
 -- (spec/support/sweeps.lua), and hits whose fraction leaves the moved polygon colliding or is
 -- beyond 8 eps M / |d| of the exact contact time
@@ -378,8 +385,7 @@ function evaluate.cast(wl, call)
       end
     end
   end
-  return { wrong = wrong, total = wl.n,
-    text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, wl.n) }
+  return castTally(wrong, wl.n)
 end
 
 function evaluate.circleCast(wl, call)
@@ -403,8 +409,7 @@ function evaluate.circleCast(wl, call)
       end
     end
   end
-  return { wrong = wrong, total = wl.n,
-    text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, wl.n) }
+  return castTally(wrong, wl.n)
 end
 
 -- a circle against a polygon: `wrong` counts hit, miss and overlapped answers other than
@@ -430,8 +435,7 @@ function evaluate.polygonCircleCast(wl, call)
       end
     end
   end
-  return { wrong = wrong, total = wl.n,
-    text = ("wrong %d/%d (colliding after the move, or beyond 8 eps M)"):format(wrong, wl.n) }
+  return castTally(wrong, wl.n)
 end
 
 -- nearest points: `wrong` counts answers nearest.check refuses (sign, distance or point beyond

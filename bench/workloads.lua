@@ -408,6 +408,19 @@ function W.casts(count)
   return { P1, P2, DX, DY }
 end
 
+-- The move of a circle starting at (mx, my), at angle t from the target (cx, cy), for the four
+-- kinds of the circles' casts (size: the target's): 1 through the target, 2 passing it by, 3
+-- stopping short, 4 from overlapping, through.
+local function castMotion(kind, cx, cy, mx, my, t, size)
+  if kind == 1 or kind == 4 then
+    return 2 * (cx + uniform(-0.3, 0.3) * size - mx), 2 * (cy + uniform(-0.3, 0.3) * size - my)
+  elseif kind == 2 then
+    local s = t + pi + uniform(0.8, 1.2) * (randint(0, 1) * 2 - 1)
+    return 6 * size * cos(s), 6 * size * sin(s)
+  end
+  return 0.2 * (cx - mx), 0.2 * (cy - my)
+end
+
 -- x1, y1, r1, x2, y2, r2, dx, dy: the same four kinds for circles of radius 5 to 50
 function W.circleCasts(count)
   local A = { {}, {}, {}, {}, {}, {}, {}, {} }
@@ -416,15 +429,7 @@ function W.circleCasts(count)
     local cx, cy, t = uniform(-100, 100), uniform(-100, 100), uniform(0, 2 * pi)
     local distance = kind == 4 and 0.5 * r1 or 3 * (r1 + r2)
     local mx, my = cx + distance * cos(t), cy + distance * sin(t)
-    local dx, dy
-    if kind == 1 or kind == 4 then
-      dx, dy = 2 * (cx + uniform(-0.3, 0.3) * r1 - mx), 2 * (cy + uniform(-0.3, 0.3) * r1 - my)
-    elseif kind == 2 then
-      local s = t + pi + uniform(0.8, 1.2) * (randint(0, 1) * 2 - 1)
-      dx, dy = 6 * r1 * cos(s), 6 * r1 * sin(s)
-    else
-      dx, dy = 0.2 * (cx - mx), 0.2 * (cy - my)
-    end
+    local dx, dy = castMotion(kind, cx, cy, mx, my, t, r1)
     A[1][i], A[2][i], A[3][i], A[4][i], A[5][i], A[6][i], A[7][i], A[8][i] = cx, cy, r1, mx, my, r2, dx, dy
   end
   return A
@@ -440,15 +445,7 @@ function W.polygonCircleCasts(count)
     local r = uniform(0.2, 0.6) * size
     local distance = kind == 4 and 0.5 * size or 3 * size
     local mx, my = cx + distance * cos(t), cy + distance * sin(t)
-    local dx, dy
-    if kind == 1 or kind == 4 then
-      dx, dy = 2 * (cx + uniform(-0.3, 0.3) * size - mx), 2 * (cy + uniform(-0.3, 0.3) * size - my)
-    elseif kind == 2 then
-      local s = t + pi + uniform(0.8, 1.2) * (randint(0, 1) * 2 - 1)
-      dx, dy = 6 * size * cos(s), 6 * size * sin(s)
-    else
-      dx, dy = 0.2 * (cx - mx), 0.2 * (cy - my)
-    end
+    local dx, dy = castMotion(kind, cx, cy, mx, my, t, size)
     A[1][i], A[2][i], A[3][i], A[4][i], A[5][i], A[6][i] = convex(4 + (i - 1) % 5, cx, cy, size), mx, my, r,
       dx, dy
   end
