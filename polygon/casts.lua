@@ -380,6 +380,24 @@ local function turnOf(points, n)
   return w > 0 and 1 or (w < 0 and -1 or 0)
 end
 
+-- The static shape's checks (polygonsCast's points1, polygonCircleCast's points): a Polygon
+-- object's points taken, a flat one of at least 3 finite points and convex, a list of parts
+-- left to its view. Returns the shape, its first entry's type ("table" for a list) and, flat,
+-- its length. Raises at the caller of the public function, which called this one.
+local function checkStatic(fname, argname, points)
+  local kind = type(points) == "table" and type(points[1])
+  if kind ~= "number" then
+    points, kind = resolveShape(fname, argname, points, kind, 3)
+  end
+  local n
+  if kind ~= "table" then
+    n = checkPoints(points, fname, argname, 4)
+    checkFinite(points, n, fname, argname, 4)
+    checkConvex(points, n, fname, argname, 3)
+  end
+  return points, kind, n
+end
+
 -- P2's checks: a flat convex polygon of finite coordinates (a list of parts refused). Returns n2.
 local function checkMoving(fname, points2)
   local kind = type(points2) == "table" and type(points2[1])
@@ -624,16 +642,8 @@ end
 -- nx, ny or false. See polygon.lua for the contract.
 function M.polygonsCast(points1, points2, dx, dy)
   local fname = "polygonsCast"
-  local kind1 = type(points1) == "table" and type(points1[1])
-  if kind1 ~= "number" then
-    points1, kind1 = resolveShape(fname, "points1", points1, kind1, 2)
-  end
-  local n1
-  if kind1 ~= "table" then
-    n1 = checkPoints(points1, fname, "points1", 3)
-    checkFinite(points1, n1, fname, "points1", 3)
-    checkConvex(points1, n1, fname, "points1", 2)
-  end
+  local kind1, n1
+  points1, kind1, n1 = checkStatic(fname, "points1", points1)
   local p2, n2 = checkMoving(fname, points2)
   checkFiniteNumber(dx, fname, "dx")
   checkFiniteNumber(dy, fname, "dy")
@@ -750,6 +760,6 @@ end
 
 M.MISS, M.HIT, M.INSIDE = MISS, HIT, INSIDE
 M.windowSteps, M.stepBack, M.COARSE_COUNT = windowSteps, stepBack, #COARSE
-M.checkFinite = checkFinite
+M.checkFinite, M.checkStatic = checkFinite, checkStatic
 
 return M

@@ -2,13 +2,12 @@
 -- parts (polygonCircleCast). The hit or miss is exact (circle.lua's tests, casts.lua's swept
 -- point and corner discs, and one exact test of the move's end against each edge); the entry
 -- time comes from double doubles, then is stepped back as casts.lua does until the moved
--- circle, rounded as a game moves it, does not collide. Relies on kernel, check, convex, views,
+-- circle, rounded as a game moves it, does not collide. Relies on kernel, check, views,
 -- sat, collide, circle and casts.
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local check = require(_PACKAGE .. ".check")
-local convex = require(_PACKAGE .. ".convex")
 local views = require(_PACKAGE .. ".views")
 local sat = require(_PACKAGE .. ".sat")
 local collide = require(_PACKAGE .. ".collide")
@@ -23,20 +22,17 @@ local powerScale, areaSign, largestMagnitude = kernel.powerScale, kernel.areaSig
   kernel.largestMagnitude
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expSign, expAddSquare = kernel.expCopy, kernel.expSign, kernel.expAddSquare
-local checkPoints, checkFiniteNumber, checkRadius = check.checkPoints, check.checkFiniteNumber,
-  check.checkRadius
-local checkConvex = convex.checkConvex
+local checkFiniteNumber, checkRadius = check.checkFiniteNumber, check.checkRadius
 local listView, call, checkCopy = views.listView, views.call, views.checkCopy
 local unit = sat.unit
-local resolveShape, polygonCircleCollideV = collide.resolveShape, collide.polygonCircleCollideV
+local polygonCircleCollideV = collide.polygonCircleCollideV
 local circleCollision = circle.circleCollision
 local pathMeetsInterior, cornerCastStatus, cornerEntry = casts.pathMeetsInterior,
   casts.cornerCastStatus, casts.cornerEntry
 local HIT = casts.HIT
 local windowSteps, stepBack, COARSE_COUNT = casts.windowSteps, casts.stepBack, casts.COARSE_COUNT
-local checkFinite = casts.checkFinite
+local checkStatic = casts.checkStatic
 
-local type = type
 
 local M = {}
 
@@ -377,16 +373,8 @@ end
 -- fraction, nx, ny or false. See polygon.lua for the contract.
 function M.polygonCircleCast(points, cx, cy, radius, dx, dy)
   local fname = "polygonCircleCast"
-  local kind = type(points) == "table" and type(points[1])
-  if kind ~= "number" then
-    points, kind = resolveShape(fname, "points", points, kind, 2)
-  end
-  local n
-  if kind ~= "table" then
-    n = checkPoints(points, fname, "points", 3)
-    checkFinite(points, n, fname, "points", 3)
-    checkConvex(points, n, fname, "points", 2)
-  end
+  local kind, n
+  points, kind, n = checkStatic(fname, "points", points)
   checkFiniteNumber(cx, fname, "cx")
   checkFiniteNumber(cy, fname, "cy")
   checkRadius(radius, fname, "radius")
