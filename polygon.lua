@@ -52,7 +52,7 @@ local circle      = require(_PACKAGE .. "circle")
 local triangulate = require(_PACKAGE .. "triangulate")
 local transform   = require(_PACKAGE .. "transform")
 local object      = require(_PACKAGE .. "object")
-local raycast     = require(_PACKAGE .. "raycast")
+local rayring     = require(_PACKAGE .. "rayring")
 local circleray   = require(_PACKAGE .. "circleray")
 local closest     = require(_PACKAGE .. "closest")
 local casts       = require(_PACKAGE .. "casts")
@@ -269,7 +269,7 @@ polygon.polygonCircleCollideV = collide.polygonCircleCollideV
 -- @treturn number ny
 -- @raise as @{polygonCircleCollideV} for points (a segment too: it is not a polygon), and when
 -- x1, y1, x2 or y2 is not a finite number
-polygon.polygonRayCast = raycast.polygonRayCast
+polygon.polygonRayCast = rayring.polygonRayCast
 
 --- As @{polygonRayCast}, against the open disc: a tangent ray is a miss. The normal is
 -- (P(fraction) - centre) / radius, within a few ulps. Allocates nothing.

@@ -1,31 +1,23 @@
--- polygon/raycast.lua: rays: where a segment first enters a convex polygon or a list of convex
--- parts (their union); discs are circleray.lua's. Every hit or miss and every choice of edge is an
--- exact sign (kernel's cross); each fraction comes from floating point with an error bound, or
--- from exact expansions where the bound cannot vouch for it. Relies on kernel, check, convex,
--- views, sat's unit and collide's shape resolution.
+-- polygon/raycast.lua: rays against a list of convex parts: where a segment first enters their
+-- union (seams inside it), and the orders along a ray and exact fractions that rayring.lua (one
+-- flat polygon of any shape, and the public polygonRayCast) shares; discs are circleray.lua's.
+-- Every hit or miss and every choice of edge is an exact sign (kernel's cross); each fraction
+-- comes from floating point with an error bound, or from exact expansions where the bound
+-- cannot vouch for it. Relies on kernel, check, views.
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local check = require(_PACKAGE .. ".check")
-local convex = require(_PACKAGE .. ".convex")
 local views = require(_PACKAGE .. ".views")
-local sat = require(_PACKAGE .. ".sat")
-local collide = require(_PACKAGE .. ".collide")
-local rayjit = require(_PACKAGE .. ".rayjit")
 
 local abs, huge, min, max = math.abs, math.huge, math.min, math.max
-local cross, crossExact, CROSS_BOUND, JIT = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND, kernel.JIT
+local cross, crossExact, CROSS_BOUND = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND
 local EPS, twoDiff, twoProduct, powerScale = kernel.EPS, kernel.twoDiff, kernel.twoProduct, kernel.powerScale
 local quotientDD, crossDD = kernel.quotientDD, kernel.crossDD
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expSign = kernel.expCopy, kernel.expSign
-local checkPoints, checkFiniteNumber = check.checkPoints, check.checkFiniteNumber
-local checkConvex = convex.checkConvex
+local checkFiniteNumber = check.checkFiniteNumber
 local listView, call, checkCopy = views.listView, views.call, views.checkCopy
-local unit = sat.unit
-local resolveShape = collide.resolveShape
-
-local type = type
 
 local M = {}
 
@@ -133,25 +125,6 @@ local function convexEntry(points, w, ax, ay, bx, by)
   entryP, entryQ = p, q
   entryKind = atA == 0 and ENTERS_AT_A or (zero and ENTERS_VERTEX or ENTERS_EDGE)
   return ENTERS
-end
-
--- The area sign of a convex polygon that the ray's line crosses (sideWalk found both edges),
--- from two exact turns instead of the shoelace sum: a vertex off the falling edge's line lies
--- on its inner side, and of the rising edge's two ends one lies off it unless the polygon has
--- no area (the two crossings would be one point). 0 for zero area.
-local function crossedTurn(points)
-  local px, py = points[fallP] + 0.0, points[fallP + 1] + 0.0
-  local qx, qy = points[fallQ] + 0.0, points[fallQ + 1] + 0.0
-  -- the rising edge's start, or its end when that start is the falling edge's end (a vertex
-  -- alone on its side: often, for a few vertices), chosen by arithmetic (no side exit)
-  local third = riseP + (riseQ - riseP) * (1 - min(1, abs(riseP - fallQ)))
-  local s = cross(px, py, qx, qy, px, py, points[third] + 0.0, points[third + 1] + 0.0)
-  if s == 0 then
-    third = riseP + riseQ - third
-    s = cross(px, py, qx, qy, px, py, points[third] + 0.0, points[third + 1] + 0.0)
-  end
-  if s > 0 then return 1.0 elseif s < 0 then return -1.0 end
-  return 0.0
 end
 
 -- Fractions. A fraction f is good when A + f d lies within 8 eps M of the exact entry point
@@ -286,254 +259,6 @@ local function entryEstimate(points, p, q, kind, ax, ay, bx, by)
   return t, err
 end
 
--- A convex polygon after the sides' walk found both crossings (fallP .. riseZero): false, or
--- fraction, nx, ny (the entry edge's unit outward normal), by the exact predicates alone.
-local function crossedCast(points, ax, ay, bx, by)
-  local w = crossedTurn(points)
-  if w == 0 then return false end
-  local status = convexEntry(points, w, ax, ay, bx, by)
-  if status == MISS then return false end
-  if status == INSIDE then return 0.0, 0.0, 0.0 end
-  local p, q = entryP, entryQ
-  local f = entryFraction(points, p, q, entryKind, ax, ay, bx, by)
-  local px, py, qx, qy = points[p] + 0.0, points[p + 1] + 0.0, points[q] + 0.0, points[q + 1] + 0.0
-  local nx, ny = unit((qy - py) * w, (px - qx) * w)
-  return f, nx, ny
-end
-
--- A convex polygon whose area sign w (0: not known) and crossing edges (their ends' flat
--- indices; fz, rz: q on the line) the sides' walk found: false, or fraction, nx, ny. The entry
--- edge is the falling one when w > 0. The test of A against the exit edge's line is cross's
--- filter written out; the entry's fraction t, from num / den as in edgeFraction with its bound
--- err (huge where it cannot vouch), decides whether B lies past the entry (t < 1) and whether
--- A lies inside (t < 0), exactly where err keeps t apart from 1 and 0, else cross decides. The
--- fraction is the float one when err keeps the point within 7 eps M (M over A and B), else
--- edgeFractionExact's (ratioAlong's for q). |x| by comparisons: math.abs is a call on PUC Lua.
-local function castFinishPuc(points, w, fp, fq, fz, rp, rq, rz, ax, ay, bx, by)
-  if fp == 0 or rp == 0 then return false end   -- the line misses the open interior
-  if w == 0 then
-    fallP, fallQ, fallZero, riseP, riseQ, riseZero = fp, fq, fz, rp, rq, rz
-    local f, nx, ny = crossedCast(points, ax, ay, bx, by)
-    return f, nx, ny
-  end
-  local p, q, onQ, xp, xq = fp, fq, fz, rp, rq
-  if w < 0 then p, q, onQ, xp, xq = rp, rq, rz, fp, fq end
-  -- A strictly inside the exit edge's line
-  local rx, ry = points[xp] + 0.0, points[xp + 1] + 0.0
-  local sx, sy = points[xq] + 0.0, points[xq + 1] + 0.0
-  local l = (sx - rx) * (ay - ry)
-  local r = (sy - ry) * (ax - rx)
-  local side = l - r
-  if (l > 0 and r > 0) or (l < 0 and r < 0) then
-    local bound = CROSS_BOUND * (l + r)
-    if bound < 0 then bound = -bound end
-    if side < bound and -side < bound then side = cross(rx, ry, sx, sy, rx, ry, ax, ay) end
-  end
-  if side * w <= 0 then return false end
-  -- the entry's fraction
-  local px, py = points[p] + 0.0, points[p + 1] + 0.0
-  local qx, qy = points[q] + 0.0, points[q + 1] + 0.0
-  local dx, dy = bx - ax, by - ay
-  local ex, ey = qx - px, qy - py
-  local nl = (px - ax) * ey
-  local nr = (py - ay) * ex
-  local dl, dr = dx * ey, dy * ex
-  local num, den = nl - nr, dl - dr
-  local t = num / den
-  local numSize = (nl > 0 and nl or -nl) + (nr > 0 and nr or -nr)
-  local denSize = (dl > 0 and dl or -dl) + (dr > 0 and dr or -dr)
-  local rel = CROSS_BOUND * (numSize / (num > 0 and num or -num) + denSize / (den > 0 and den or -den))
-  local err = huge
-  if rel < 2^-20 and numSize > 2^-900 and denSize > 2^-900 and numSize < 2^1000 and denSize < 2^1000 then
-    err = (rel + EPS) * (t > 0 and t or -t) * (1 + 2^-18)
-  end
-  if t - err >= 1 then return false end
-  if t + err >= 1 and cross(px, py, qx, qy, px, py, bx, by) * w <= 0 then return false end
-  if t + err < 0 then return 0.0, 0.0, 0.0 end
-  if t - err <= 0 then
-    local atA = cross(px, py, qx, qy, px, py, ax, ay) * w
-    if atA > 0 then return 0.0, 0.0, 0.0 end
-    if atA == 0 then t, err = 0.0, 0.0 end
-  end
-  local m = ax > 0 and ax or -ax
-  if ay > m then m = ay elseif -ay > m then m = -ay end
-  if bx > m then m = bx elseif -bx > m then m = -bx end
-  if by > m then m = by elseif -by > m then m = -by end
-  if err * ((dx > 0 and dx or -dx) + (dy > 0 and dy or -dy)) > 7 * EPS * m then
-    if onQ then
-      t = pointFraction(qx, qy, ax, ay, bx, by)
-    else
-      t = edgeFractionDD(px, py, qx, qy, ax, ay, bx, by)
-        or edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
-    end
-  end
-  if t > 1 then t = 1.0 elseif t < 0 then t = 0.0 end
-  local nx, ny = unit(ey * w, -ex * w)
-  return t, nx, ny
-end
-
--- LuaJIT's pieces of castConvexJit (rayjit.lua), and the scratch its rarer outcomes read:
--- the segment's ends and the entry edge (numbers: nothing allocated).
-local filterJit8, filterJit16 = rayjit.filterJit8, rayjit.filterJit16
-local sidesJit8, sidesJit16, sidesJitLoop = rayjit.sidesJit8, rayjit.sidesJit16, rayjit.sidesJitLoop
-local finishJit, entryFractionDD = rayjit.finishJit, rayjit.entryFractionDD
-local tailAx, tailAy, tailBx, tailBy, tailP, tailQ = 0.0, 0.0, 0.0, 0.0, 1, 1
-
--- A convex polygon, PUC Lua's: the collision functions' convexity filter (convex.lua's
--- convexFilterPuc, the same numbers: spec/raycast_spec.lua compares them) and the sides' walk
--- in one loop over the vertices, sharing their reads and the loop (on Lua 5.4 the filter alone
--- took longer than a whole ray cast of the naive loop; two loops, a third more than one).
--- When the filter vouches, its turns give the area sign too; else convex.lua's careful check
--- raises or passes the polygon, and crossedTurn finds the sign. Raises at the caller of the
--- public function.
-local TINY = convex.TINY
-
-local function castConvexPuc(points, n, ax, ay, bx, by, fname)
-  local dx = bx - ax
-  local dy = by - ay
-  if n < 6 or (dx == 0 and dy == 0) then
-    checkConvex(points, n, fname, "points", 3)
-    if insideConvex(points, n, ax, ay) then return 0.0, 0.0, 0.0 end   -- a point: inside or not
-    return false
-  end
-  local lo, hi, agree, bsum = huge, -huge, 0, 0
-  local px = points[n - 1] + 0.0
-  local py = points[n] + 0.0
-  local ex = px - points[n - 3]
-  local ey = py - points[n - 2]
-  local prev = lineSide(px, py, ax, ay, bx, by, dx, dy)
-  local prevIndex = n - 1
-  local fp, fq, rp, rq, fz, rz = 0, 0, 0, 0, false, false
-  for i = 1, n - 1, 2 do
-    local cx = points[i] + 0.0
-    local cy = points[i + 1] + 0.0
-    -- the turn at the previous vertex, as convexFilterPuc
-    local fx = cx - px
-    local fy = cy - py
-    local l = ex * fy
-    local r = ey * fx
-    local s = l - r
-    local b = l + r
-    if b < 0 then b = -b end
-    b = CROSS_BOUND * b + TINY
-    bsum = bsum + b
-    if s - b < lo then lo = s - b end
-    if s + b > hi then hi = s + b end
-    local xx = ex * fx
-    if xx > 0 then agree = agree + 1 elseif xx < 0 then agree = agree - 1 end
-    -- the side of this vertex, as lineSide
-    l = dx * (cy - ay)
-    r = dy * (cx - ax)
-    local o = l - r
-    if l > 0 then
-      if r > 0 and o < CROSS_BOUND * (l + r) and -o < CROSS_BOUND * (l + r) then
-        o = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
-      end
-    elseif l < 0 and r < 0 and o < -CROSS_BOUND * (l + r) and -o < -CROSS_BOUND * (l + r) then
-      o = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
-    end
-    if prev > 0 then
-      if o <= 0 then
-        fp = prevIndex
-        fq = i
-        fz = o == 0
-      end
-    elseif prev < 0 and o >= 0 then
-      rp = prevIndex
-      rq = i
-      rz = o == 0
-    end
-    px = cx
-    py = cy
-    ex = fx
-    ey = fy
-    prev = o
-    prevIndex = i
-  end
-  local w = 0.0
-  if agree == n / 2 - 4 and bsum < huge then
-    if lo > 0 then w = 1.0 elseif hi < 0 then w = -1.0 end
-  end
-  if w == 0 then checkConvex(points, n, fname, "points", 3) end   -- raises unless convex
-  local f, nx, ny = castFinishPuc(points, w, fp, fq, fz, rp, rq, rz, ax, ay, bx, by)
-  return f, nx, ny
-end
-
--- A convex polygon by the exact predicates alone, from its sides' exact walk: the rare path of
--- castConvexJit (it takes over no number of the fast path: see finishCodeJit).
-local function castConvexExact(points, n, ax, ay, bx, by)
-  sideWalk(points, n, ax, ay, bx, by, bx - ax, by - ay)
-  if fallP == 0 or riseP == 0 then return false end
-  local f, nx, ny = crossedCast(points, ax, ay, bx, by)
-  return f, nx, ny
-end
-
--- castConvexJit's rarer outcomes (code as finishJit's): the precise fraction, a miss, A inside,
--- or the exact path; the segment's ends and the entry edge from finishJit's scratch.
-local function castTailJit(points, n, code, nx, ny)
-  local ax, ay, bx, by = tailAx, tailAy, tailBx, tailBy
-  if code == 4 then
-    local p, q = tailP, tailQ
-    local px, py, qx, qy = points[p], points[p + 1], points[q], points[q + 1]
-    local t = entryFractionDD(px, py, qx, qy, ax, ay, bx, by)
-      or edgeFractionExact(px, py, qx, qy, ax, ay, bx, by)
-    return min(max(t, 0.0), 1.0), nx, ny
-  end
-  if code == 3 then return false end
-  if code == 2 then return 0.0, 0.0, 0.0 end
-  local f
-  f, nx, ny = castConvexExact(points, n, ax, ay, bx, by)
-  return f, nx, ny
-end
-
--- A convex polygon, LuaJIT's: up to 16 vertices the filter (filterJit8 or 16: the area sign
--- too) and the sides' walk written out, beyond convex.lua's check and the walk's loop (the area
--- sign by crossedTurn then, or where only the careful check vouched); finishJit's code;
--- castConvexExact where a bound cannot vouch. A hit's fraction needs double doubles in about
--- two thirds of the benchmark's hits (the float bound cannot vouch for 7 eps M): entryFractionDD
--- on a side trace of its own.
-local function castConvexJit(points, n, ax, ay, bx, by, fname)
-  local dx, dy = bx - ax, by - ay
-  local fp, fq, rp, rq, sure, w
-  if n >= 6 and n <= 32 and (dx ~= 0 or dy ~= 0) then
-    if n <= 16 then w = filterJit8(points, n) else w = filterJit16(points, n) end
-    if w == 0 then checkConvex(points, n, fname, "points", 3) end   -- raises unless convex
-    if n <= 16 then
-      fp, fq, rp, rq, sure = sidesJit8(points, n, ax, ay, dx, dy)
-    else
-      fp, fq, rp, rq, sure = sidesJit16(points, n, ax, ay, dx, dy)
-    end
-  else
-    checkConvex(points, n, fname, "points", 3)
-    if dx == 0 and dy == 0 then   -- a point: inside or not
-      if insideConvex(points, n, ax, ay) then return 0.0, 0.0, 0.0 end
-      return false
-    end
-    fp, fq, rp, rq, sure = sidesJitLoop(points, n, ax, ay, dx, dy)
-    w = 0
-  end
-  if sure < 0 or max(abs(ax), abs(ay), abs(bx), abs(by)) > 2^400 then
-    local f, nx, ny = castConvexExact(points, n, ax, ay, bx, by)
-    return f, nx, ny
-  end
-  if fp == 0 or rp == 0 then return false end   -- the line misses the open interior
-  if w == 0 then
-    fallP, fallQ, riseP, riseQ = fp, fq, rp, rq
-    w = crossedTurn(points)
-    if w == 0 then return false end
-  end
-  local m = max(abs(points[fp]), abs(points[fp + 1]), abs(points[fq]), abs(points[fq + 1]),
-    abs(points[rp]), abs(points[rp + 1]), abs(points[rq]), abs(points[rq + 1]))
-  local code, t, nx, ny, p, q = 0, 0.0, 0.0, 0.0, 1, 1
-  if m <= 2^400 then code, t, nx, ny, p, q = finishJit(points, w, fp, fq, rp, rq, ax, ay, bx, by) end
-  tailAx, tailAy, tailBx, tailBy, tailP, tailQ = ax, ay, bx, by, p, q
-  if code == 1 then return min(max(t, 0.0), 1.0), nx, ny end
-  local f
-  f, nx, ny = castTailJit(points, n, code, nx, ny)
-  return f, nx, ny
-end
-
-local castConvex = JIT and castConvexJit or castConvexPuc
 
 -- Lists of parts. The shape is the union of the parts, so its interior holds the seams between
 -- them. Along the ray the points of the union's interior are (1) the points inside some part
@@ -976,38 +701,9 @@ local function checkEnds(fname, x1, y1, x2, y2)
   checkFiniteNumber(y2, fname, "y2", 4)
 end
 
--- polygonRayCast(points, x1, y1, x2, y2): where the segment from (x1, y1) to (x2, y2) first
--- enters the open interior of a convex polygon (either winding) or of the union of a list of
--- convex parts: fraction, nx, ny, or false. Touching is not colliding; a segment that starts
--- strictly inside gives 0, 0, 0. Refuses what the collision functions refuse.
-function M.polygonRayCast(points, x1, y1, x2, y2)
-  local fname = "polygonRayCast"
-  local kind = type(points) == "table" and type(points[1])
-  if kind ~= "number" then
-    points, kind = resolveShape(fname, "points", points, kind, 2)
-    if kind == "table" then
-      checkFiniteNumber(x1, fname, "x1")
-      checkFiniteNumber(y1, fname, "y1")
-      checkFiniteNumber(x2, fname, "x2")
-      checkFiniteNumber(y2, fname, "y2")
-      local f, nx, ny = castParts(fname, points, x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0)
-      if not f then return false end
-      return f, nx + 0.0, ny + 0.0   -- + 0.0: a normal of -0 reads as 0
-    end
-  end
-  if not kind then checkPoints(points, fname, "points", 3) end
-  local n = #points
-  if n % 2 ~= 0 then checkPoints(points, fname, "points", 3, kind) end
-  -- the ends' checks written out (four calls to checkFiniteNumber took a tenth of a call on
-  -- Lua 5.4): x - x is 0 for every finite number, NaN for an infinity or NaN
-  if type(x1) ~= "number" or type(y1) ~= "number" or type(x2) ~= "number" or type(y2) ~= "number"
-      or (x1 - x1) + (y1 - y1) + (x2 - x2) + (y2 - y2) ~= 0 then
-    checkEnds(fname, x1, y1, x2, y2)
-  end
-  local f, nx, ny = castConvex(points, n, x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0, fname)
-  if not f then return false end
-  return f, nx + 0.0, ny + 0.0
-end
-
-M.castConvexJit, M.castConvexPuc = castConvexJit, castConvexPuc   -- both bodies, for the spec
+-- What rayring.lua (flat polygons of any shape, and the public polygonRayCast) shares.
+M.lineSide, M.alongOrder, M.entryOrder, M.entryEstimate = lineSide, alongOrder, entryOrder, entryEstimate
+M.pointFraction, M.edgeFractionExact = pointFraction, edgeFractionExact
+M.castParts, M.checkEnds = castParts, checkEnds
+M.ENTERS_EDGE, M.ENTERS_VERTEX, M.ENTERS_AT_A = ENTERS_EDGE, ENTERS_VERTEX, ENTERS_AT_A
 return M

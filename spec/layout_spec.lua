@@ -42,7 +42,7 @@ describe("the front, polygon.lua", function()
       triangulate = { "polygonTriangulate", "polygonConvexParts" },
       transform = { "polygonBounds", "polygonTranslate", "polygonRotate" },
       object = { "validate", "Polygon" },
-      raycast = { "polygonRayCast" },
+      rayring = { "polygonRayCast" },
       circleray = { "circleRayCast" },
       closest = { "polygonClosestPoint" },
       casts = { "polygonsCast", "circlesCast" },

@@ -1,8 +1,9 @@
 -- Issue 30, rays: polygonRayCast against convex polygons and lists of parts, circleRayCast
--- against discs. Hand-computed cases, the refusals, the hard cases (grazing, along edges and one
--- ulp either side, ending on the boundary, starting on it, starting inside, along seams,
--- tangents), each at offsets 0, 1e6 + 0.5, 1e9 and 1e12, then random cases against the oracle
--- (spec/support/rays.lua, exact arithmetic sharing nothing with the library).
+-- against discs (spec/rayring_spec.lua: flat polygons of any shape). Hand-computed cases, the
+-- refusals, the hard cases (grazing, along edges and one ulp either side, ending on the
+-- boundary, starting on it, starting inside, along seams, tangents), each at offsets 0,
+-- 1e6 + 0.5, 1e9 and 1e12, then random cases against the oracle (spec/support/rays.lua, exact
+-- arithmetic sharing nothing with the library).
 local polygon = require "polygon"
 local rays = require "rays"
 local exact = require "exact"
@@ -12,8 +13,7 @@ local tiles = require "tiles"
 local parts = require "parts"
 local callsite = require "callsite"
 local raycast = require "polygon.raycast"
-local rayjit = require "polygon.rayjit"
-local convex = require "polygon.convex"
+local rayring = require "polygon.rayring"
 local oracle = require "oracle"
 
 local cast, circleCast = polygon.polygonRayCast, polygon.circleRayCast
@@ -200,14 +200,15 @@ describe("polygonRayCast", function()
 
   describe("when given what the collision functions refuse", function()
     local BOX = { 50, 10, 70, 10, 70, 30, 50, 30 }
-    it("refuses a concave polygon, naming the vertex and the fix", function()
+    it("refuses a list holding a concave part, naming the vertex and the fix", function()
       local L = { 0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100 }
-      assert.has_error(function() cast(L, 0, 0, 1, 1) end,
-        "polygonRayCast: points is not convex (a reflex turn at vertex 4); split it once with "
-        .. "polygonConvexParts and pass the parts")
       assert.has_error(function() cast({ BOX, L }, 0, 0, 1, 1) end,
         "polygonRayCast: points[2] is not convex (a reflex turn at vertex 4); split it once with "
         .. "polygonConvexParts and pass the parts")
+      -- flat, the same L is taken as it is: along y = 50 from x = 110 to -10 the ray passes the
+      -- notch and enters the arm 0 < x < 20 at x = 20, t = (110 - 20) / 120 = 0.75, through the
+      -- edge (20, 20) -> (20, 100), outward normal (1, 0)
+      assert.are.same({ 0.75, 1, 0 }, { cast(L, 110, 50, -10, 50) })
     end)
 
     it("refuses fewer than 3 points, point tables and strings", function()
@@ -609,14 +610,14 @@ describe("rays, random cases against the oracle", function()
   end)
 end)
 
--- The two bodies of the convex engine (LuaJIT's and PUC Lua's), each on every interpreter.
-describe("polygonRayCast's two bodies", function()
+-- The three bodies of the flat engine (LuaJIT's and PUC Lua's fast paths, and the exact path
+-- that both fall back on), each on every interpreter, on convex polygons against the oracle.
+describe("polygonRayCast's flat bodies on convex polygons", function()
   it("agree with the oracle and with each other, decision for decision", function()
     local rng = prng.new(3005)
     for round = 1, 300 do
       local o = OFFSETS[round % #OFFSETS + 1]
       local size = rng:pick({ 1, 10, 100 })
-      -- 3 to 20 vertices: each of LuaJIT's walks (8 and 16 slots written out, a loop beyond)
       local points = shapes.convex(rng, rng:int(3, 20), o, o, size, 0.4)
       if rng:float() < 0.5 then points = shapes.reverse(points) end
       for _ = 1, 4 do
@@ -628,61 +629,30 @@ describe("polygonRayCast's two bodies", function()
           if rng:float() < 0.3 then ax, ay = points[k], points[k + 1] end
           if rng:float() < 0.5 then bx, by = points[j], points[j + 1] end
         end
-        local entry = rays.convexEntry(points, ax, ay, bx, by)
-        local n = #points
-        local answers = {}
-        for _, body in ipairs({ raycast.castConvexJit, raycast.castConvexPuc }) do
-          local f, nx, ny = body(points, n, ax, ay, bx, by, "polygonRayCast")
-          local ok, message = agrees(entry, f, nx, ny, ax, ay, bx, by)
-          assert(ok, message)
-          answers[#answers + 1] = { f and true, nx, ny }
+        if ax ~= bx or ay ~= by then
+          local entry = rays.convexEntry(points, ax, ay, bx, by)
+          local n = #points
+          local answers = {}
+          for _, body in ipairs({ rayring.castRingJit, rayring.castRingPuc, rayring.castRingExact }) do
+            local f, nx, ny = body(points, n, ax, ay, bx, by)
+            local ok, message = agrees(entry, f, nx, ny, ax, ay, bx, by)
+            assert(ok, message)
+            answers[#answers + 1] = f and (f == 0 and nx == 0 and "inside" or "hit") or "miss"
+          end
+          assert.are.same({ answers[1], answers[1] }, { answers[2], answers[3] })
         end
-        assert.are.same(answers[1], answers[2])
-      end
-    end
-  end)
-
-  it("refuse what convex.lua refuses, with its message (PUC Lua's runs its filter itself)", function()
-    local rng = prng.new(3006)
-    for round = 1, 400 do
-      -- polygons that wind twice, stars (mostly concave), convex polygons with a repeated vertex
-      local points
-      if round % 3 == 0 then   -- winding twice, every turn the same way (a pentagram and kin)
-        local m = 2 * rng:int(2, 4) + 1
-        points = {}
-        for i = 1, m do
-          local t = (i - 1 + rng:range(-0.1, 0.1)) * 4 * math.pi / m
-          points[2 * i - 1], points[2 * i] = 10 * math.cos(t), 10 * math.sin(t)
-        end
-      elseif round % 3 == 1 then
-        points = shapes.star(rng, rng:int(3, 8), 0, 0, 10)
-      else
-        points = shapes.convex(rng, rng:int(3, 8), 0, 0, 10, 0.4)
-        local k = 2 * rng:int(1, #points / 2) - 1
-        table.insert(points, k, points[k + 1])   -- a vertex repeated
-        table.insert(points, k, points[k + 1])
-      end
-      local n = #points
-      local expected, message = pcall(convex.checkConvex, points, n, "polygonRayCast", "points", 1)
-      for _, body in ipairs({ raycast.castConvexJit, raycast.castConvexPuc }) do
-        local ok, err = pcall(body, points, n, -20, 1, 20, 2, "polygonRayCast")
-        assert.are.equal(expected, ok)
-        if not ok then assert.are.equal(message:gsub("^.-: polygonRayCast", "polygonRayCast"),
-          (tostring(err):gsub("^.-: polygonRayCast", "polygonRayCast"))) end
       end
     end
   end)
 end)
 
--- LuaJIT's convex engine takes up to 16 vertices through its own copy of the collision
--- functions' convexity filter and a sides' walk, both written out (rayjit.filterJit8 and 16,
--- sidesJit8 and 16). The filter must vouch exactly where convex.lua's does, never for a shape
--- that is not convex, with the area's sign; the walk's crossing edges must be the exact ones
--- wherever it is sure.
-describe("rays, hard cases: the fused filter on polygons convex or reflex by an ulp", function()
+-- Convex polygons with one vertex moved onto the line of its neighbours, then nudged by an ulp
+-- or three (collinear, reflex or convex by a hair), rays from anywhere and through vertices:
+-- every body against the oracle's rings (the polygon taken as it is: no convexity needed).
+describe("rays, hard cases: polygons convex or reflex by an ulp", function()
   -- A convex polygon of 3 to 16 integer vertices with one vertex moved to the midpoint of its
-  -- neighbours (exact: their coordinates' sums are even), then nudged by 0 to 3 ulps in x or y:
-  -- collinear, reflex or convex by a hair. Sometimes a vertex repeated, or all of it at an offset.
+  -- neighbours (exact: their coordinates' sums are even), then nudged by 0 to 3 ulps in x or y.
+  -- Sometimes a vertex repeated, or all of it at an offset.
   local function nearDegenerate(rng)
     local m = rng:int(3, 16)
     local points = {}
@@ -710,54 +680,34 @@ describe("rays, hard cases: the fused filter on polygons convex or reflex by an 
     return moved(points, o), o
   end
 
-  -- The exact crossing edges of the sides' walk: the ends (flat indices) of the edge where the
-  -- exact side falls from > 0 to <= 0, and of the one where it rises from < 0 to >= 0 (0, 0 when
-  -- there is none).
-  local function exactCrossings(points, ax, ay, bx, by)
-    local n = #points
-    local fp, fq, rp, rq = 0, 0, 0, 0
-    local prevIndex = n - 1
-    local prev = oracle.orient(ax, ay, bx, by, points[n - 1], points[n])
-    for i = 1, n - 1, 2 do
-      local side = oracle.orient(ax, ay, bx, by, points[i], points[i + 1])
-      if prev > 0 and side <= 0 then fp, fq = prevIndex, i end
-      if prev < 0 and side >= 0 then rp, rq = prevIndex, i end
-      prev, prevIndex = side, i
-    end
-    return fp, fq, rp, rq
-  end
-
-  it("vouches exactly where convex.lua's filter does, and only for convex polygons", function()
+  it("agree with the oracle, through vertices and along edges too", function()
     local rng = prng.new(3007)
-    local vouched, refused = 0, 0
-    for _ = 1, 2000 do
+    local hits = 0
+    for _ = 1, 1500 do
       local points, o = nearDegenerate(rng)
       local n = #points
-      if n >= 6 and n <= 32 then
-        local ax, ay = o + rng:range(-1500, 1500), o + rng:range(-1500, 1500)
-        local bx, by = o + rng:range(-1500, 1500), o + rng:range(-1500, 1500)
-        local filter = n <= 16 and rayjit.filterJit8 or rayjit.filterJit16
-        local sides = n <= 16 and rayjit.sidesJit8 or rayjit.sidesJit16
-        local w = filter(points, n)
-        local fp, fq, rp, rq, sure = sides(points, n, ax, ay, bx - ax, by - ay)
-        assert.are.equal(convex.convexFilterJit(points, n), w ~= 0)
-        if w ~= 0 then
-          vouched = vouched + 1
-          assert.are.equal("convex", oracle.polygonType(points))
-          assert.are.equal(rays.areaSign(points), w)
+      local ax, ay = o + rng:range(-1500, 1500), o + rng:range(-1500, 1500)
+      local bx, by = o + rng:range(-1500, 1500), o + rng:range(-1500, 1500)
+      local pick = rng:float()
+      if pick < 0.3 then   -- through a vertex: B beyond it on the line from A
+        local k = 2 * rng:int(1, n / 2) - 1
+        bx, by = 2 * points[k] - ax, 2 * points[k + 1] - ay
+      elseif pick < 0.45 then   -- along an edge, from before it to past it
+        local k = 2 * rng:int(1, n / 2) - 1
+        local j = (k + 1) % n + 1
+        local ex, ey = points[j] - points[k], points[j + 1] - points[k + 1]
+        ax, ay, bx, by = points[k] - ex, points[k + 1] - ey, points[j] + ex, points[j + 1] + ey
+      end
+      if ax ~= bx or ay ~= by then
+        local entry = rays.ringsEntry({ points }, ax, ay, bx, by)
+        if type(entry) == "table" then hits = hits + 1 end
+        for _, body in ipairs({ rayring.castRingJit, rayring.castRingPuc, rayring.castRingExact }) do
+          local f, nx, ny = body(points, n, ax, ay, bx, by)
+          local ok, message = agrees(entry, f, nx, ny, ax, ay, bx, by)
+          assert(ok, message)
         end
-        if sure >= 0 then
-          local efp, efq, erp, erq = exactCrossings(points, ax, ay, bx, by)
-          assert.are.same({ efp, efq, erp, erq }, { fp, fq, rp, rq })
-        end
-        -- and the engine refuses exactly what convex.lua refuses
-        local expected = pcall(convex.checkConvex, points, n, "polygonRayCast", "points", 1)
-        local ok = pcall(raycast.castConvexJit, points, n, ax, ay, bx, by, "polygonRayCast")
-        assert.are.equal(expected, ok)
-        if not ok then refused = refused + 1 end
       end
     end
-    -- both ways taken often (the generator's reach, not a property of the library)
-    assert.is_true(vouched > 300 and refused > 100, ("vouched %d, refused %d"):format(vouched, refused))
+    assert.is_true(hits > 300, "hits " .. hits)   -- (the generator's reach)
   end)
 end)
