@@ -250,14 +250,16 @@ polygon.polygonCircleCollideV = collide.polygonCircleCollideV
 --- Rays
 -- @section raycast
 
---- Where the segment from (x1, y1) to (x2, y2) first enters the open interior of a convex
--- polygon (either winding) or of the union of a list of convex parts: line of sight, hitscan,
--- ground probes. Touching is not colliding (grazing a vertex or running along an edge is a
--- miss), and a seam between parts never stops a ray: one along a seam enters where the seam
--- meets the outline. The hit or miss and the edge are exact; the point at `fraction` lies
--- within 8 eps M of the exact entry point (M over the segment's ends). Allocates nothing.
+--- Where the segment from (x1, y1) to (x2, y2) first enters the open interior of a polygon of
+-- any shape (convex or concave, either winding, self-intersecting: its interior by the crossing
+-- rule, even-odd, as @{polygonContains}, without the boundary) or of the union of a list of
+-- convex parts: line of sight, hitscan, ground probes; a concave level outline needs no split.
+-- Touching is not colliding (grazing a vertex or running along an edge is a miss), and a seam
+-- between parts never stops a ray: one along a seam enters where the seam meets the outline.
+-- The hit or miss and the edge are exact; the point at `fraction` lies within 8 eps M of the
+-- exact entry point (M over the segment's ends). Allocates nothing.
 -- @function polygonRayCast
--- @tparam table points flat array, or a list of convex parts
+-- @tparam table points flat array of 3 or more points, or a list of convex parts
 -- @number x1
 -- @number y1
 -- @number x2
@@ -267,8 +269,9 @@ polygon.polygonCircleCollideV = collide.polygonCircleCollideV
 -- @treturn number nx, the unit outward normal of the outline's edge entered (at a vertex,
 -- either edge's)
 -- @treturn number ny
--- @raise as @{polygonCircleCollideV} for points (a segment too: it is not a polygon), and when
--- x1, y1, x2 or y2 is not a finite number
+-- @raise as @{polygonCircleCollideV} for points, save that a flat polygon need not be convex
+-- (a list's parts must be; a segment is refused: it is not a polygon), and when x1, y1, x2 or
+-- y2 is not a finite number
 polygon.polygonRayCast = rayring.polygonRayCast
 
 --- As @{polygonRayCast}, against the open disc: a tangent ray is a miss. The normal is

@@ -195,6 +195,8 @@ workload("rMiss", "convex 4-12, segments passing by", W.rays(SIZES.circles, { 2 
 workload("rFar", "convex 4-12, segments, mixed, translated by 1e6", { shapes.translateEach(segments[1], 1e6,
   -0.6e6), W.shift(segments[2], 1e6), W.shift(segments[3], -0.6e6), W.shift(segments[4], 1e6),
   W.shift(segments[5], -0.6e6) })
+workload("rConcave", "stars 8-16 (concave, flat), segments: 1/4 through, 1/4 passing by, 1/4 short, "
+  .. "1/4 from near the middle", W.concaveRays(SIZES.circles))
 workload("crMix", "discs, segments: 1/4 through, passing, short, from inside", W.circleRays(SIZES.circles))
 workload("scMix", "convex 4-8 static, 4-6 moving: 1/4 hit, 1/4 pass by, 1/4 short, 1/4 overlapped",
          W.casts(SIZES.circles))
@@ -322,16 +324,22 @@ local function rayError(wl, call, want)
     :format(wrong, wl.n, quantile(fracs, 1) or 0, quantile(normals, 1) or 0) }
 end
 
-function evaluate.ray(wl, call)
-  if not wl.refs.ray then   -- (refs passes four columns; a segment takes five)
-    local a, list = wl.args, {}
-    for i = 1, wl.n do list[i] = rays.convexEntry(a[1][i], a[2][i], a[3][i], a[4][i], a[5][i]) or false end
-    wl.refs.ray = list
+-- ray: convex polygons, by rays.convexEntry; rayRings: any simple flat polygon (rConcave's
+-- stars), by rays.ringsEntry over its one ring (even-odd, as polygonContains)
+local function rayEvaluator(key, entry)
+  return function(wl, call)
+    if not wl.refs[key] then   -- (refs passes four columns; a segment takes five)
+      local a, list = wl.args, {}
+      for i = 1, wl.n do list[i] = entry(a[1][i], a[2][i], a[3][i], a[4][i], a[5][i]) or false end
+      wl.refs[key] = list
+    end
+    local want = {}
+    for i = 1, wl.n do want[i] = wl.refs[key][i] or nil end
+    return rayError(wl, call, want)
   end
-  local want = {}
-  for i = 1, wl.n do want[i] = wl.refs.ray[i] or nil end
-  return rayError(wl, call, want)
 end
+evaluate.ray = rayEvaluator("ray", rays.convexEntry)
+evaluate.rayRings = rayEvaluator("rayRings", function(p, ...) return rays.ringsEntry({ p }, ...) end)
 
 -- discs: `wrong` counts hit, miss and start-inside answers other than the exact ones, and
 -- entries whose fraction is beyond 8 eps M or whose normal is beyond 16 eps of exact
@@ -501,6 +509,7 @@ row("polygonCircleCollideV", "ciIn", "v3", "circleV")
 row("projectCircle", "pcOrd", "num2", "none")
 row("validate", "ord", "bool", "valid", "validate")
 for _, k in ipairs({ "rMix", "rHit", "rMiss", "rFar" }) do row("polygonRayCast", k, "v3", "ray") end
+row("polygonRayCast", "rConcave", "v3", "rayRings")   -- any flat polygon (no target)
 row("circleRayCast", "crMix", "v3", "circleRay")
 row("polygonClosestPoint", "npOrd", "v3", "nearest")
 row("polygonsCast", "scMix", "v3", "cast")

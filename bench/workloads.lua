@@ -280,15 +280,22 @@ end
 ---------------------------------------------------------------------------------------------
 -- Rays and nearest points (issue 30)
 ---------------------------------------------------------------------------------------------
--- points, x1, y1, x2, y2: a convex polygon of 4 to 12 vertices and a segment from 3 sizes away.
--- kinds: 1 through the polygon (to beyond a point near its middle), 2 passing it by (its line
--- misses), 3 stopping short of it, 4 from inside it, out
-function W.rays(count, kinds)
+-- points, x1, y1, x2, y2: a convex polygon of 4 to 12 vertices (concave: a star of 8 to 16,
+-- mostly concave, its middle its centre) and a segment from 3 sizes away. kinds: 1 through the
+-- polygon (to beyond a point near its middle), 2 passing it by (its line misses), 3 stopping
+-- short of it, 4 from near its middle (inside it but for a few stars), out
+function W.rays(count, kinds, concave)
   local P, X1, Y1, X2, Y2 = {}, {}, {}, {}, {}
   for i = 1, count do
     local kind, size = kinds[(i - 1) % #kinds + 1], uniform(10, 50)
-    local poly = convex(4 + (i - 1) % 9, uniform(-100, 100), uniform(-100, 100), size)
-    local mx, my = mean(poly)
+    local poly, mx, my
+    if concave then
+      mx, my = uniform(-100, 100), uniform(-100, 100)
+      poly = star(8 + (i - 1) % 9, mx, my, size)
+    else
+      poly = convex(4 + (i - 1) % 9, uniform(-100, 100), uniform(-100, 100), size)
+      mx, my = mean(poly)
+    end
     local t = uniform(0, 2 * pi)
     local ax, ay = mx + 3 * size * cos(t), my + 3 * size * sin(t)
     local bx, by
@@ -308,6 +315,16 @@ function W.rays(count, kinds)
     P[i], X1[i], Y1[i], X2[i], Y2[i] = poly, ax, ay, bx, by
   end
   return { P, X1, Y1, X2, Y2 }
+end
+
+-- W.rays' four kinds against stars (concave flat polygons), drawn from a seed of their own so
+-- that the workloads made after them keep their inputs.
+function W.concaveRays(count)
+  local shared = rng
+  rng = prng.new(20261129)
+  local list = W.rays(count, { 1, 2, 3, 4 }, true)
+  rng = shared
+  return list
 end
 
 -- A new array of every value plus d (rounded as a game moves things).

@@ -376,3 +376,107 @@ describe("the convexity check on generated shapes", function()
     assert.is_true(sure > 300, ("the filter vouched for %d"):format(sure))
   end)
 end)
+
+-- polygonRayCast takes a flat polygon of any shape (issue 30: a concave level outline needs no
+-- split): the shapes the collision functions refuse above are answered, their inside by the
+-- crossing rule, even-odd, as polygonContains (without the boundary); a list of parts still
+-- holds convex parts only, and fewer than 3 points is still a refusal.
+describe("polygonRayCast", function()
+  local EPS = 2 ^ -53
+
+  -- Asserts a hit at the exact fraction t (within the contract's 8 eps M along the segment, M
+  -- over its ends) through an edge of unit outward normal (mx, my) (within 16 eps a component).
+  local function hits(t, mx, my, points, ax, ay, bx, by)
+    local f, nx, ny = polygon.polygonRayCast(points, ax, ay, bx, by)
+    assert.is_number(f)
+    local M = math.max(math.abs(ax), math.abs(ay), math.abs(bx), math.abs(by))
+    local length = math.sqrt((bx - ax) ^ 2 + (by - ay) ^ 2)
+    assert.near(t, f, 8 * EPS * M / length)
+    assert.near(mx, nx, 16 * EPS)
+    assert.near(my, ny, 16 * EPS)
+  end
+
+  describe("when a flat polygon is not convex", function()
+    it("takes the issue's L: a ray across the notch enters the far arm", function()
+      -- leftward along y = 50 from x = 110: the notch (x > 20, y > 20) is outside, the left arm
+      -- is entered at its edge (20, 20) -> (20, 100), outward +x: t = (110 - 20) / 120 = 0.75
+      -- (a convex test would stop at the hull's edge x + y = 120, x = 70, t = 1/3)
+      hits(0.75, 1, 0, L, 110, 50, -10, 50)
+      -- along x + y = 120 from (30, 90) to (90, 30): x > 20 and y > 20 all the way: a miss
+      assert.are.equal(false, polygon.polygonRayCast(L, 30, 90, 90, 30))
+      -- from (10, 50), strictly inside the left arm
+      assert.are.same({ 0, 0, 0 }, { polygon.polygonRayCast(L, 10, 50, 200, 50) })
+      -- the Polygon object of the L, for its points
+      hits(0.75, 1, 0, polygon.Polygon.new(L), 110, 50, -10, 50)
+    end)
+
+    it("takes a pentagram, whose middle (wound round twice) is outside by even-odd", function()
+      -- (10,0), (16,20), (0,7), (20,7), (4,20). Along y = 10 the edges cross at
+      -- (4,20)->(10,0): x = 10 - 6 (10 / 20) = 7; (10,0)->(16,20): x = 10 + 6 (10 / 20) = 13;
+      -- (16,20)->(0,7): x = 16 - 16 (10 / 13) = 48 / 13; (20,7)->(4,20): x = 20 - 16 (3 / 13) =
+      -- 212 / 13: inside on (48/13, 7) and (13, 212/13), the middle (7, 13) outside. From
+      -- (10, 10) rightward to (30, 10): in at x = 13, t = 3 / 20, through (10,0)->(16,20),
+      -- direction (6, 20), the arm to its right (+x): outward (-20, 6) / sqrt(436)
+      local star = { 10, 0, 16, 20, 0, 7, 20, 7, 4, 20 }
+      local s = math.sqrt(436)
+      hits(0.15, -20 / s, 6 / s, star, 10, 10, 30, 10)
+      hits(0.15, -20 / s, 6 / s, shapes.reverse(star), 10, 10, 30, 10)   -- either winding
+    end)
+
+    it("takes a bow tie (zero signed area, but it covers two triangles)", function()
+      -- (0,0), (10,0), (0,10), (10,10) cross at (5, 5); the lower triangle lies between
+      -- x = 10 - y and x = y: along y = 8, x from 2 to 8. From (-5, 8) to (15, 8): in at x = 2,
+      -- t = 7 / 20, through (10,0)->(0,10), outward away from the triangle: -(1, 1) / sqrt(2)
+      local r = math.sqrt(0.5)
+      hits(0.35, -r, -r, { 0, 0, 10, 0, 0, 10, 10, 10 }, -5, 8, 15, 8)
+      -- between the triangles, along y = 5 from (-5, 5) to (15, 5): only the crossing point
+      -- (5, 5) is touched (the triangles' apexes): a miss
+      assert.are.equal(false, polygon.polygonRayCast({ 0, 0, 10, 0, 0, 10, 10, 10 }, -5, 5, 15, 5))
+    end)
+
+    it("takes a spike and repeated vertices", function()
+      -- the square (0,0)-(10,10) with a spike at vertex 3 folding back along x = 10: from
+      -- (20, 3) leftward to (-5, 3), in at x = 10, t = 10 / 25; three edges run through (10, 3)
+      -- both ways, and the boundary there is the square's side, outward +x
+      hits(0.4, 1, 0, { 0, 0, 10, 0, 10, 5, 10, -5, 10, 10, 0, 10 }, 20, 3, -5, 3)
+      -- the L with its first and fourth vertices repeated: the same answer as the L
+      hits(0.75, 1, 0, { 0, 0, 0, 0, 100, 0, 100, 20, 20, 20, 20, 20, 20, 100, 0, 100 }, 110, 50, -10, 50)
+    end)
+
+    it("takes every generated polygon, concave ones too, without an error", function()
+      local rng = prng.new(3030)
+      local concave = 0
+      for k = 1, 300 do
+        local m, size = rng:int(3, 16), rng:pick({ 1, 10, 100 })
+        local ox, oy = rng:pick({ 0, 1e6 }), rng:pick({ 0, 0.5 })
+        local p = k % 2 == 0 and shapes.star(rng, m, ox, oy, size) or shapes.convex(rng, m, ox, oy, size, 0.3)
+        if oracle.polygonType(p) == "concave" then concave = concave + 1 end
+        local ok, err = pcall(polygon.polygonRayCast, p, ox - 2 * size, oy, ox + 2 * size, oy + size)
+        assert.is_true(ok, tostring(err))
+      end
+      assert.is_true(concave > 100, ("%d concave"):format(concave))
+    end)
+  end)
+
+  describe("when a part of a list is not convex", function()
+    it("refuses it by its index, naming the reflex vertex and the fix", function()
+      local list = { parts.box(200, 200, 10, 10), L }
+      assert.has_error(function() polygon.polygonRayCast(list, 110, 50, -10, 50) end,
+        "polygonRayCast: points[2] is not convex (a reflex turn at vertex 4); split it once with "
+        .. "polygonConvexParts and pass the parts")
+      local ok, err = callsite.raisesAtCaller(polygon.polygonRayCast, { { L }, 110, 50, -10, 50 })
+      assert.is_true(ok, err)
+      -- the L split by polygonConvexParts is taken, with the flat L's answer
+      hits(0.75, 1, 0, assert(polygon.polygonConvexParts(L)), 110, 50, -10, 50)
+    end)
+  end)
+
+  describe("when a shape has fewer than 3 points", function()
+    it("refuses a segment, saying it is one (no pointer to itself)", function()
+      assert.has_error(function() polygon.polygonRayCast({ 0, 0, 100, 100 }, 0, 50, 100, 50) end,
+        "polygonRayCast: points has 2 points: a segment; a polygon needs at least 3")
+      local ok, err = callsite.raisesAtCaller(polygon.polygonRayCast, { { 0, 0, 100, 100 }, 0, 50, 100, 50 })
+      assert.is_true(ok, err)
+    end)
+  end)
+end)
