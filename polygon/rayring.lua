@@ -53,6 +53,12 @@ local M = {}
 
 local TINY = 2^-900   -- sizes below it are taken for error by the float bounds
 
+-- A fraction f is good when A + f d lies within 8 eps M of the exact entry point (M the largest
+-- coordinate magnitude of A and B): |f - t| |d| <= 8 eps M. The float fraction is kept when its
+-- error bound times |d| (|d| within 2 eps, and the product's rounding, inside the factor
+-- 1 + 2^-40) stays below PRECISE M; else double doubles or exact expansions give it within eps.
+local PRECISE = 7.75 * EPS
+
 -- The entry fraction t = a / (a - b) across the edge p -> q (a = g(A), b = g(B), of opposite
 -- signs) from double doubles: every difference split exactly (TwoDiff), each determinant the
 -- exact difference of its two main products plus its first-order terms (what is dropped is
@@ -132,7 +138,7 @@ local function twoCrossingsPuc(points, p1, q1, s1, p2, q2, s2, ax, ay, bx, by)
   if bx > m then m = bx elseif -bx > m then m = -bx end
   if by > m then m = by elseif -by > m then m = -by end
   local dx, dy = bx - ax, by - ay
-  if err * ((dx > 0 and dx or -dx) + (dy > 0 and dy or -dy)) > 7 * EPS * m then
+  if err * sqrt(dx * dx + dy * dy) * (1 + 2^-40) > PRECISE * m then
     t = entryFractionPrecise(points, p, q, ax, ay, bx, by)
   end
   local nx, ny = unit(-s * ey, s * ex)
@@ -176,7 +182,7 @@ local function twoCrossingsJit(points, p1, q1, s1, p2, q2, s2, ax, ay, bx, by)
   local t = enter1 * t1 + enter2 * t2
   local err = enter1 * err1 + enter2 * err2
   local dx, dy = bx - ax, by - ay
-  local precise = positive(7 * EPS * max(abs(ax), abs(ay), abs(bx), abs(by))
+  local precise = positive(PRECISE * max(abs(ax), abs(ay), abs(bx), abs(by))
     - err * sqrt(dx * dx + dy * dy) * (1 + 2^-40))
   local code = sure * (3 * max(aN1 * aN2, bP1 * bP2) + 2 * (aN1 * aP2 + aN2 * aP1)
     + (enter1 + enter2) * (4 - 3 * precise))
