@@ -12,7 +12,6 @@ local shapes = require "shapes"
 local tiles = require "tiles"
 local parts = require "parts"
 local callsite = require "callsite"
-local raycast = require "polygon.raycast"
 local rayring = require "polygon.rayring"
 local oracle = require "oracle"
 
@@ -324,7 +323,7 @@ end)
 
 -- A ray crossing an edge at a shallow angle: the float fraction's error grows as 1 / sin of the
 -- angle, past 8 eps M at the origin's scale, so the fraction must come from the precise paths
--- (LuaJIT's double doubles, PUC Lua's bound then expansions). Both bodies, against the oracle.
+-- (double doubles, then expansions). The three flat bodies, against the oracle.
 describe("rays, hard cases: crossing an edge at a shallow angle", function()
   it("gives the fraction within 8 eps M at angles down to 1e-12", function()
     local rng = prng.new(3008)
@@ -357,8 +356,9 @@ describe("rays, hard cases: crossing an edge at a shallow angle", function()
       local n = #points
       if oracle.polygonType(points) ~= "convex" then points = nil end   -- turned out of convex
       local entry = points and rays.convexEntry(points, ax, ay, bx, by)
-      for _, body in ipairs(points and { raycast.castConvexJit, raycast.castConvexPuc } or {}) do
-        local f, nx, ny = body(points, n, ax, ay, bx, by, "polygonRayCast")
+      local bodies = { rayring.castRingJit, rayring.castRingPuc, rayring.castRingExact }
+      for _, body in ipairs(points and bodies or {}) do
+        local f, nx, ny = body(points, n, ax, ay, bx, by)
         local ok, message = agrees(entry, f, nx, ny, ax, ay, bx, by)
         assert(ok, message)
       end
