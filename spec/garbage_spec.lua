@@ -78,6 +78,16 @@ local CASES = {
     polygon.polygonRayCast(CONVEX[i % #CONVEX + 1], r[1], r[2], r[3], r[4])
   end,
   -- and over lists of parts: seams crossed and followed, corners where parts meet
+  -- flat polygons of any shape: the L, a bow tie, a comb whose teeth the rows y = 0, 5, 10 run
+  -- along (the exact path: vertices on the ray's line, more than two crossings)
+  ["polygonRayCast (any flat polygon)"] = (function()
+    local shapes = { L, { 0, 0, 10, 10, 10, 0, 0, 10 },
+      { 0, 0, 20, 0, 20, 10, 15, 10, 15, 5, 10, 5, 10, 10, 5, 10, 5, 5, 0, 5 } }
+    return function(i)
+      local r = RAYS[i % #RAYS + 1]
+      polygon.polygonRayCast(shapes[i % #shapes + 1], r[1], r[2], r[3], r[4])
+    end
+  end)(),
   ["polygonRayCast (parts)"] = function(i)
     local r = RAYS[i % #RAYS + 1]
     polygon.polygonRayCast(LISTS[i % #LISTS + 1], r[1], r[2], r[3], r[4])
