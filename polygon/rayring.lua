@@ -236,15 +236,28 @@ local function eventAgainst(points, i, zx, zy, dx, dy)
   return 0
 end
 
--- Whether an edge along L covers the stretch just past the point z (vertex index v of the
--- points, or 0 for A): some cover with lo <= z < hi. With touch, whether z lies on a cover
--- at all (lo <= z <= hi).
+-- Whether an edge along L covers the stretch just past A: some cover with lo <= A < hi. With
+-- touch, whether A lies on a cover at all (lo <= A <= hi).
 local function coveredAt(points, covers, zx, zy, dx, dy, touch)
   for c = 1, covers do
     local lo, hi = covLo[c], covHi[c]
     if alongOrder(points[lo] + 0.0, points[lo + 1] + 0.0, zx, zy, dx, dy) <= 0 then
       local o = alongOrder(zx, zy, points[hi] + 0.0, points[hi + 1] + 0.0, dx, dy)
       if o < 0 or (touch and o == 0) then return true end
+    end
+  end
+  return false
+end
+
+-- Whether an edge along L covers the stretch just past event i's point z: some cover with
+-- lo <= z < hi (z may be a crossing inside an edge that meets an edge along L: a polygon that
+-- crosses itself there).
+local function coveredPast(points, covers, i, dx, dy)
+  for c = 1, covers do
+    local lo, hi = covLo[c], covHi[c]
+    if eventAgainst(points, i, points[lo] + 0.0, points[lo + 1] + 0.0, dx, dy) >= 0
+        and eventAgainst(points, i, points[hi] + 0.0, points[hi + 1] + 0.0, dx, dy) < 0 then
+      return true
     end
   end
   return false
@@ -366,7 +379,7 @@ local function castRingExact(points, n, ax, ay, bx, by)
       if evKind[first] == ENTERS_VERTEX then
         zx, zy = points[evQ[first]] + 0.0, points[evQ[first] + 1] + 0.0
       end
-      if parity % 2 == 1 and (not zx or not coveredAt(points, covers, zx, zy, dx, dy, false)) then
+      if parity % 2 == 1 and not coveredPast(points, covers, first, dx, dy) then
         local f
         if atA == 0 then
           f = 0.0
