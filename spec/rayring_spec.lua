@@ -27,8 +27,9 @@ local function text(points)
 end
 
 -- The oracle's entry of A -> B into the ring: nil, "inside" or { num, den, normals }. A point
--- (A = B) is inside when A is: ringsEntry decides that before it looks at the segment, so any
--- other B serves. `crossing`: the ring crosses itself, its normals taken with one fixed side.
+-- (A = B) is inside when A is; ringsEntry cuts a segment of no length at fractions 0 / 0, but
+-- it decides "inside" before it looks at the pieces, so it is asked with another B. `crossing`:
+-- the ring crosses itself, its normals taken with one fixed side (its winding means nothing).
 local function entryOf(points, ax, ay, bx, by, crossing)
   if ax == bx and ay == by then
     local far = ax + (math.abs(ax) + 1)
@@ -214,13 +215,15 @@ describe("polygonRayCast on one ring of any shape", function()
       return vx, vy, ax, ay
     end
 
-    it("agree with the oracle on star-shaped rings of 5 to 40 vertices, both windings", function()
+    it("agree with the oracle on star-shaped rings of 5 to 40 vertices (a sixth convex), both windings",
+        function()
       local rng = prng.new(3101)
       local hits, misses, inside = 0, 0, 0
-      for round = 1, 120 do
+      for round = 1, 100 do
         local o = OFFSETS[round % #OFFSETS + 1]
         local size = rng:pick({ 10, 100, 1000 })
         local points = shapes.star(rng, rng:int(5, 40), o, o, size)
+        if round % 6 == 0 then points = shapes.convex(rng, rng:int(3, 12), o, o, size, 0.4) end
         if round % 2 == 0 then points = shapes.reverse(points) end
         for _ = 1, 6 do
           local f = check(points, segment(rng, points, o, o, size))
@@ -230,19 +233,19 @@ describe("polygonRayCast on one ring of any shape", function()
         end
       end
       -- the generator's reach: every answer often
-      assert.is_true(hits > 150 and misses > 100 and inside > 50, ("%d hits, %d misses, %d inside"):format(
+      assert.is_true(hits > 200 and misses > 130 and inside > 100, ("%d hits, %d misses, %d inside"):format(
         hits, misses, inside))
     end)
 
     it("agree with the oracle on a spiral strip and on tile maps' outlines", function()
       local rng = prng.new(3102)
-      for round = 1, 8 do
+      for round = 1, 4 do
         local o = OFFSETS[round % #OFFSETS + 1]
         local points = moved(shapes.spiral(60, 1.5), o)
         for _ = 1, 6 do check(points, segment(rng, points, o, o, 200)) end
       end
       local rings = 0
-      while rings < 40 do
+      while rings < 24 do
         local set = tiles.random(rng, 5, 5, 0.7)
         local loops = tiles.loops(set, 10, 0, 0)
         if #loops == 1 then   -- one outline, no hole
@@ -271,7 +274,7 @@ describe("polygonRayCast on one ring of any shape", function()
           hits = hits + ((f and f > 0) and 1 or 0)
         end
       end
-      assert.is_true(hits > 150, hits .. " hits")
+      assert.is_true(hits > 250, hits .. " hits")
     end)
   end)
 end)
@@ -506,6 +509,6 @@ describe("rays on one ring, hard cases: shallow crossings", function()
       local f = check(ring, ax, ay, bx, by)
       hits = hits + ((f and f > 0) and 1 or 0)
     end
-    assert.is_true(hits > 100, hits .. " hits")
+    assert.is_true(hits > 110, hits .. " hits")
   end)
 end)
