@@ -484,6 +484,47 @@ describe("rays on one ring, hard cases: zero area", function()
   end
 end)
 
+describe("rays on one ring, hard cases: self-crossing rings along edges and through crossings", function()
+  -- A pentagram: the pentagon (0,-10) (10,-3) (6,8) (-6,8) (-10,-3) taken every second vertex;
+  -- by the crossing rule its five spikes are inside, its middle pentagon (crossed twice) is not.
+  local PENTAGRAM = { 0, -10, 6, 8, -10, -3, 10, -3, -6, 8 }
+  for _, o in ipairs(OFFSETS) do
+    it("misses along edges through crossing points, agrees one ulp aside (offset " .. o .. ")", function()
+      local function both(ring, ax, ay, bx, by)
+        check(shapes.reverse(ring), ax, ay, bx, by, true)
+        return check(ring, ax, ay, bx, by, true)
+      end
+      local star, bowtie = moved(PENTAGRAM, o), moved(shapes.scale(BOWTIE, 2), o)
+      -- up from the middle (0, 0): out of the pentagon into the top spike across y = -3 at
+      -- t = 3 / 20, the spike's outward normal +y; from the middle sideways: out at a spike's tip
+      expectHit(0.15, { PY }, both(star, o, o, o, o - 20))
+      assert.are.same({ false }, { both(star, o, o, o + 1, o) })
+      -- the bow-tie's diagonal y = x through its crossing (10, 10): boundary all along
+      assert.are.equal(false, both(bowtie, o - 5, o - 5, o + 25, o + 25))
+      assert.are.equal(false, both(bowtie, o + 10, o + 10, o + 25, o + 25))
+      for _, ring in ipairs({ star, bowtie }) do
+        local n = #ring
+        for i = 1, n, 2 do
+          local j = (i + 1) % n + 1
+          local px, py, qx, qy = ring[i], ring[i + 1], ring[j], ring[j + 1]
+          local ax, ay, bx, by = 2 * px - qx, 2 * py - qy, 2 * qx - px, 2 * qy - py
+          for _, seg in ipairs({ { ax, ay, bx, by }, { bx, by, ax, ay }, { px, py, qx, qy } }) do
+            assert.are.equal(false, both(ring, seg[1], seg[2], seg[3], seg[4]))
+            both(ring, seg[1], nextUp(seg[2]), seg[3], nextUp(seg[4]))
+            both(ring, seg[1], nextDown(seg[2]), seg[3], nextDown(seg[4]))
+            both(ring, nextUp(seg[1]), seg[2], nextUp(seg[3]), seg[4])
+            both(ring, nextDown(seg[1]), seg[2], nextDown(seg[3]), seg[4])
+          end
+          for k = 1, n, 2 do   -- from this vertex through every other one, and on past it
+            both(ring, px, py, ring[k], ring[k + 1])
+            both(ring, px, py, 2 * ring[k] - px, 2 * ring[k + 1] - py)
+          end
+        end
+      end
+    end)
+  end
+end)
+
 -- A segment crossing a long edge at a shallow angle: a float fraction's error grows as 1 / sin
 -- of the angle, so the fraction must come from a precise path.
 describe("rays on one ring, hard cases: shallow crossings", function()
