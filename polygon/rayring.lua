@@ -97,7 +97,7 @@ end
 -- p1 -> q1 and p2 -> q2 with signs s1, s2. Returns a fraction, nx, ny; false; or nil where a
 -- bound cannot vouch (the exact path then).
 local function twoCrossingsPuc(points, p1, q1, s1, p2, q2, s2, ax, ay, bx, by)
-  local px, py = points[p1], points[p1 + 1]
+  local px, py = points[p1] + 0.0, points[p1 + 1] + 0.0   -- (+ 0.0: no integer subtraction)
   local ex, ey = points[q1] - px, points[q1 + 1] - py
   local l, r = ex * (ay - py), ey * (ax - px)
   local a1 = (l - r) * s1
@@ -105,7 +105,7 @@ local function twoCrossingsPuc(points, p1, q1, s1, p2, q2, s2, ax, ay, bx, by)
   l, r = ex * (by - py), ey * (bx - px)
   local b1 = (l - r) * s1
   local errB1 = CROSS_BOUND * ((l > 0 and l or -l) + (r > 0 and r or -r)) + TINY
-  local sx, sy = points[p2], points[p2 + 1]
+  local sx, sy = points[p2] + 0.0, points[p2 + 1] + 0.0
   local fx, fy = points[q2] - sx, points[q2 + 1] - sy
   l, r = fx * (ay - sy), fy * (ax - sx)
   local a2 = (l - r) * s2
@@ -120,13 +120,14 @@ local function twoCrossingsPuc(points, p1, q1, s1, p2, q2, s2, ax, ay, bx, by)
   end
   if (a1 < 0 and a2 < 0) or (b1 > 0 and b2 > 0) then return false end   -- both before A or past B
   if (a1 < 0) ~= (a2 < 0) then return 0.0, 0.0, 0.0 end                  -- A between them
-  -- both past A, not both past B: the entry is the nearer
+  -- both past A, not both past B: the entry is the nearer (each bound: the signs' errors to
+  -- first order, then two roundings of t and two of the order's test)
   local t1 = a1 / (a1 - b1)
-  local err1 = (errA1 + errB1) / (a1 - b1) * (1 + 2^-10) + 2 * EPS * t1
+  local err1 = (errA1 + errB1) / (a1 - b1) * (1 + 2^-10) + 4 * EPS * t1
   local t, err, p, q, s = t1, err1, p1, q1, s1
   if b2 < 0 then
     local t2 = a2 / (a2 - b2)
-    local err2 = (errA2 + errB2) / (a2 - b2) * (1 + 2^-10) + 2 * EPS * t2
+    local err2 = (errA2 + errB2) / (a2 - b2) * (1 + 2^-10) + 4 * EPS * t2
     if b1 > 0 or t2 + err2 < t1 - err1 then
       t, err, p, q, s, ex, ey = t2, err2, p2, q2, s2, fx, fy
     elseif t1 + err1 >= t2 - err2 then
@@ -154,13 +155,13 @@ local function positive(x) return min(1, max(0, x * BIG * BIG)) end   -- luachec
 -- and the entry's fraction, normal and edge: 1 a hit, 4 a hit whose fraction needs double
 -- doubles, 3 a miss, 2 A inside, anything else the exact path.
 local function twoCrossingsJit(points, p1, q1, s1, p2, q2, s2, ax, ay, bx, by)
-  local px, py = points[p1], points[p1 + 1]
+  local px, py = points[p1] + 0.0, points[p1 + 1] + 0.0   -- (+ 0.0: no integer subtraction)
   local ex, ey = points[q1] - px, points[q1 + 1] - py
   local l, r = ex * (ay - py), ey * (ax - px)
   local a1, errA1 = (l - r) * s1, CROSS_BOUND * (abs(l) + abs(r)) + TINY
   l, r = ex * (by - py), ey * (bx - px)
   local b1, errB1 = (l - r) * s1, CROSS_BOUND * (abs(l) + abs(r)) + TINY
-  local sx, sy = points[p2], points[p2 + 1]
+  local sx, sy = points[p2] + 0.0, points[p2 + 1] + 0.0
   local fx, fy = points[q2] - sx, points[q2 + 1] - sy
   l, r = fx * (ay - sy), fy * (ax - sx)
   local a2, errA2 = (l - r) * s2, CROSS_BOUND * (abs(l) + abs(r)) + TINY
@@ -173,9 +174,10 @@ local function twoCrossingsJit(points, p1, q1, s1, p2, q2, s2, ax, ay, bx, by)
   local bN2, bP2 = positive(-b2 - errB2), positive(b2 - errB2)
   local sure = (aP1 + aN1) * (bN1 + bP1) * (aP2 + aN2) * (bN2 + bP2)
   local inv1, inv2 = 1 / max(a1 - b1, TINY), 1 / max(a2 - b2, TINY)
-  local t1, t2 = a1 * inv1, a2 * inv2   -- (three roundings each, with a1 - b1's)
-  local err1 = (errA1 + errB1) * inv1 * (1 + 2^-10) + 3 * EPS * abs(t1)
-  local err2 = (errA2 + errB2) * inv2 * (1 + 2^-10) + 3 * EPS * abs(t2)
+  -- three roundings each (a - b, the inverse, the product), and two more of the order's test
+  local t1, t2 = a1 * inv1, a2 * inv2
+  local err1 = (errA1 + errB1) * inv1 * (1 + 2^-10) + 5 * EPS * abs(t1)
+  local err2 = (errA2 + errB2) * inv2 * (1 + 2^-10) + 5 * EPS * abs(t2)
   local mid1, mid2 = aP1 * bN1, aP2 * bN2
   local enter1 = mid1 * (bP2 + mid2 * positive(t2 - err2 - t1 - err1))
   local enter2 = mid2 * (bP1 + mid1 * positive(t1 - err1 - t2 - err2))
@@ -193,7 +195,7 @@ end
 -- square root where |q - p|^2 neither overflows nor loses bits (each component within 3 ulps),
 -- else sat's unit.
 local function entryNormal(points, p, q, s)
-  local ex, ey = points[q] - points[p], points[q + 1] - points[p + 1]
+  local ex, ey = points[q] + 0.0 - points[p], points[q + 1] + 0.0 - points[p + 1]
   local sq = ex * ex + ey * ey
   if sq > 2^-900 and sq < 2^900 then
     local k = s / sqrt(sq)
@@ -264,11 +266,11 @@ local function coveredPast(points, covers, i, dx, dy)
 end
 
 -- The unit outward normal where the segment enters at the point z of the boundary: of the
--- edges with an end at z (a vertex) that do not lie along L, the one nearest in direction to d (the
--- outside behind z lies on its far side: at a vertex of the outline the ray passes, and at a
--- reflex vertex that the ray leaves from), turned against d; event i's edge (a crossing inside
--- it) when z is nil (no vertex). d x e has the sign of o(q) - o(p) (one of them 0 or both of opposite
--- signs: no cancellation).
+-- edges with an end at z (a vertex) that do not lie along L, the one nearest in direction to d
+-- (the outside behind z lies on its far side: at a vertex of the outline the ray passes, and
+-- at a reflex vertex that the ray leaves from), turned against d; event i's edge (a crossing
+-- inside it) when z is nil (no vertex). d x e has the sign of o(q) - o(p) (one of them 0, or
+-- both of opposite signs: no cancellation).
 local function normalAt(points, n, i, zx, zy, dx, dy)
   local best, bp, bq = -math.huge, 0, 0
   local j = n - 1
@@ -287,7 +289,7 @@ local function normalAt(points, n, i, zx, zy, dx, dy)
     j = k
   end
   if bp == 0 then bp, bq = evP[i], evQ[i] end
-  local ex, ey = points[bq] - points[bp] + 0.0, points[bq + 1] - points[bp + 1] + 0.0
+  local ex, ey = points[bq] + 0.0 - points[bp], points[bq + 1] + 0.0 - points[bp + 1]
   if sideOf[bq] - sideOf[bp] < 0 then return unit(ey, -ex) end
   return unit(-ey, ex)
 end
@@ -328,7 +330,7 @@ local function castRingExact(points, n, ax, ay, bx, by)
       end
       evW[events], evToggle[events] = oi >= 0 and -1.0 or 1.0, 1
       local t, err = entryEstimate(points, j, evQ[events], evKind[events], ax, ay, bx, by)
-      evT[events], evErr[events] = t, err
+      evT[events], evErr[events] = t, err + 4 * EPS * abs(t)   -- (and eventCompare's roundings)
     elseif oj == 0 and oi == 0 and (points[j] ~= points[i] or points[j + 1] ~= points[i + 1]) then
       covers = covers + 1
       local lo, hi = j, i
@@ -345,7 +347,8 @@ local function castRingExact(points, n, ax, ay, bx, by)
     events = events + 1
     local v = covHi[c]
     evP[events], evQ[events], evKind[events], evW[events], evToggle[events] = v, v, ENTERS_VERTEX, 1.0, 0
-    evT[events], evErr[events] = entryEstimate(points, v, v, ENTERS_VERTEX, ax, ay, bx, by)
+    local t, err = entryEstimate(points, v, v, ENTERS_VERTEX, ax, ay, bx, by)
+    evT[events], evErr[events] = t, err + 4 * EPS * abs(t)
   end
   for e = 1, events do   -- the events sorted along L
     local k = e - 1
