@@ -299,7 +299,6 @@ local function checkConvex(points, n, fname, argname, level)
 end
 
 M.SPLIT_FIX = SPLIT_FIX
-M.TINY = TINY   -- for polygon/raycast.lua's copy of the filter
 M.fewPointsMessage = fewPointsMessage
 M.refuseEntries = refuseEntries
 M.whyNotConvex = whyNotConvex
