@@ -507,7 +507,11 @@ local function castRingPuc(points, n, ax, ay, bx, by)
   return f, nx, ny
 end
 
--- The same, LuaJIT's: kernel's filter by abs (no branch but the rare exact one).
+-- The same, LuaJIT's. Only the filter differs, on purpose, and so the two loops are written
+-- twice: abs here (its comparisons on PUC Lua are calls), comparisons there (here each one that
+-- goes both ways is a side exit; raycast's lineSide for the first vertex made side traces that
+-- never compiled and hits took 300 times longer: bench/NOTES.md). Sharing the bookkeeping would
+-- take a Lua call per vertex, on PUC Lua where the walk is most of a miss's time.
 local function castRingJit(points, n, ax, ay, bx, by)
   local dx, dy = bx - ax, by - ay
   local cx, cy = points[n - 1], points[n]
