@@ -257,7 +257,8 @@ polygon.polygonCircleCollideV = collide.polygonCircleCollideV
 -- Touching is not colliding (grazing a vertex or running along an edge is a miss), and a seam
 -- between parts never stops a ray: one along a seam enters where the seam meets the outline.
 -- The hit or miss and the edge are exact; the point at `fraction` lies within 8 eps M of the
--- exact entry point (M over the segment's ends). Allocates nothing.
+-- exact entry point (M over the segment's ends). Allocates nothing (the exact path's scratch
+-- grows once, to the largest polygon it meets).
 -- @function polygonRayCast
 -- @tparam table points flat array of 3 or more points, or a list of convex parts
 -- @number x1
@@ -270,8 +271,9 @@ polygon.polygonCircleCollideV = collide.polygonCircleCollideV
 -- either edge's)
 -- @treturn number ny
 -- @raise as @{polygonCircleCollideV} for points, save that a flat polygon need not be convex
--- (a list's parts must be; a segment is refused: it is not a polygon), and when x1, y1, x2 or
--- y2 is not a finite number
+-- and only its first entry's type is checked, as in @{polygonContains} (a list's parts must be
+-- convex; a segment is refused: it is not a polygon), and when x1, y1, x2 or y2 is not a finite
+-- number
 polygon.polygonRayCast = rayring.polygonRayCast
 
 --- As @{polygonRayCast}, against the open disc: a tangent ray is a miss. The normal is
