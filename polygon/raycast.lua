@@ -11,7 +11,7 @@ local check = require(_PACKAGE .. ".check")
 local views = require(_PACKAGE .. ".views")
 
 local abs, huge, min, max = math.abs, math.huge, math.min, math.max
-local cross, crossExact, CROSS_BOUND = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND
+local cross, crossExact, CROSS_BOUND, JIT = kernel.cross, kernel.crossExact, kernel.CROSS_BOUND, kernel.JIT
 local EPS, twoDiff, twoProduct, powerScale = kernel.EPS, kernel.twoDiff, kernel.twoProduct, kernel.powerScale
 local quotientDD, crossDD = kernel.quotientDD, kernel.crossDD
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
@@ -39,7 +39,7 @@ local M = {}
 -- (B - A) x (v - A), exact. Kernel's cross with its filter written out, d = B - A taken once per
 -- ray instead of once per vertex (sideWalk calls this for every vertex; the same differences, so
 -- the same filter). PUC Lua's comparisons of signs (abs is a call there), as crossPuc.
-local function lineSide(vx, vy, ax, ay, bx, by, dx, dy)
+local function lineSidePuc(vx, vy, ax, ay, bx, by, dx, dy)
   local l = dx * (vy - ay)
   local r = dy * (vx - ax)
   local det = l - r
@@ -57,6 +57,18 @@ local function lineSide(vx, vy, ax, ay, bx, by, dx, dy)
   if det >= bound or -det >= bound then return det end
   return crossExact(ax, ay, bx, by, ax, ay, vx, vy)
 end
+
+-- LuaJIT's: the filter by abs, with no branch but the rare exact one (the comparisons above go
+-- both ways, and their side traces from a caller's trace with many numbers alive failed to
+-- compile: "NYI: register coalescing too complex", bench/NOTES.md). The same signs.
+local function lineSideJit(vx, vy, ax, ay, bx, by, dx, dy)
+  local l, r = dx * (vy - ay), dy * (vx - ax)
+  local det = l - r
+  if abs(det) >= CROSS_BOUND * (abs(l) + abs(r)) then return det end
+  return crossExact(ax, ay, bx, by, ax, ay, vx, vy)
+end
+
+local lineSide = JIT and lineSideJit or lineSidePuc
 
 -- What sideWalk leaves (numbers, so that nothing is allocated): the flat indices (of x) of the
 -- ends of the edge where o falls from > 0 to <= 0 (0 when there is none) and whether o is 0 at
