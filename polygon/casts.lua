@@ -15,7 +15,7 @@ local collide = require(_PACKAGE .. ".collide")
 
 local abs, huge, min, max, sqrt, floor = math.abs, math.huge, math.min, math.max, math.sqrt,
   math.floor
-local cross, CROSS_BOUND, EPS = kernel.cross, kernel.CROSS_BOUND, kernel.EPS
+local cross, CROSS_BOUND, EPS, JIT = kernel.cross, kernel.CROSS_BOUND, kernel.EPS, kernel.JIT
 local twoDiff, powerScale, areaSign = kernel.twoDiff, kernel.powerScale, kernel.areaSign
 local expClear, expAddProduct, expCompress = kernel.expClear, kernel.expAddProduct, kernel.expCompress
 local expCopy, expSign, expCrossScaled = kernel.expCopy, kernel.expSign, kernel.expCrossScaled
@@ -29,7 +29,11 @@ local unit, convexPenetration = sat.unit, sat.convexPenetration
 local resolveShape, polygonsCollideV = collide.resolveShape, collide.polygonsCollideV
 local circle = require(_PACKAGE .. ".circle")
 local discEntryTerms = require(_PACKAGE .. ".circleray").discEntryTerms
-local reaches, circlesCollideV = circle.reaches, circle.circlesCollideV
+local circlesCollideV = circle.circlesCollideV
+-- circlesCast's step back tests moved circles within rounding of touching: on LuaJIT the exact
+-- test alone (the filter's side exit, taken on nearly every hit, made a side trace that failed
+-- to compile), on PUC Lua circle's reaches as before (the filter, then the exact test)
+local stepReaches = JIT and circle.reachesExact or circle.reaches
 
 local type = type
 
@@ -571,10 +575,12 @@ end
 -- sum once more: a few eps times the sizes of the terms, with the rounding of w + d counted
 -- against |w| + |d| as it may cancel), 8 or 16 eps times the terms' size, which is more than
 -- twice that. 0 where the bound cannot vouch (or a value nears overflow or underflow).
-local function vouched(value, size)
+local function vouchedPuc(value, size)
   if (value > size or -value > size) and size > 2^-900 and size < 2^1000 then return value end
   return 0.0
 end
+
+local vouched = vouchedPuc
 
 -- discEntry's numbers as double doubles, with no loop (as circleray.lua's circleEntryDD, with d
 -- exact and R = rh + rl): the differences split exactly, each product's main part exact
@@ -619,6 +625,53 @@ local function discCastFiltered(cx, cy, R1, ax, ay, R2, dx, dy)
   if g == 0 then return nil end
   return g > 0 and HIT or MISS
 end
+
+-- 1 for x > 0, 0 for x <= 0 (a nonzero double times 2^2000 is at least 2^926), NaN for NaN.
+local BIG = 2^1000
+local function positive(x) return min(1, max(0, x * BIG * BIG)) end
+
+-- The same signs, LuaJIT's, with no branch: each value kept where its bound vouches (times 1,
+-- else times 0), then the outcome as a number (3 INSIDE, 2 HIT, 1 MISS, 0 or NaN: not vouched
+-- for). The comparisons above go both ways from call to call, and their side traces, with this
+-- many numbers alive, failed to compile ("NYI: register coalescing too complex", bench/NOTES.md).
+local function discCodeJit(cx, cy, R1, ax, ay, R2, dx, dy)
+  local wx, wy, R = ax - cx, ay - cy, R1 + R2
+  local ww, rr = wx * wx + wy * wy, R * R
+  local size = 8 * EPS * (ww + rr)
+  local k = (ww - rr) * positive(min(abs(ww - rr) - size, size - 2^-900, 2^1000 - size))
+  local ux, uy = wx + dx, wy + dy
+  local sx, sy = abs(wx) + abs(dx), abs(wy) + abs(dy)
+  size = 8 * EPS * (sx * sx + sy * sy + rr)
+  local f1 = ux * ux + uy * uy - rr
+  f1 = f1 * positive(min(abs(f1) - size, size - 2^-900, 2^1000 - size))
+  size = 8 * EPS * (abs(dx * wx) + abs(dy * wy))
+  local p = dx * wx + dy * wy
+  p = p * positive(min(abs(p) - size, size - 2^-900, 2^1000 - size))
+  size = 8 * EPS * (abs(dx) * sx + abs(dy) * sy)
+  local pq = dx * ux + dy * uy
+  pq = pq * positive(min(abs(pq) - size, size - 2^-900, 2^1000 - size))
+  local l, r = dx * wy, dy * wx
+  local x, terms, q = l - r, abs(l) + abs(r), dx * dx + dy * dy
+  size = 16 * EPS * (rr * q + terms * terms)
+  local g = rr * q - x * x
+  g = g * positive(min(abs(g) - size, size - 2^-900, 2^1000 - size))
+  -- as discCastFiltered's steps: k < 0 INSIDE; f1 < 0 HIT; p > 0 MISS; pq < 0 MISS; g's sign
+  local kP, f1P, pN, pqP = positive(k), positive(f1), positive(-p), positive(pq)
+  local before = kP * f1P * pN * pqP
+  return 3 * positive(-k) + 2 * (kP * positive(-f1) + before * positive(g))
+    + kP * f1P * (positive(p) + pN * (positive(-pq) + pqP * positive(-g)))
+end
+
+local function discCastFilteredJit(cx, cy, R1, ax, ay, R2, dx, dy)
+  local code = discCodeJit(cx, cy, R1, ax, ay, R2, dx, dy)
+  if code == 1 then return MISS end
+  if code == 2 then return HIT end
+  if code == 3 then return INSIDE end
+  return nil
+end
+
+local discCastFilteredPuc = discCastFiltered
+if JIT then discCastFiltered = discCastFilteredJit end
 
 -- MISS, INSIDE or HIT for the disc (ax, ay, R2) moving by d against the disc (cx, cy, R1).
 local function discCastStatus(cx, cy, R1, ax, ay, R2, dx, dy)
@@ -715,7 +768,7 @@ function M.circlesCast(x1, y1, r1, x2, y2, r2, dx, dy)
   local window = windowSteps(t, u)
   for k = 1, #COARSE + window + 1060 do
     local f = max(t - stepBack(k, window) * u, 0.0)
-    if f == 0 or reaches(x1, y1, x2 + f * dx, y2 + f * dy, radiusHi, radiusLo) <= 0 then
+    if f == 0 or stepReaches(x1, y1, x2 + f * dx, y2 + f * dy, radiusHi, radiusLo) <= 0 then
       return f, nx + 0.0, ny + 0.0
     end
   end
@@ -759,6 +812,7 @@ function M.cornerEntry(px, py, ax, ay, R2, dx, dy)
 end
 
 M.MISS, M.HIT, M.INSIDE = MISS, HIT, INSIDE
+M.discCastFilteredJit, M.discCastFilteredPuc = discCastFilteredJit, discCastFilteredPuc   -- (the spec)
 M.windowSteps, M.stepBack, M.COARSE_COUNT = windowSteps, stepBack, #COARSE
 M.checkFinite, M.checkStatic = checkFinite, checkStatic
 

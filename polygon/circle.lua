@@ -819,6 +819,7 @@ end
 
 M.circleCollision = circleCollision
 M.reaches, M.lineWithin, M.dot = reaches, lineWithin, dot   -- for polygon/raycast.lua's discs
+M.reachesExact = reachesExact   -- for polygon/casts.lua's step back (within rounding of touching)
 M.edgeWalkJit = edgeWalkJit   -- both bodies, for spec/bodies_compound_spec.lua
 M.edgeWalkPuc = edgeWalkPuc
 
