@@ -232,6 +232,10 @@ local function edgeEstimate(px, py, qx, qy, ax, ay, bx, by)
   local numSize, denSize = abs(nl) + abs(nr), abs(dl) + abs(dr)
   local t = num / den
   local rel = CROSS_BOUND * (numSize / abs(num) + denSize / abs(den))
+  if JIT then   -- (no branch: as signOf's)
+    local ok = min(2^-20 - rel, numSize - 2^-900, denSize - 2^-900, 2^1000 - numSize, 2^1000 - denSize)
+    return t, (rel + EPS) * abs(t) * (1 + 2^-18) + 2^1000 * (1 - min(1, max(0, ok * 2^1000 * 2^1000)))
+  end
   if rel < 2^-20 and numSize > 2^-900 and denSize > 2^-900 and numSize < 2^1000 and denSize < 2^1000 then
     return t, (rel + EPS) * abs(t) * (1 + 2^-18)
   end
@@ -292,11 +296,19 @@ local function alongOrder(z1x, z1y, z2x, z2y, dx, dy)
   return 1
 end
 
--- -1, 0 or 1 for the sign of s.
-local function signOf(s)
+-- -1, 0 or 1 for the sign of s (s not NaN). LuaJIT's by min and max, with no branch: its
+-- callers' traces (the sorts and sweeps of the exact paths) have many numbers alive, and the
+-- side traces of a branch that goes both ways failed to compile there.
+local function signOfPuc(s)
   if s > 0 then return 1 elseif s < 0 then return -1 end
   return 0
 end
+
+local function signOfJit(s)
+  return min(1, max(0, s * 2^1000 * 2^1000)) - min(1, max(0, -s * 2^1000 * 2^1000))
+end
+
+local signOf = JIT and signOfJit or signOfPuc
 
 -- The order of two crossings of the ray's line with the lines of edges whose ends each
 -- straddle the other's line (only parts that overlap have such edges): the sign of

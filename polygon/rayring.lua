@@ -288,6 +288,20 @@ local function normalAt(points, n, i, zx, zy, dx, dy)
     end
     j = k
   end
+  if bp == 0 and zx then   -- every edge at z lies along L (the end of a slit or a spike)
+    j = n - 1
+    for k = 1, n - 1, 2 do
+      if (points[j] ~= points[k] or points[j + 1] ~= points[k + 1])
+          and ((points[j] == zx and points[j + 1] == zy) or (points[k] == zx and points[k + 1] == zy)) then
+        -- its normal to the positive side of L, (-dy, dx): the side the infinitesimal shift of
+        -- L (to the negative side) leaves outside past z
+        local ex, ey = points[k] + 0.0 - points[j], points[k + 1] + 0.0 - points[j + 1]
+        if ex * dx + ey * dy > 0 then return unit(-ey, ex) end
+        return unit(ey, -ex)
+      end
+      j = k
+    end
+  end
   if bp == 0 then bp, bq = evP[i], evQ[i] end
   local ex, ey = points[bq] + 0.0 - points[bp], points[bq + 1] + 0.0 - points[bp + 1]
   if sideOf[bq] - sideOf[bp] < 0 then return unit(ey, -ex) end
