@@ -553,3 +553,23 @@ describe("rays on one ring, hard cases: shallow crossings", function()
     assert.is_true(hits > 110, hits .. " hits")
   end)
 end)
+
+-- The entry at the tip of a slit or spike lying along the segment's line: every edge at the
+-- entry point runs along the line, and the normal is theirs (a reviewer found NaN there).
+describe("rays on one ring, hard cases: entering at the tip of a slit along the ray", function()
+  -- a 4 by 4 square with a slit down from its top edge at x = 2 to (2, 2)
+  local SLIT = { 0, 0, 4, 0, 4, 4, 2, 4, 2, 2, 2, 4, 0, 4 }
+  -- a triangle with a spike up from its apex (2, 2) to (2, 8) and back
+  local SPIKE = { 2, 4, 2, 2, 2, 8, 0, 2, 4, 0 }
+  for _, o in ipairs(OFFSETS) do
+    it("gives the slit's or spike's normal, a unit vector (offset " .. o .. ")", function()
+      -- down x = 2 from y = 6: along the slit from y = 4, inside past its tip (2, 2):
+      -- t = (6 - 2) / 6 = 2/3; the slit's edges' normals are (1, 0) and (-1, 0)
+      expectHit(2 / 3, { PX, NX }, checkBoth(moved(SLIT, o), o + 2, o + 6, o + 2, o))
+      -- from the tip itself: in at 0
+      expectHit(0, { PX, NX }, checkBoth(moved(SLIT, o), o + 2, o + 2, o + 2, o))
+      -- down x = 2 from y = 10 along the spike (8 to 2), inside past (2, 2): t = 8 / 10
+      expectHit(0.8, { PX, NX }, checkBoth(moved(SPIKE, o), o + 2, o + 10, o + 2, o))
+    end)
+  end
+end)
