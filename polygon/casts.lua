@@ -575,12 +575,10 @@ end
 -- sum once more: a few eps times the sizes of the terms, with the rounding of w + d counted
 -- against |w| + |d| as it may cancel), 8 or 16 eps times the terms' size, which is more than
 -- twice that. 0 where the bound cannot vouch (or a value nears overflow or underflow).
-local function vouchedPuc(value, size)
+local function vouched(value, size)
   if (value > size or -value > size) and size > 2^-900 and size < 2^1000 then return value end
   return 0.0
 end
-
-local vouched = vouchedPuc
 
 -- discEntry's numbers as double doubles, with no loop (as circleray.lua's circleEntryDD, with d
 -- exact and R = rh + rl): the differences split exactly, each product's main part exact
