@@ -590,8 +590,14 @@ local function walkGuessed(points, n, cx, cy, guess)
 end
 
 -- The edge walk for LuaJIT: two branch-free passes at most (walkGuessed), the sign filtered
--- from the cross products' sum.
-local function edgeWalkJit(points, n, cx, cy)
+-- from the cross products' sum; one pass when the sign is known (`known`: 1.0 or -1.0, the
+-- vouching pass's, convex.lua).
+local function edgeWalkJit(points, n, cx, cy, _, known)
+  if known then
+    local near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, known)
+    if bestKey - bestKey ~= 0 then best = 0 end   -- as below
+    return known, near, nearSq, farSq, best
+  end
   -- the guess: the sign of the turn at vertex 1, without a branch (1 when it is 0); it is
   -- the area's for a convex polygon
   local guess
@@ -624,14 +630,15 @@ local function edgeWalkJit(points, n, cx, cy)
   return sign, near, nearSq, farSq, best
 end
 
--- The edge walk for PUC Lua: one pass with branches, the sign from the exact kernel first.
+-- The edge walk for PUC Lua: one pass with branches, the sign from the exact kernel first
+-- (unless known, as in edgeWalkJit).
 -- It also stops at the first edge whose line the circle (radius r) is certainly
 -- beyond, returning best = -1: an edge's squared signed distance is off by less than
 -- 32 eps (r^2 + the squared distances of its ends), so a key past r^2 by that much means
 -- the circle is apart, as the full pass would decide too (LuaJIT's loop stays branch-free).
-local function edgeWalkPuc(points, n, cx, cy, r)
-  local sign   -- exactTurn written out (a call costs PUC Lua more than these lines)
-  do
+local function edgeWalkPuc(points, n, cx, cy, r, known)
+  local sign = known   -- else exactTurn written out (a call costs PUC Lua more than these lines)
+  if not sign then
     local area, sumX2, sumD2 = shoelace(points, n)
     if area - area ~= 0 then return 0.0, 1, 0.0, 0.0, -2 end
     local turn = areaSignOf(points, n, area, sumX2, sumD2)
@@ -710,7 +717,9 @@ end
 -- The collision of the circle (cx, cy, r), r > 0 and every number finite, with the convex
 -- polygon points[1..n], n >= 6: overlap, px, py (move the circle by px, py), false, or nil
 -- when the polygon holds a non-finite coordinate. One convex polygon; polygonCircleCollideV
--- is a thin wrapper around it, so that a compound shape can call it once per part.
+-- is a thin wrapper around it, so that a compound shape can call it once per part. known: the
+-- sign of the polygon's area (1.0 or -1.0) when the caller has it (the vouching pass of
+-- convex.lua), else nil.
 --
 -- A disc against a convex polygon needs no projections. The least penetration is r minus the
 -- signed distance from the centre to the polygon, and that distance is the centre's largest
@@ -721,13 +730,13 @@ end
 --   the edge walk: one pass for the nearest vertex and the edge line farthest behind the centre,
 --   the nearest-vertex axis: whether the centre is in that vertex's corner region,
 --   the exact filter: within rounding of touching, discMeetsExact decides.
-function circleCollision(points, n, cx, cy, r)
+function circleCollision(points, n, cx, cy, r, known)
   -- (the do-blocks here keep the frame small: on Lua 5.4 a larger one can make the stack grow
   -- again, allocating, after every full collection)
   -- sign: 1 or -1, makes the signed distances positive outside. feature: the edge whose line
   -- lies farthest behind the centre (the index of its end), below minus the nearest vertex's
   -- index when the centre lies in that vertex's corner region
-  local sign, near, nearSq, farSq, feature = edgeWalk(points, n, cx, cy, r)
+  local sign, near, nearSq, farSq, feature = edgeWalk(points, n, cx, cy, r, known)
   if feature < 0 then   -- certainly apart (PUC only), a zero area or a non-finite one (see edgeWalk)
     if feature == -2 then   -- an infinite or NaN area: a non-finite coordinate or overflow
       local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)

@@ -14,16 +14,31 @@ local checkRadius = check.checkRadius
 local convexPenetration, separatingPush = sat.convexPenetration, sat.separatingPush
 local collideParts, collideCircleParts = compound.collideParts, compound.collideCircleParts
 local circleCollision = circle.circleCollision
-local checkConvex, refuseEntries = convex.checkConvex, convex.refuseEntries
+local checkConvex, refuseEntries, vouch = convex.checkConvex, convex.refuseEntries, convex.vouch
 local objectPoints = object.objectPoints
 
 local M = {}
 
 
 -- Raises the error for a non-finite coordinate at the caller of the public function, which
--- called the private function that calls this one.
-local function raiseNonFinite(fname, argname)
-  error(("%s: %s holds a non-finite coordinate"):format(fname, argname), 4)
+-- called the private function that calls this one (level 4 as error's; one more for each call
+-- between).
+local function raiseNonFinite(fname, argname, level)
+  error(("%s: %s holds a non-finite coordinate"):format(fname, argname), level or 4)
+end
+
+-- The engine's answer where its vouching pass (the convexity check fused into its first pass,
+-- convex.lua) could not vouch for a polygon: the engine without it, then both polygons checked
+-- the careful way (checkConvex: raises for a concave one), in the order of the unchecked
+-- functions plus the check. Called from collides and pushOut (their callers' callers are the
+-- public functions' callers).
+local function penetrationCarefully(fname, points1, n1, points2, n2, both)
+  local depth, ux, uy, owner, edgeEnd, base, inside =
+    convexPenetration(points1, n1, points2, n2, both)
+  if depth == nil then raiseNonFinite(fname, ux, 5) end
+  checkConvex(points1, n1, fname, "points1", 4)
+  checkConvex(points2, n2, fname, "points2", 4)
+  return depth, ux, uy, owner, edgeEnd, base, inside
 end
 
 -- The shape a collision function was handed when its first entry is not a number (kind: its
@@ -90,13 +105,11 @@ local function build(T, checked)
   local function collides(fname, points1, points2, both, kind1, kind2)
     local n1 = checkPoints(points1, fname, "points1", 4, kind1)
     local n2 = checkPoints(points2, fname, "points2", 4, kind2)
-    local depth, argname = convexPenetration(points1, n1, points2, n2, both)
-    if depth == nil then raiseNonFinite(fname, argname) end
-    -- after the engine, which reads any table of numbers (its answer is dropped when a polygon
-    -- is refused): a non-number entry fails in the same place as before the check
-    if checked then
-      checkConvex(points1, n1, fname, "points1", 3)
-      checkConvex(points2, n2, fname, "points2", 3)
+    -- checked: the engine's first pass vouches that both are convex, or the careful way
+    local depth, argname = convexPenetration(points1, n1, points2, n2, both, nil, checked)
+    if depth == nil then
+      if argname ~= false then raiseNonFinite(fname, argname) end
+      depth = penetrationCarefully(fname, points1, n1, points2, n2, both)
     end
     return depth ~= false
   end
@@ -159,11 +172,11 @@ local function build(T, checked)
       n2 = checkPoints(points2, fname, "points2", 4, kind2)
     end
     local depth, ux, uy, owner, edgeEnd, base, inside =
-      convexPenetration(points1, n1, points2, n2, both)
-    if depth == nil then raiseNonFinite(fname, ux) end
-    if checked then   -- after the engine, as in collides
-      checkConvex(points1, n1, fname, "points1", 3)
-      checkConvex(points2, n2, fname, "points2", 3)
+      convexPenetration(points1, n1, points2, n2, both, nil, checked)   -- as in collides
+    if depth == nil then
+      if ux ~= false then raiseNonFinite(fname, ux) end
+      depth, ux, uy, owner, edgeEnd, base, inside =
+        penetrationCarefully(fname, points1, n1, points2, n2, both)
     end
     if not depth then return false end
     local push, dx, dy = separatingPush(points1, n1, points2, n2, depth, ux, uy, owner, edgeEnd,
@@ -242,14 +255,17 @@ local function build(T, checked)
       if checked then checkConvex(points, n, fname, "points", 2) end
       return false
     end
+    -- checked: the vouching pass (convex.lua) gives the engine the polygon's sign, or the
+    -- careful way raises for a concave polygon (or a non-finite coordinate) before the engine
+    local known = checked and vouch(points, n)
+    if checked and not known then checkConvex(points, n, fname, "points", 2) end
     -- converted in place: on LuaJIT the numbers of this frame and of circleCollision's are then
     -- the same (see circleCollision: fewer for a side trace to take over)
     cx = cx + 0.0
     cy = cy + 0.0
     radius = radius + 0.0
-    local overlap, dx, dy = circleCollision(points, n, cx, cy, radius)
+    local overlap, dx, dy = circleCollision(points, n, cx, cy, radius, known or nil)
     if overlap == nil then error(fname .. ": points holds a non-finite coordinate", 2) end
-    if checked then checkConvex(points, n, fname, "points", 2) end   -- after the engine, as in collides
     if not overlap then return false end
     return overlap, dx, dy
   end

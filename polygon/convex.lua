@@ -7,7 +7,7 @@ local kernel = require(_PACKAGE .. ".kernel")
 
 local abs, huge, min, max = math.abs, math.huge, math.min, math.max
 local JIT, CROSS_BOUND, cross = kernel.JIT, kernel.CROSS_BOUND, kernel.cross
-local powerScale, largestMagnitude = kernel.powerScale, kernel.largestMagnitude
+local powerScale = kernel.powerScale
 
 local M = {}
 
@@ -47,22 +47,22 @@ local function refuseNonFinite(fname, argname, level)
 end
 
 -- The reference turn of the careful walk: the exact turn at the lowest vertex (least y, then
--- least x; coordinates times scale), between its nearest distinct neighbours. That vertex is a
--- corner of the convex hull, so its turn has the sign of a convex polygon's every turn (of a
--- simple polygon's area); 0 only at a spike there.
-local function lowestTurn(points, n, scale)
+-- least x; coordinates scaled as in carefulWalk), between its nearest distinct neighbours.
+-- That vertex is a corner of the convex hull, so its turn has the sign of a convex polygon's
+-- every turn (of a simple polygon's area); 0 only at a spike there.
+local function lowestTurn(points, n, sx, sy)
   local low = 1
   for i = 3, n - 1, 2 do
-    local y, ly = points[i + 1] * scale, points[low + 1] * scale
-    if y < ly or (y == ly and points[i] * scale < points[low] * scale) then low = i end
+    local y, ly = points[i + 1] * sy, points[low + 1] * sy
+    if y < ly or (y == ly and points[i] * sx < points[low] * sx) then low = i end
   end
-  local x, y = points[low] * scale, points[low + 1] * scale
+  local x, y = points[low] * sx, points[low + 1] * sy
   local a, b = low, low
-  repeat a = (a - 3) % n + 1 until a == low or points[a] * scale ~= x or points[a + 1] * scale ~= y
-  repeat b = (b + 1) % n + 1 until b == low or points[b] * scale ~= x or points[b + 1] * scale ~= y
+  repeat a = (a - 3) % n + 1 until a == low or points[a] * sx ~= x or points[a + 1] * sy ~= y
+  repeat b = (b + 1) % n + 1 until b == low or points[b] * sx ~= x or points[b + 1] * sy ~= y
   if a == low then return 0 end
-  return cross(points[a] * scale, points[a + 1] * scale, x, y, x, y, points[b] * scale,
-    points[b + 1] * scale)
+  return cross(points[a] * sx, points[a + 1] * sy, x, y, x, y, points[b] * sx,
+    points[b + 1] * sy)
 end
 
 -- THE CAREFUL WALK, one for the collision functions' check (whyNotConvex) and polygonType
@@ -70,26 +70,27 @@ end
 -- told apart from spikes (a zero turn that doubles back), the windings counted by the changes of
 -- sign of the edges' x direction (two around a convex polygon; counted along the walk they are
 -- one fewer when the first and last edges differ, and the count around the cycle is even, so
--- more than two along the walk means more than two around). Coordinates are taken times `scale`
--- (a power of two; 1 converts Lua 5.3 integers). Returns nil when there is no turn at all (every
+-- more than two along the walk means more than two around). Coordinates are taken times powers
+-- of two, x times sx and y times sy (no sign changes when the axes are scaled apart; 1 converts
+-- Lua 5.3 integers). Returns nil when there is no turn at all (every
 -- point on one line: zero area, which never collides), "convex", or why not: "reflex" or
 -- "spike" and the vertex where the walk first turns back, or "winds" (its turns all agree but it
 -- winds around more than once). The reference turn is the one at the lowest vertex when `named`
 -- (lowestTurn; the first turn when that is zero), so the vertex named is where a walk around
 -- the shape turns back against it; else the first turn (enough for a yes or no).
-local function carefulWalk(points, n, scale, named)
-  local cx, cy = points[n - 1] * scale, points[n] * scale
+local function carefulWalk(points, n, sx, sy, named)
+  local cx, cy = points[n - 1] * sx, points[n] * sy
   local j = n - 3
-  while j > 0 and points[j] * scale == cx and points[j + 1] * scale == cy do j = j - 2 end
+  while j > 0 and points[j] * sx == cx and points[j + 1] * sy == cy do j = j - 2 end
   if j < 0 then return nil end   -- all points are one point
-  local px, py = points[j] * scale, points[j + 1] * scale
-  local ref = named and lowestTurn(points, n, scale) or 0
+  local px, py = points[j] * sx, points[j + 1] * sy
+  local ref = named and lowestTurn(points, n, sx, sy) or 0
   local turned, flips, dir = false, 0, 0
   local spikeAt   -- the first spike; the answer once a turn shows the shape is not all on a line
   -- the turn at vertex k is taken at c (vertex m first, then 1, 2, ...)
   local k = n / 2
   for i = 1, n - 1, 2 do
-    local qx, qy = points[i] * scale, points[i + 1] * scale
+    local qx, qy = points[i] * sx, points[i + 1] * sy
     if qx ~= cx or qy ~= cy then
       local s = cross(px, py, cx, cy, cx, cy, qx, qy)
       if s ~= 0 then
@@ -122,12 +123,22 @@ end
 -- Why a polygon is not convex, for the refusal's message, or nil when it is convex or has no
 -- turn at all (the careful walk, the vertex named).
 local function whyNotConvex(points, n)
-  -- coordinates far outside the exact range are scaled by a power of two first (exact, short
-  -- of underflow), so that no product of differences underflows or overflows
-  local magnitude = largestMagnitude(points, n, 0.0)
-  local scale = 1.0
-  if magnitude < 2^-400 or magnitude > 2^400 then scale = powerScale(magnitude, 2^-64, 1) end
-  local kind, vertex = carefulWalk(points, n, scale, true)
+  -- coordinates far outside the exact range are scaled by a power of two first, x and y each
+  -- by its own (exact, short of underflow; a turn keeps its sign), so that no product of
+  -- differences underflows or overflows: a polygon of x near 1e-300 and y near 1e150 is
+  -- decided as the same polygon near 1
+  local mx, my = 0.0, 0.0
+  for i = 1, n - 1, 2 do mx, my = max(mx, abs(points[i])), max(my, abs(points[i + 1])) end
+  local sx, sy = 1.0, 1.0
+  -- (tiny magnitudes go up to 2^-400 .. 2^-336 only: one factor to 1 would pass 2^1023 below
+  -- about 2^-960, and there the products of differences keep their bits)
+  if mx > 2^400 then sx = powerScale(mx, 2^-64, 1) elseif mx < 2^-400 then
+    sx = powerScale(mx, 2^-400, 2^-336)
+  end
+  if my > 2^400 then sy = powerScale(my, 2^-64, 1) elseif my < 2^-400 then
+    sy = powerScale(my, 2^-400, 2^-336)
+  end
+  local kind, vertex = carefulWalk(points, n, sx, sy, true)
   if kind == "reflex" then return ("a reflex turn at vertex %d"):format(vertex) end
   if kind == "spike" then
     return ("a spike at vertex %d: its edges fold back on one line"):format(vertex)
@@ -154,148 +165,229 @@ local function convexCareful(points, n, fname, argname, level)
   end
 end
 
--- THE FILTER: true when the polygon points[1..n] (n >= 6) is surely convex, false when the
--- careful walk must decide (never a wrong true). Per vertex, the turn e x f = l - r of the edges
--- into it (e) and out of it (f), with cross's error bound CROSS_BOUND |l + r| (when l and r
--- differ in sign no cancellation happens and |l + r| <= |s|) plus TINY: every turn surely
--- positive, or every one surely negative. So a turn of 0 (collinear vertices, a spike, a
--- repeated vertex) or one that underflows goes to the walk. The windings are counted as in
--- polygonType (typeFiltered): around m edges whose turns are certain, the signs of consecutive
--- edges' x products sum to m - 4 k for k windings. The bounds' sum is kept finite: an overflow
--- (NaN or inf) goes to the walk too.
--- Two bodies, the same answers (spec/refusals_spec.lua compares them).
+-- THE VOUCHING PASS: the collision engines' first pass when they check (sat.lua's
+-- convexPenetration, circle.lua's circleCollision), fused with the convexity filter: one read of
+-- the vertices gives the polygon's bounding box and its turns, and when every turn is surely of
+-- one sign and the polygon winds once, its orientation too (a convex polygon's area has its
+-- turns' sign), so the engine needs no shoelace pass of its own. Returns turn (1.0 or -1.0),
+-- xmin, xmax, ymin, ymax, and on PUC Lua low and high, the flat indices (of x) of the first
+-- vertex of least y and of the first of largest y (kernel's turnAndBounds' values); nil when it
+-- cannot vouch: then the caller checks the careful way (checkConvex) and runs the unchecked
+-- engine. Never a wrong answer: nil for every polygon that is not convex, and for some that are
+-- (collinear vertices, turns near the bound below, overflow, non-finite coordinates).
+-- The turn at vertex k is s = e x f = l - r of the edges into it (e) and out of it (f). One
+-- error bound serves all turns: each edge's computed difference is at most the box's computed
+-- span (rounding is monotone), so |l| + |r| <= 2 spanX spanY, and Shewchuk's bound CROSS_BOUND
+-- (|l| + |r|) of each turn is at most SHARED_BOUND spanX spanY, plus TINY for products that
+-- underflow. A turn below that (about 6 eps of the box's area) goes to the walk. The windings:
+-- with every turn surely of one sign, an edge along the y axis lies between a change of the x
+-- direction (else the turns at its ends differ), so around m edges the signs sx of the edges'
+-- x differences give sum sx_k sx_k+1 = m - 4 k for k windings. The signs are exact (a product
+-- of two differences that underflows must not pass for a zero): LuaJIT's scales a nonzero
+-- difference, at least 2^-1074, by 2^537 twice, to at least 1 (or inf); PUC Lua's looks again
+-- at a product of 0 (zeroFlips).
+-- For small polygons the pass is written out for each size (a loop of 3 to 8 steps costs its
+-- entry and exit more than its steps; on LuaJIT its copies in the callers' traces failed to
+-- compile, "NYI: register coalescing too complex"), as text built below and compiled once at
+-- load: one body per size, no padding; up to 8 vertices on LuaJIT, 16 on PUC Lua (vouchJit,
+-- vouchPuc). Beyond, a loop. Two dialects, the same
+-- answers (spec/convex_bound_hard_spec.lua runs both on every interpreter). Both read each
+-- coordinate by adding 0.0: Lua 5.3 integers are converted, and an entry that is not a number
+-- raises Lua's own arithmetic error, as in the engines without the check.
+-- LuaJIT's takes the box, the turns' extremes and the x differences' signs with min and max
+-- (single instructions there) and has one branch, the verdict; the turns' sum carries a NaN
+-- (min and max may drop one) into it. PUC Lua's compares (min and max are calls there) and tests
+-- each turn against the bound once the first turn has set the sign (a NaN fails the test); it
+-- counts the changes by the products of consecutive x
+-- differences (2 a negative product, 1 a zero), the rare product of 0 by zeroFlips. Up to 4
+-- vertices no windings are counted: a polygon whose turns agree turns through less than 4
+-- half turns there, so it winds once.
 local TINY = 2^-900   -- below every turn of the exact range worth trusting to the filter
+local SHARED_BOUND = 2 * CROSS_BOUND   -- times spanX spanY
+local loadChunk = rawget(_G, "loadstring") or load
 
--- LuaJIT's: min, max and abs are single instructions there (no branch), and LuaJIT has no
--- integers, so no coordinate is converted. Beyond 8 vertices a loop.
-local function convexFilterJitLoop(points, n)
-  local lo, hi, agree, bsum = huge, -huge, 0, 0
-  local ax, ay = points[n - 3], points[n - 2]
-  local bx, by = points[n - 1], points[n]
-  local ex, ey = bx - ax, by - ay
+-- What a product of two x differences of 0 adds to PUC Lua's count of changes (see above):
+-- 1 when a difference is 0, else the product underflowed: 2 when their signs differ, 0 when
+-- they agree.
+local function zeroFlips(ex, fx)
+  if ex == 0 or fx == 0 then return 1 end
+  if (ex < 0) == (fx < 0) then return 0 end
+  return 2
+end
+
+-- The source of the pass for m vertices (3 to 8) in one dialect ("jit" or "puc"). Vertex k is
+-- xk, yk; edge k, from vertex k to vertex k + 1 (edge m back to vertex 1), is exk, eyk; the turn
+-- at vertex k + 1 is edge k x edge k + 1.
+local function vouchSource(m, dialect)
+  local out = {}
+  local function line(format, ...) out[#out + 1] = format:format(...) end
+  local function after(k) return k % m + 1 end
+  local function each(format, last, sep)
+    local items = {}
+    for k = 1, last or m do items[k] = format:gsub("#n", after(k)):gsub("#", k) end
+    return table.concat(items, sep or ", ")
+  end
+  line("local min, max, SHARED_BOUND, TINY, zeroFlips = ...")
+  line("return function(p)")
+  if dialect == "jit" then
+    for k = 1, m do line("local x%d, y%d = p[%d] + 0.0, p[%d] + 0.0", k, k, 2 * k - 1, 2 * k) end
+    line("local xmin, xmax = min(%s), max(%s)", each("x#"), each("x#"))
+    line("local ymin, ymax = min(%s), max(%s)", each("y#"), each("y#"))
+    line("local %s = %s", each("ex#, ey#"), each("x#n - x#, y#n - y#"))
+    line("local %s = %s", each("t#"), each("ex# * ey#n - ey# * ex#n"))
+    local winds = ""
+    if m > 4 then
+      line("local %s = %s", each("sx#"), each("min(1, max(-1, ex# * 2^537 * 2^537))"))
+      line("local agree = %s", each("sx# * sx#n", m, " + "))
+      winds = (" and agree == %d"):format(m - 4)
+    end
+    line("local lo, hi, sum = min(%s), max(%s), %s", each("t#"), each("t#"), each("t#", m, " + "))
+    line("local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY")
+    line("if max(lo, -hi) > bound%s and sum - sum == 0 then", winds)
+    line("  return min(1, max(-1, (lo + hi) * 2^1000)), xmin, xmax, ymin, ymax")
+    line("end")
+    line("return nil")
+  else
+    line("local x1, y1 = p[1] + 0.0, p[2] + 0.0")
+    line("local xmin, xmax, ymin, ymax, low, high = x1, x1, y1, y1, 1, 1")
+    for k = 2, m do
+      line("local x%d, y%d = p[%d] + 0.0, p[%d] + 0.0", k, k, 2 * k - 1, 2 * k)
+      line("if x%d < xmin then xmin = x%d elseif x%d > xmax then xmax = x%d end", k, k, k, k)
+      line("if y%d < ymin then ymin, low = y%d, %d elseif y%d > ymax then ymax, high = y%d, %d end",
+        k, k, 2 * k - 1, k, k, 2 * k - 1)
+    end
+    line("local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY")
+    line("local %s = %s", each("ex#, ey#"), each("x#n - x#, y#n - y#"))
+    if m > 4 then
+      line("local flips, xx = 0, 0.0")
+      for k = 1, m do
+        line("xx = ex%d * ex%d", k, after(k))
+        line("if xx <= 0 then flips = flips + (xx < 0 and 2 or zeroFlips(ex%d, ex%d)) end", k, after(k))
+      end
+      line("if flips ~= 4 then return nil end")
+    end
+    -- the turn at vertex 1 sets the sign; every turn then surely of it
+    line("local turn = 1.0")
+    line("if ex%d * ey1 - ey%d * ex1 < 0 then turn, bound = -1.0, -bound end", m, m)
+    line("if turn > 0 then")
+    for k = 1, m do
+      line("  if not (ex%d * ey%d - ey%d * ex%d > bound) then return nil end", k, after(k), k, after(k))
+    end
+    line("else")
+    for k = 1, m do
+      line("  if not (ex%d * ey%d - ey%d * ex%d < bound) then return nil end", k, after(k), k, after(k))
+    end
+    line("end")
+    line("return turn, xmin, xmax, ymin, ymax, low, high")
+  end
+  line("end")
+  return table.concat(out, "\n")
+end
+
+-- Beyond the bodies, loops. LuaJIT's keeps every turn's extremes, as its bodies do.
+local function vouchLoopJit(points, n)
+  local bx, by = points[n - 1] + 0.0, points[n] + 0.0
+  local ex, ey = bx - points[n - 3], by - points[n - 2]
+  local sx = min(1, max(-1, ex * 2^537 * 2^537))
+  local lo, hi, sum, agree = huge, -huge, 0, 0
+  local xmin, xmax, ymin, ymax = bx, bx, by, by
   for i = 1, n - 1, 2 do
-    local cx, cy = points[i], points[i + 1]
+    local cx, cy = points[i] + 0.0, points[i + 1] + 0.0
     local fx, fy = cx - bx, cy - by
-    local l, r, xx = ex * fy, ey * fx, ex * fx
-    local s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
-    lo, hi, bsum = min(lo, s - b), max(hi, s + b), bsum + b
-    agree = agree + min(1, max(-1, xx * 2^1000))
+    local s, tx = ex * fy - ey * fx, min(1, max(-1, fx * 2^537 * 2^537))
+    lo, hi, sum, agree = min(lo, s), max(hi, s), sum + s, agree + sx * tx
+    xmin, xmax, ymin, ymax = min(xmin, cx), max(xmax, cx), min(ymin, cy), max(ymax, cy)
+    bx, by, ex, ey, sx = cx, cy, fx, fy, tx
+  end
+  local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY
+  if max(lo, -hi) > bound and agree == n / 2 - 4 and sum - sum == 0 then
+    return min(1, max(-1, (lo + hi) * 2^1000)), xmin, xmax, ymin, ymax
+  end
+  return nil
+end
+
+-- PUC Lua's: the box first (the bound), then the turns, each tested as it comes.
+local function vouchLoopPuc(points, n)
+  local x1, y1 = points[1] + 0.0, points[2] + 0.0
+  local xmin, xmax, ymin, ymax, low, high = x1, x1, y1, y1, 1, 1
+  for i = 3, n - 1, 2 do
+    local x, y = points[i] + 0.0, points[i + 1] + 0.0
+    if x < xmin then xmin = x elseif x > xmax then xmax = x end
+    if y < ymin then ymin, low = y, i elseif y > ymax then ymax, high = y, i end
+  end
+  local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY
+  local bx, by = points[n - 1] + 0.0, points[n] + 0.0
+  local ex, ey = bx - points[n - 3], by - points[n - 2]
+  local turn = 1.0   -- the turn at vertex 1 sets the sign
+  if ex * (y1 - by) - ey * (x1 - bx) < 0 then turn, bound = -1.0, -bound end
+  local flips = 0
+  for i = 1, n - 1, 2 do
+    local cx, cy = points[i] + 0.0, points[i + 1] + 0.0
+    local fx, fy = cx - bx, cy - by
+    local s = ex * fy - ey * fx
+    -- luacheck: ignore 581 (NaN must fail)
+    if turn > 0 then
+      if not (s > bound) then return nil end
+    elseif not (s < bound) then
+      return nil
+    end
+    local xx = ex * fx
+    if xx <= 0 then flips = flips + (xx < 0 and 2 or zeroFlips(ex, fx)) end
     bx, by, ex, ey = cx, cy, fx, fy
   end
-  return max(lo, -hi) > 0 and agree == n / 2 - 4 and bsum < huge
+  if flips ~= 4 then return nil end
+  return turn, xmin, xmax, ymin, ymax, low, high
 end
 
--- Up to 8 vertices written out, as sat's shoelaceBounds: a loop of 3 to 8 steps is copied
--- unrolled into its callers' traces, whose exits for the other sizes fail to compile ("NYI:
--- register coalescing too complex") until the loop is left to the interpreter. Slot k holds
--- vertex min(k, m) (the last repeated for fewer); edge k runs from slot k to slot k + 1 (edge 8
--- back to slot 1). A slot from m on (2k >= n) turns between repeated vertices: its turn is
--- taken out of lo and hi by `pad` (2^1000) and its x product is 0; the real turn at vertex m
--- is taken once more at the end (for 8 vertices a repeat of slot 8's, its x product not
--- counted).
-local PAD = 2^1000
-
-local function convexFilterJit(points, n)
-  if n > 16 then
-    local sure = convexFilterJitLoop(points, n)
-    return sure
+-- The written-out bodies of one dialect, from 3 to `largest` vertices, by their count of
+-- numbers (6 to 2 largest).
+local function vouchBodies(dialect, largest)
+  local byCount = {}
+  for m = 3, largest do
+    local chunk = assert(loadChunk(vouchSource(m, dialect), "=polygon/convex.lua vouch" .. m))
+    byCount[2 * m] = chunk(min, max, SHARED_BOUND, TINY, zeroFlips)
   end
-  local x1, y1 = points[1], points[2]
-  local x2, y2 = points[3], points[4]
-  local x3, y3 = points[5], points[6]
-  local j = min(7, n - 1)
-  local x4, y4 = points[j], points[j + 1]
-  j = min(9, n - 1)
-  local x5, y5 = points[j], points[j + 1]
-  j = min(11, n - 1)
-  local x6, y6 = points[j], points[j + 1]
-  j = min(13, n - 1)
-  local x7, y7 = points[j], points[j + 1]
-  local x8, y8 = points[n - 1], points[n]
-  local xp, yp = points[n - 3], points[n - 2]   -- the real vertex before the last
-  local e1x, e1y, e2x, e2y = x2 - x1, y2 - y1, x3 - x2, y3 - y2
-  local e3x, e3y, e4x, e4y = x4 - x3, y4 - y3, x5 - x4, y5 - y4
-  local e5x, e5y, e6x, e6y = x6 - x5, y6 - y5, x7 - x6, y7 - y6
-  local e7x, e7y, e8x, e8y = x8 - x7, y8 - y7, x1 - x8, y1 - y8
-  local l, r, xx, s, b, pad
-  local lo, hi, agree, bsum
-  l, r, xx = e8x * e1y, e8y * e1x, e8x * e1x   -- slot 1
-  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
-  lo, hi, agree, bsum = s - b, s + b, min(1, max(-1, xx * 2^1000)), b
-  l, r, xx = e1x * e2y, e1y * e2x, e1x * e2x   -- slot 2 (always a real vertex)
-  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
-  lo, hi = min(lo, s - b), max(hi, s + b)
-  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
-  l, r, xx = e2x * e3y, e2y * e3x, e2x * e3x   -- slot 3
-  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 7 - n))
-  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
-  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
-  l, r, xx = e3x * e4y, e3y * e4x, e3x * e4x   -- slot 4
-  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 9 - n))
-  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
-  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
-  l, r, xx = e4x * e5y, e4y * e5x, e4x * e5x   -- slot 5
-  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 11 - n))
-  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
-  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
-  l, r, xx = e5x * e6y, e5y * e6x, e5x * e6x   -- slot 6
-  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 13 - n))
-  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
-  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
-  l, r, xx = e6x * e7y, e6y * e7x, e6x * e7x   -- slot 7
-  s, b, pad = l - r, CROSS_BOUND * abs(l + r) + TINY, PAD * min(1, max(0, 15 - n))
-  lo, hi = min(lo, s - b + pad), max(hi, s + b - pad)
-  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
-  l, r, xx = e7x * e8y, e7y * e8x, e7x * e8x   -- slot 8 (for 8 vertices the repeat below)
-  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
-  lo, hi = min(lo, s - b + PAD), max(hi, s + b - PAD)
-  agree, bsum = agree + min(1, max(-1, xx * 2^1000)), bsum + b
-  local elx, ely = x8 - xp, y8 - yp   -- the real turn at the last vertex
-  l, r, xx = elx * e8y, ely * e8x, elx * e8x
-  s, b = l - r, CROSS_BOUND * abs(l + r) + TINY
-  lo, hi, bsum = min(lo, s - b), max(hi, s + b), bsum + b
-  agree = agree + min(1, max(-1, xx * 2^1000)) * min(1, max(0, 16 - n))
-  return max(lo, -hi) > 0 and agree == n / 2 - 4 and bsum < huge
+  return byCount
 end
 
--- PUC Lua's: one loop with comparisons (math.min, max and abs are calls there).
-local function convexFilterPuc(points, n)
-  local lo, hi, agree, bsum = huge, -huge, 0, 0
-  local bx, by = points[n - 1] + 0.0, points[n] + 0.0
-  local ex = bx - points[n - 3]
-  local ey = by - points[n - 2]
-  for i = 1, n - 1, 2 do
-    local cx = points[i] + 0.0
-    local cy = points[i + 1] + 0.0
-    local fx = cx - bx
-    local fy = cy - by
-    local l = ex * fy
-    local r = ey * fx
-    local s = l - r
-    local b = l + r
-    if b < 0 then b = -b end
-    b = CROSS_BOUND * b + TINY
-    bsum = bsum + b
-    if s - b < lo then lo = s - b end
-    if s + b > hi then hi = s + b end
-    local xx = ex * fx
-    if xx > 0 then agree = agree + 1 elseif xx < 0 then agree = agree - 1 end
-    bx = cx
-    by = cy
-    ex = fx
-    ey = fy
+-- The pass for any size. LuaJIT's: bodies up to 8 vertices (with bodies up to 16 the circle
+-- benchmark's traces filled LuaJIT's machine code area, "failed to allocate mcode memory"), each
+-- chosen by a comparison (a different function from a table at one call site is a trace exit).
+-- PUC Lua's: bodies up to 16 vertices, from a table (one lookup against a chain of tests).
+local vouchJit
+do
+  local byCount = vouchBodies("jit", 8)
+  local v3, v4, v5, v6, v7, v8 = byCount[6], byCount[8], byCount[10], byCount[12], byCount[14],
+    byCount[16]
+  vouchJit = function(points, n)
+    if n == 8 then return v4(points) end   -- boxes first
+    if n > 16 then return vouchLoopJit(points, n) end
+    if n == 16 then return v8(points) elseif n == 14 then return v7(points)
+    elseif n == 12 then return v6(points) elseif n == 10 then return v5(points)
+    elseif n == 6 then return v3(points) end
+    return nil
   end
-  return (lo > 0 or hi < 0) and agree == n / 2 - 4 and bsum < huge
 end
 
-local convexFilter = JIT and convexFilterJit or convexFilterPuc
+local vouchPuc
+do
+  local byCount = vouchBodies("puc", 16)
+  vouchPuc = function(points, n)
+    local body = byCount[n]
+    if body then return body(points) end
+    if n > 32 then return vouchLoopPuc(points, n) end
+    return nil
+  end
+end
+
+local vouch = JIT and vouchJit or vouchPuc
 
 -- Checks that a flat shape a collision function was given (a table whose first entry the caller
 -- has looked at) is a polygon it can take: at least 3 points, convex. Raises the argument error
 -- at `level` (as error's, counted from the caller of this function).
 local function checkConvex(points, n, fname, argname, level)
   if n < 6 then error(fewPointsMessage(fname, argname, n), level + 1) end
-  if not convexFilter(points, n) then convexCareful(points, n, fname, argname, level + 1) end
+  if not vouch(points, n) then convexCareful(points, n, fname, argname, level + 1) end
 end
 
 M.SPLIT_FIX = SPLIT_FIX
@@ -303,10 +395,12 @@ M.fewPointsMessage = fewPointsMessage
 M.refuseEntries = refuseEntries
 M.whyNotConvex = whyNotConvex
 M.carefulWalk = carefulWalk
-M.convexFilter = convexFilter
-M.convexFilterJit = convexFilterJit
-M.convexFilterJitLoop = convexFilterJitLoop
-M.convexFilterPuc = convexFilterPuc
+M.vouch = vouch
+M.vouchJit = vouchJit
+M.vouchPuc = vouchPuc
+M.vouchSource = vouchSource
+M.vouchLoopJit = vouchLoopJit
+M.vouchLoopPuc = vouchLoopPuc
 M.convexCareful = convexCareful
 M.checkConvex = checkConvex
 

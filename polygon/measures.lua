@@ -489,7 +489,7 @@ end
 -- repeated vertex, an overflow or a non-finite coordinate, which it checks for first).
 local function typeCareful(points, n)
   checkFinitePoints(points, n, "polygonType", "points", 4)
-  local kind = carefulWalk(points, n, 1.0, false)
+  local kind = carefulWalk(points, n, 1.0, 1.0, false)
   if kind == nil or kind == "convex" then return kind end
   return "concave"
 end

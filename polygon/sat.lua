@@ -4,6 +4,7 @@
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local check = require(_PACKAGE .. ".check")
 local kernel = require(_PACKAGE .. ".kernel")
+local convex = require(_PACKAGE .. ".convex")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
 local checkPoints, checkNumber = check.checkPoints, check.checkNumber
@@ -12,6 +13,7 @@ local crossExact, cross, shoelaceBounds = kernel.crossExact, kernel.cross, kerne
 local holdsNonFinite, areaSignOf = kernel.holdsNonFinite, kernel.areaSignOf
 local turnAndBounds, EXACT_TOP = kernel.turnAndBounds, kernel.EXACT_TOP
 local powerScale, largestMagnitude = kernel.powerScale, kernel.largestMagnitude
+local vouch = convex.vouch
 
 local M = {}
 
@@ -754,19 +756,26 @@ local RESCALE_LOW, RESCALE_HIGH = 2^400, 2^464
 -- overlapping; fewer than 3 points or zero area never overlaps. both: the axes of both
 -- polygons (polygonsCollide); false: the axes of p1 only, both ends of each range
 -- (polygonCollidesWith). Allocates nothing (except on the rare path beyond 2^500); rescaled
--- is for that path only (callers leave it nil). Call separatingPush for a push.
+-- is for that path only (callers leave it nil). vouched: the first pass is convex.lua's
+-- vouching pass, the convexity check of the collision functions (see there). Call
+-- separatingPush for a push.
 -- Returns
 --   false                                  no overlap (exact);
 --   nil, "points1" or "points2"            that polygon holds a NaN or infinite coordinate;
+--   nil, false                             (vouched) the pass could not vouch for a polygon:
+--                                          check both the careful way, then call unvouched;
 --   depth, ux, uy, owner, edgeEnd, base, inside
 --     the least penetration: depth >= 0 (accurate to rounding) along the unit vector (ux, uy)
 --     that p2 must move, and the line the move must clear, for separatingPush: in polygon
 --     `owner` (1 or 2), the edge ending at vertex index edgeEnd moved to pass through vertex
 --     index base, with `inside` the cross product's sign on the side the other must leave.
--- It stays whole (about 110 lines): the per-frame path of every collision, its LuaJIT and PUC
+-- It stays whole (about 120 lines): the per-frame path of every collision, its LuaJIT and PUC
 -- set-ups inline so that only the turns and spans stay alive at the box test's exit.
-local function convexPenetration(p1, n1, p2, n2, both, rescaled)
-  if n1 < 6 or n2 < 6 then return false end
+local function convexPenetration(p1, n1, p2, n2, both, rescaled, vouched)
+  if n1 < 6 or n2 < 6 then
+    if vouched then return nil, false end
+    return false
+  end
   -- Each polygon's turn, the sign of its area decided exactly, 1 or -1 (zero area never
   -- collides), and the sizes bounding every |vx - ax| and |vy - ay| in the projections: the box
   -- around both. A NaN or infinity makes the sums non-finite; so does overflow, which is not an
@@ -775,21 +784,30 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
   local turn1, turn2, spanX, spanY
   local top1, bottom2   -- PUC Lua: where reachBoth's walk starts (see there)
   if JIT then
-    -- Each polygon's sums, then at once its turn, so that only the sign and the box are kept
-    -- while the other's sums are taken (fewer values for a side trace to inherit). Between the
-    -- loops min, max and a division, which have no side exits (the branches' exits were side
-    -- traces of shoelaceBounds' loop, past LuaJIT's 100 per loop).
-    local area1, xSq1, dSq1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
-    -- luacheck: ignore 581 (NaN must count as non-finite)
-    if not (xSq1 + dSq1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
-    turn1 = areaSignOf(p1, n1, area1, xSq1, dSq1)
-    local area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
-    -- luacheck: ignore 581 (NaN must count as non-finite)
-    if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+    local xmin1, xmax1, ymin1, ymax1, xmin2, xmax2, ymin2, ymax2
+    if vouched then
+      turn1, xmin1, xmax1, ymin1, ymax1 = vouch(p1, n1)
+      if not turn1 then return nil, false end
+      turn2, xmin2, xmax2, ymin2, ymax2 = vouch(p2, n2)
+      if not turn2 then return nil, false end
+    else
+      -- Each polygon's sums, then at once its turn, so that only the sign and the box are kept
+      -- while the other's sums are taken (fewer values for a side trace to inherit). Between
+      -- the loops min, max and a division, which have no side exits (the branches' exits were
+      -- side traces of shoelaceBounds' loop, past LuaJIT's 100 per loop).
+      local area1, xSq1, dSq1, area2, xSq2, dSq2
+      area1, xSq1, dSq1, xmin1, xmax1, ymin1, ymax1 = shoelaceBounds(p1, n1)
+      -- luacheck: ignore 581 (NaN must count as non-finite)
+      if not (xSq1 + dSq1 < huge) and holdsNonFinite(p1, n1) then return nil, "points1" end
+      turn1 = areaSignOf(p1, n1, area1, xSq1, dSq1)
+      area2, xSq2, dSq2, xmin2, xmax2, ymin2, ymax2 = shoelaceBounds(p2, n2)
+      -- luacheck: ignore 581 (NaN must count as non-finite)
+      if not (xSq2 + dSq2 < huge) and holdsNonFinite(p2, n2) then return nil, "points2" end
+      turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
+    end
     -- Both turns and the spans before the box test, so that only those four numbers are alive
     -- at its exit: the side trace that a miss takes there inherits them, where with the sums
     -- and the boxes alive it can fail to compile ("NYI: register coalescing too complex")
-    turn2 = areaSignOf(p2, n2, area2, xSq2, dSq2)
     spanX, spanY = max(xmax1, xmax2) - min(xmin1, xmin2), max(ymax1, ymax2) - min(ymin1, ymin2)
     if both and min(xmax1 - xmin2, xmax2 - xmin1, ymax1 - ymin2, ymax2 - ymin1) <= 0 then
       return false   -- (the one-sided test may still see overlap)
@@ -799,11 +817,13 @@ local function convexPenetration(p1, n1, p2, n2, both, rescaled)
     -- is 1 or -1 exactly)
     turn1, turn2 = turn1 / abs(turn1), turn2 / abs(turn2)
   else
-    -- PUC Lua: both in one call per polygon, comparisons instead of min and max (calls here)
-    local sign1, xmin1, xmax1, ymin1, ymax1, _, high1 = turnAndBounds(p1, n1)
-    if not sign1 then return nil, "points1" end
-    local sign2, xmin2, xmax2, ymin2, ymax2, low2 = turnAndBounds(p2, n2)
-    if not sign2 then return nil, "points2" end
+    -- PUC Lua: both in one call per polygon, comparisons instead of min and max (calls here);
+    -- the vouching pass returns what turnAndBounds does, nil when it cannot vouch
+    local pass = vouched and vouch or turnAndBounds
+    local sign1, xmin1, xmax1, ymin1, ymax1, _, high1 = pass(p1, n1)
+    if not sign1 then return nil, not vouched and "points1" end
+    local sign2, xmin2, xmax2, ymin2, ymax2, low2 = pass(p2, n2)
+    if not sign2 then return nil, not vouched and "points2" end
     if both and (xmax1 <= xmin2 or xmax2 <= xmin1 or ymax1 <= ymin2 or ymax2 <= ymin1) then
       return false   -- (the one-sided test may still see overlap)
     end
