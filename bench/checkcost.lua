@@ -1,8 +1,9 @@
 -- bench/checkcost.lua: where a checked polygonsCollide's time goes, per pair of the benchmark's
--- pMix polygons (bench/run.lua's workload), in interleaved rounds in one process: the convexity
--- filter alone (both polygons), the engine's first pass alone (LuaJIT: shoelaceBounds and
--- areaSignOf; PUC Lua: turnAndBounds), the unchecked and the checked call. Prints the median and
--- interquartile range of 15 rounds. Optional: another convex.lua to time its filter beside.
+-- pMix polygons (bench/run.lua's workload), in interleaved rounds in one process: the checked
+-- engine's first pass alone (convex.lua's vouching pass, both polygons), the unchecked engine's
+-- first pass alone (LuaJIT: shoelaceBounds and areaSignOf; PUC Lua: turnAndBounds), the
+-- unchecked and the checked call. Prints the median and interquartile range of 15 rounds.
+-- Optional: another convex.lua to time its vouching pass beside.
 --   luajit bench/checkcost.lua [passes] [other/polygon/convex.lua]
 --   lua5.4 bench/checkcost.lua 100
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
@@ -19,19 +20,19 @@ local N = #A
 local sb, aso, tab = kernel.shoelaceBounds, kernel.areaSignOf, kernel.turnAndBounds
 local checked, unchecked = polygon.polygonsCollide, collide.unchecked.polygonsCollide
 
-local function filterTimer(filter)
+local function passTimer(pass)
   return function()
     local c = 0
     for i = 1, N do
       local p, q = A[i], B[i]
-      if filter(p, #p) then c = c + 1 end
-      if filter(q, #q) then c = c + 1 end
+      if pass(p, #p) then c = c + 1 end
+      if pass(q, #q) then c = c + 1 end
     end
     return c
   end
 end
 local tests = {
-  filter = filterTimer(convex.vouch),
+  vouching = passTimer(convex.vouch),
   firstPass = kernel.JIT and function()
     local c = 0
     for i = 1, N do
@@ -58,10 +59,10 @@ local tests = {
     return c
   end,
 }
-local names = { "filter", "firstPass", "unchecked", "checked" }
+local names = { "vouching", "firstPass", "unchecked", "checked" }
 if arg[2] then
-  tests.otherFilter = filterTimer(assert(loadfile(arg[2]))("polygon.convex").vouch)
-  table.insert(names, 2, "otherFilter")
+  tests.otherVouching = passTimer(assert(loadfile(arg[2]))("polygon.convex").vouch)
+  table.insert(names, 2, "otherVouching")
 end
 local times, sink = {}, 0
 for _, k in ipairs(names) do times[k] = {} end

@@ -186,22 +186,21 @@ end
 -- of two differences that underflows must not pass for a zero): LuaJIT's scales a nonzero
 -- difference, at least 2^-1074, by 2^537 twice, to at least 1 (or inf); PUC Lua's looks again
 -- at a product of 0 (zeroFlips).
--- For small polygons the pass is written out for each size (a loop of 3 to 8 steps costs its
--- entry and exit more than its steps; on LuaJIT its copies in the callers' traces failed to
--- compile, "NYI: register coalescing too complex"), as text built below and compiled once at
--- load: one body per size, no padding; up to 8 vertices on LuaJIT, 16 on PUC Lua (vouchJit,
--- vouchPuc). Beyond, a loop. Two dialects, the same
--- answers (spec/convex_bound_hard_spec.lua runs both on every interpreter). Both read each
--- coordinate by adding 0.0: Lua 5.3 integers are converted, and an entry that is not a number
--- raises Lua's own arithmetic error, as in the engines without the check.
--- LuaJIT's takes the box, the turns' extremes and the x differences' signs with min and max
--- (single instructions there) and has one branch, the verdict; the turns' sum carries a NaN
--- (min and max may drop one) into it. PUC Lua's compares (min and max are calls there) and tests
--- each turn against the bound once the first turn has set the sign (a NaN fails the test); it
--- counts the changes by the products of consecutive x
--- differences (2 a negative product, 1 a zero), the rare product of 0 by zeroFlips. Up to 4
--- vertices no windings are counted: a polygon whose turns agree turns through less than 4
--- half turns there, so it winds once.
+-- Two bodies, the same answers (spec/convex_bound_hard_spec.lua runs both, and their loops, on
+-- every interpreter); both read each coordinate by adding 0.0, so Lua 5.3 integers are
+-- converted and an entry that is not a number raises Lua's own arithmetic error, as in the
+-- engines without the check. Beyond their sizes, loops.
+-- LuaJIT's (vouchJit) is one body for 3 to 8 vertices, the last vertex repeated (see there),
+-- with no branch but the verdict: the box, the turns' extremes and the x differences' signs by
+-- min and max (single instructions there); the turns' sum carries a NaN (min and max may drop
+-- one) into the verdict.
+-- PUC Lua's (vouchPuc) is written out for each size from 3 to 16 vertices (no loop's moves and
+-- tests, no padding), as text built below and compiled once at load: comparisons (min and max
+-- are calls there), each turn tested against the bound once the first turn has set the sign (a
+-- NaN fails the test), the changes counted by the products of consecutive x differences (2 a
+-- negative product, 1 a zero; the rare product of 0 by zeroFlips). Up to 4 vertices it counts
+-- no windings: a polygon whose turns agree turns through less than 4 half turns there, so it
+-- winds once.
 local TINY = 2^-900   -- below every turn of the exact range worth trusting to the filter
 local SHARED_BOUND = 2 * CROSS_BOUND   -- times spanX spanY
 local loadChunk = rawget(_G, "loadstring") or load
@@ -218,7 +217,7 @@ end
 -- The source of the pass for m vertices (3 to 8) in one dialect ("jit" or "puc"). Vertex k is
 -- xk, yk; edge k, from vertex k to vertex k + 1 (edge m back to vertex 1), is exk, eyk; the turn
 -- at vertex k + 1 is edge k x edge k + 1.
-local function vouchSource(m, dialect)
+local function vouchSource(m)
   local out = {}
   local function line(format, ...) out[#out + 1] = format:format(...) end
   local function after(k) return k % m + 1 end
@@ -229,57 +228,37 @@ local function vouchSource(m, dialect)
   end
   line("local min, max, SHARED_BOUND, TINY, zeroFlips = ...")
   line("return function(p)")
-  if dialect == "jit" then
-    for k = 1, m do line("local x%d, y%d = p[%d] + 0.0, p[%d] + 0.0", k, k, 2 * k - 1, 2 * k) end
-    line("local xmin, xmax = min(%s), max(%s)", each("x#"), each("x#"))
-    line("local ymin, ymax = min(%s), max(%s)", each("y#"), each("y#"))
-    line("local %s = %s", each("ex#, ey#"), each("x#n - x#, y#n - y#"))
-    line("local %s = %s", each("t#"), each("ex# * ey#n - ey# * ex#n"))
-    local winds = ""
-    if m > 4 then
-      line("local %s = %s", each("sx#"), each("min(1, max(-1, ex# * 2^537 * 2^537))"))
-      line("local agree = %s", each("sx# * sx#n", m, " + "))
-      winds = (" and agree == %d"):format(m - 4)
-    end
-    line("local lo, hi, sum = min(%s), max(%s), %s", each("t#"), each("t#"), each("t#", m, " + "))
-    line("local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY")
-    line("if max(lo, -hi) > bound%s and sum - sum == 0 then", winds)
-    line("  return min(1, max(-1, (lo + hi) * 2^1000)), xmin, xmax, ymin, ymax")
-    line("end")
-    line("return nil")
-  else
-    line("local x1, y1 = p[1] + 0.0, p[2] + 0.0")
-    line("local xmin, xmax, ymin, ymax, low, high = x1, x1, y1, y1, 1, 1")
-    for k = 2, m do
-      line("local x%d, y%d = p[%d] + 0.0, p[%d] + 0.0", k, k, 2 * k - 1, 2 * k)
-      line("if x%d < xmin then xmin = x%d elseif x%d > xmax then xmax = x%d end", k, k, k, k)
-      line("if y%d < ymin then ymin, low = y%d, %d elseif y%d > ymax then ymax, high = y%d, %d end",
-        k, k, 2 * k - 1, k, k, 2 * k - 1)
-    end
-    line("local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY")
-    line("local %s = %s", each("ex#, ey#"), each("x#n - x#, y#n - y#"))
-    if m > 4 then
-      line("local flips, xx = 0, 0.0")
-      for k = 1, m do
-        line("xx = ex%d * ex%d", k, after(k))
-        line("if xx <= 0 then flips = flips + (xx < 0 and 2 or zeroFlips(ex%d, ex%d)) end", k, after(k))
-      end
-      line("if flips ~= 4 then return nil end")
-    end
-    -- the turn at vertex 1 sets the sign; every turn then surely of it
-    line("local turn = 1.0")
-    line("if ex%d * ey1 - ey%d * ex1 < 0 then turn, bound = -1.0, -bound end", m, m)
-    line("if turn > 0 then")
-    for k = 1, m do
-      line("  if not (ex%d * ey%d - ey%d * ex%d > bound) then return nil end", k, after(k), k, after(k))
-    end
-    line("else")
-    for k = 1, m do
-      line("  if not (ex%d * ey%d - ey%d * ex%d < bound) then return nil end", k, after(k), k, after(k))
-    end
-    line("end")
-    line("return turn, xmin, xmax, ymin, ymax, low, high")
+  line("local x1, y1 = p[1] + 0.0, p[2] + 0.0")
+  line("local xmin, xmax, ymin, ymax, low, high = x1, x1, y1, y1, 1, 1")
+  for k = 2, m do
+    line("local x%d, y%d = p[%d] + 0.0, p[%d] + 0.0", k, k, 2 * k - 1, 2 * k)
+    line("if x%d < xmin then xmin = x%d elseif x%d > xmax then xmax = x%d end", k, k, k, k)
+    line("if y%d < ymin then ymin, low = y%d, %d elseif y%d > ymax then ymax, high = y%d, %d end",
+      k, k, 2 * k - 1, k, k, 2 * k - 1)
   end
+  line("local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY")
+  line("local %s = %s", each("ex#, ey#"), each("x#n - x#, y#n - y#"))
+  if m > 4 then
+    line("local flips, xx = 0, 0.0")
+    for k = 1, m do
+      line("xx = ex%d * ex%d", k, after(k))
+      line("if xx <= 0 then flips = flips + (xx < 0 and 2 or zeroFlips(ex%d, ex%d)) end", k, after(k))
+    end
+    line("if flips ~= 4 then return nil end")
+  end
+  -- the turn at vertex 1 sets the sign; every turn then surely of it
+  line("local turn = 1.0")
+  line("if ex%d * ey1 - ey%d * ex1 < 0 then turn, bound = -1.0, -bound end", m, m)
+  line("if turn > 0 then")
+  for k = 1, m do
+    line("  if not (ex%d * ey%d - ey%d * ex%d > bound) then return nil end", k, after(k), k, after(k))
+  end
+  line("else")
+  for k = 1, m do
+    line("  if not (ex%d * ey%d - ey%d * ex%d < bound) then return nil end", k, after(k), k, after(k))
+  end
+  line("end")
+  line("return turn, xmin, xmax, ymin, ymax, low, high")
   line("end")
   return table.concat(out, "\n")
 end
@@ -299,6 +278,66 @@ local function vouchLoopJit(points, n)
     xmin, xmax, ymin, ymax = min(xmin, cx), max(xmax, cx), min(ymin, cy), max(ymax, cy)
     bx, by, ex, ey, sx = cx, cy, fx, fy, tx
   end
+  local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY
+  if max(lo, -hi) > bound and agree == n / 2 - 4 and sum - sum == 0 then
+    return min(1, max(-1, (lo + hi) * 2^1000)), xmin, xmax, ymin, ymax
+  end
+  return nil
+end
+
+-- LuaJIT's pass up to 8 vertices, one body for every size (no branch on the size: the traces of
+-- a branch per size, each a copy of the rest of the caller, made whole collision calls fall back
+-- to the interpreter in some processes, 4 to 36 times slower). As kernel's shoelaceBounds, slot
+-- k holds vertex min(k, m), the last repeated for fewer; edge k runs from slot k to slot k + 1,
+-- edge 8 back to slot 1 (the closing edge), and el is the edge into vertex m. The turns: at
+-- vertex 1 (edge 8 x edge 1), at slots 2 to 7 (edge k - 1 x edge k), at vertex m (el x edge 8).
+-- A slot from m on (2k >= n) turns between repeated vertices, 0: lifted out of lo and hi by a
+-- pad (2^1000, beyond every bound below the 2^1023 where the turns' sum overflows); its edges
+-- are 0, so are their signs and products in the windings' sum.
+local PAD = 2^1000
+
+local function vouchJit(points, n)
+  if n > 16 or n < 6 then
+    if n < 6 then return nil end
+    return vouchLoopJit(points, n)
+  end
+  local x1, y1 = points[1] + 0.0, points[2] + 0.0
+  local x2, y2 = points[3] + 0.0, points[4] + 0.0
+  local x3, y3 = points[5] + 0.0, points[6] + 0.0
+  local j = min(7, n - 1)
+  local x4, y4 = points[j] + 0.0, points[j + 1] + 0.0
+  j = min(9, n - 1)
+  local x5, y5 = points[j] + 0.0, points[j + 1] + 0.0
+  j = min(11, n - 1)
+  local x6, y6 = points[j] + 0.0, points[j + 1] + 0.0
+  j = min(13, n - 1)
+  local x7, y7 = points[j] + 0.0, points[j + 1] + 0.0
+  local x8, y8 = points[n - 1] + 0.0, points[n] + 0.0
+  local xmin, xmax = min(x1, x2, x3, x4, x5, x6, x7, x8), max(x1, x2, x3, x4, x5, x6, x7, x8)
+  local ymin, ymax = min(y1, y2, y3, y4, y5, y6, y7, y8), max(y1, y2, y3, y4, y5, y6, y7, y8)
+  local e1x, e1y, e2x, e2y = x2 - x1, y2 - y1, x3 - x2, y3 - y2
+  local e3x, e3y, e4x, e4y = x4 - x3, y4 - y3, x5 - x4, y5 - y4
+  local e5x, e5y, e6x, e6y = x6 - x5, y6 - y5, x7 - x6, y7 - y6
+  local e7x, e7y, e8x, e8y = x8 - x7, y8 - y7, x1 - x8, y1 - y8
+  local elx, ely = x8 - points[n - 3], y8 - points[n - 2]
+  local t1, t2 = e8x * e1y - e8y * e1x, e1x * e2y - e1y * e2x
+  local t3, t4 = e2x * e3y - e2y * e3x, e3x * e4y - e3y * e4x
+  local t5, t6 = e4x * e5y - e4y * e5x, e5x * e6y - e5y * e6x
+  local t7, tm = e6x * e7y - e6y * e7x, elx * e8y - ely * e8x
+  local np = n * PAD   -- slot k's pad: PAD when 2k >= n, else 0
+  local p3, p4 = max(0, min(PAD, 7 * PAD - np)), max(0, min(PAD, 9 * PAD - np))
+  local p5, p6 = max(0, min(PAD, 11 * PAD - np)), max(0, min(PAD, 13 * PAD - np))
+  local p7 = max(0, min(PAD, 15 * PAD - np))
+  local lo = min(t1, t2, t3 + p3, t4 + p4, t5 + p5, t6 + p6, t7 + p7, tm)
+  local hi = max(t1, t2, t3 - p3, t4 - p4, t5 - p5, t6 - p6, t7 - p7, tm)
+  local sum = ((t1 + t2) + (t3 + t4)) + ((t5 + t6) + (t7 + tm))
+  local s1, s2 = min(1, max(-1, e1x * 2^537 * 2^537)), min(1, max(-1, e2x * 2^537 * 2^537))
+  local s3, s4 = min(1, max(-1, e3x * 2^537 * 2^537)), min(1, max(-1, e4x * 2^537 * 2^537))
+  local s5, s6 = min(1, max(-1, e5x * 2^537 * 2^537)), min(1, max(-1, e6x * 2^537 * 2^537))
+  local s7, s8 = min(1, max(-1, e7x * 2^537 * 2^537)), min(1, max(-1, e8x * 2^537 * 2^537))
+  local sl = min(1, max(-1, elx * 2^537 * 2^537))
+  local agree = ((s8 * s1 + s1 * s2) + (s2 * s3 + s3 * s4)) + ((s4 * s5 + s5 * s6)
+    + (s6 * s7 + sl * s8))
   local bound = SHARED_BOUND * ((xmax - xmin) * (ymax - ymin)) + TINY
   if max(lo, -hi) > bound and agree == n / 2 - 4 and sum - sum == 0 then
     return min(1, max(-1, (lo + hi) * 2^1000)), xmin, xmax, ymin, ymax
@@ -339,39 +378,21 @@ local function vouchLoopPuc(points, n)
   return turn, xmin, xmax, ymin, ymax, low, high
 end
 
--- The written-out bodies of one dialect, from 3 to `largest` vertices, by their count of
--- numbers (6 to 2 largest).
-local function vouchBodies(dialect, largest)
+-- PUC Lua's written-out bodies, from 3 to `largest` vertices, by their count of numbers (6 to
+-- 2 largest).
+local function vouchBodies(largest)
   local byCount = {}
   for m = 3, largest do
-    local chunk = assert(loadChunk(vouchSource(m, dialect), "=polygon/convex.lua vouch" .. m))
+    local chunk = assert(loadChunk(vouchSource(m), "=polygon/convex.lua vouch" .. m))
     byCount[2 * m] = chunk(min, max, SHARED_BOUND, TINY, zeroFlips)
   end
   return byCount
 end
 
--- The pass for any size. LuaJIT's: bodies up to 8 vertices (with bodies up to 16 the circle
--- benchmark's traces filled LuaJIT's machine code area, "failed to allocate mcode memory"), each
--- chosen by a comparison (a different function from a table at one call site is a trace exit).
--- PUC Lua's: bodies up to 16 vertices, from a table (one lookup against a chain of tests).
-local vouchJit
-do
-  local byCount = vouchBodies("jit", 8)
-  local v3, v4, v5, v6, v7, v8 = byCount[6], byCount[8], byCount[10], byCount[12], byCount[14],
-    byCount[16]
-  vouchJit = function(points, n)
-    if n == 8 then return v4(points) end   -- boxes first
-    if n > 16 then return vouchLoopJit(points, n) end
-    if n == 16 then return v8(points) elseif n == 14 then return v7(points)
-    elseif n == 12 then return v6(points) elseif n == 10 then return v5(points)
-    elseif n == 6 then return v3(points) end
-    return nil
-  end
-end
-
+-- PUC Lua's pass for any size: its body from a table (one lookup against a chain of tests).
 local vouchPuc
 do
-  local byCount = vouchBodies("puc", 16)
+  local byCount = vouchBodies(16)
   vouchPuc = function(points, n)
     local body = byCount[n]
     if body then return body(points) end
