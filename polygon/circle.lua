@@ -5,6 +5,7 @@ local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local check = require(_PACKAGE .. ".check")
 local sat = require(_PACKAGE .. ".sat")
+local convex = require(_PACKAGE .. ".convex")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
 local powerScale, EPS, twoDiff = kernel.powerScale, kernel.EPS, kernel.twoDiff
@@ -16,6 +17,7 @@ local areaSignOf, areaSign = kernel.areaSignOf, kernel.areaSign
 local checkNumber, checkFiniteNumber = check.checkNumber, check.checkFiniteNumber
 local checkRadius = check.checkRadius
 local unit = sat.unit
+local vouch, CROSS_BOUND = convex.vouch, kernel.CROSS_BOUND
 
 local M = {}
 
@@ -560,7 +562,15 @@ end
 local LIFT = 2^537
 -- One pass with the sign guessed (1.0 or -1.0): near, nearSq, farSq, and the farthest edge
 -- as if the area's sign were `guess`, its key, and the sum of the cross products (below).
-local function walkGuessed(points, n, cx, cy, guess)
+-- checks: the convexity check of polygonCircleCollideV in the same pass, convex.lua's vouching
+-- pass for this walk: the turns (e x f of the edges into and out of each vertex) and the
+-- windings (the exact signs of the x differences; see convex.lua), and in place of the sum,
+-- 1 when every turn is surely of guess's sign and the polygon winds once (it is convex, and
+-- guess is its area's sign), else 0. The turns' error bound comes from farSq, not from a box:
+-- every vertex lies within sqrt(farSq) (rounded) of the centre, so every edge's difference is
+-- below 2 sqrt(farSq) and |l| + |r| below 8 farSq, times 1 + a few eps (9 covers it); with
+-- the circle far from a small polygon it cannot vouch, and the caller checks the careful way.
+local function walkGuessed(points, n, cx, cy, guess, checks)
   local nearSq, farSq, near = huge, 0.0, 1
   -- the farthest edge's key and index: an edge's key is outside |outside| / |b - a|^2,
   -- outside = crossed * sign, less 2^1000 for a repeated vertex (|b - a|^2 == 0): below
@@ -569,6 +579,11 @@ local function walkGuessed(points, n, cx, cy, guess)
   local turnSum = 0.0
   local px, py = points[n - 1], points[n]
   local ax, ay = px - cx, py - cy
+  local lo, hi, agree, pex, pey, psx = huge, -huge, 0, 0.0, 0.0, 0
+  if checks then   -- the edge into vertex m
+    pex, pey = px - points[n - 3], py - points[n - 2]
+    psx = min(1, max(-1, pex * 2^537 * 2^537))
+  end
   for i = 1, n - 1, 2 do
     local qx, qy = points[i], points[i + 1]
     local bx, by = qx - cx, qy - cy
@@ -584,20 +599,28 @@ local function walkGuessed(points, n, cx, cy, guess)
       - (1 - min(lengthSq * LIFT * LIFT, 1)) * 2^1000
     best = best + (i - best) * min(max(key - bestKey, 0) * LIFT * LIFT, 1)
     bestKey = max(bestKey, key)
+    if checks then
+      local turn, sx = pex * ey - pey * ex, min(1, max(-1, ex * 2^537 * 2^537))
+      lo, hi, agree = min(lo, turn), max(hi, turn), agree + psx * sx
+      pex, pey, psx = ex, ey, sx
+    end
     px, py, ax, ay = qx, qy, bx, by
+  end
+  if checks then
+    -- (the sum carries a NaN or an overflow, which min and max may drop)
+    if max(lo, -hi) > 9 * CROSS_BOUND * farSq + 2^-900 and agree == n / 2 - 4
+        and turnSum - turnSum == 0 and (lo + hi) * guess > 0 then
+      return near, nearSq, farSq, best, bestKey, 1
+    end
+    return near, nearSq, farSq, best, bestKey, 0
   end
   return near, nearSq, farSq, best, bestKey, turnSum
 end
 
 -- The edge walk for LuaJIT: two branch-free passes at most (walkGuessed), the sign filtered
--- from the cross products' sum; one pass when the sign is known (`known`: 1.0 or -1.0, the
--- vouching pass's, convex.lua).
-local function edgeWalkJit(points, n, cx, cy, _, known)
-  if known then
-    local near, nearSq, farSq, best, bestKey = walkGuessed(points, n, cx, cy, known)
-    if bestKey - bestKey ~= 0 then best = 0 end   -- as below
-    return known, near, nearSq, farSq, best
-  end
+-- from the cross products' sum. checks: the convexity check in the same pass (walkGuessed's);
+-- when it cannot vouch, feature -3 (the caller checks the careful way and walks again).
+local function edgeWalkJit(points, n, cx, cy, _, checks)
   -- the guess: the sign of the turn at vertex 1, without a branch (1 when it is 0); it is
   -- the area's for a convex polygon
   local guess
@@ -605,6 +628,12 @@ local function edgeWalkJit(points, n, cx, cy, _, known)
     local x0, y0, x1, y1 = points[n - 1], points[n], points[1], points[2]
     local turn = (x1 - x0) * (points[4] - y1) - (y1 - y0) * (points[3] - x1)
     guess = 1 - 2 * min(max(-turn * LIFT * LIFT, 0), 1)
+  end
+  if checks then
+    local near, nearSq, farSq, best, bestKey, vouched = walkGuessed(points, n, cx, cy, guess, true)
+    if vouched == 0 then return 0.0, 1, 0.0, 0.0, -3 end
+    if bestKey - bestKey ~= 0 then best = 0 end   -- as below
+    return guess, near, nearSq, farSq, best
   end
   local near, nearSq, farSq, best, bestKey, turnSum = walkGuessed(points, n, cx, cy, guess)
   -- The sum of the cross products (b - a) x a = b x a is minus twice the area of the polygon
@@ -630,15 +659,19 @@ local function edgeWalkJit(points, n, cx, cy, _, known)
   return sign, near, nearSq, farSq, best
 end
 
--- The edge walk for PUC Lua: one pass with branches, the sign from the exact kernel first
--- (unless known, as in edgeWalkJit).
+-- The edge walk for PUC Lua: one pass with branches, the sign from the exact kernel first;
+-- checks: from convex.lua's vouching pass instead (feature -3 when it cannot vouch, as in
+-- edgeWalkJit).
 -- It also stops at the first edge whose line the circle (radius r) is certainly
 -- beyond, returning best = -1: an edge's squared signed distance is off by less than
 -- 32 eps (r^2 + the squared distances of its ends), so a key past r^2 by that much means
 -- the circle is apart, as the full pass would decide too (LuaJIT's loop stays branch-free).
-local function edgeWalkPuc(points, n, cx, cy, r, known)
-  local sign = known   -- else exactTurn written out (a call costs PUC Lua more than these lines)
-  if not sign then
+local function edgeWalkPuc(points, n, cx, cy, r, checks)
+  local sign
+  if checks then
+    sign = vouch(points, n)
+    if not sign then return 0.0, 1, 0.0, 0.0, -3 end
+  else   -- exactTurn written out (a call costs PUC Lua more than these lines)
     local area, sumX2, sumD2 = shoelace(points, n)
     if area - area ~= 0 then return 0.0, 1, 0.0, 0.0, -2 end
     local turn = areaSignOf(points, n, area, sumX2, sumD2)
@@ -717,9 +750,10 @@ end
 -- The collision of the circle (cx, cy, r), r > 0 and every number finite, with the convex
 -- polygon points[1..n], n >= 6: overlap, px, py (move the circle by px, py), false, or nil
 -- when the polygon holds a non-finite coordinate. One convex polygon; polygonCircleCollideV
--- is a thin wrapper around it, so that a compound shape can call it once per part. known: the
--- sign of the polygon's area (1.0 or -1.0) when the caller has it (the vouching pass of
--- convex.lua), else nil.
+-- is a thin wrapper around it, so that a compound shape can call it once per part. checks:
+-- the convexity check of polygonCircleCollideV in the engine's first pass (see edgeWalk);
+-- nil, "unsure" when it cannot vouch for the polygon (the caller checks it the careful way and
+-- calls again without checks).
 --
 -- A disc against a convex polygon needs no projections. The least penetration is r minus the
 -- signed distance from the centre to the polygon, and that distance is the centre's largest
@@ -730,14 +764,15 @@ end
 --   the edge walk: one pass for the nearest vertex and the edge line farthest behind the centre,
 --   the nearest-vertex axis: whether the centre is in that vertex's corner region,
 --   the exact filter: within rounding of touching, discMeetsExact decides.
-function circleCollision(points, n, cx, cy, r, known)
+function circleCollision(points, n, cx, cy, r, checks)
   -- (the do-blocks here keep the frame small: on Lua 5.4 a larger one can make the stack grow
   -- again, allocating, after every full collection)
   -- sign: 1 or -1, makes the signed distances positive outside. feature: the edge whose line
   -- lies farthest behind the centre (the index of its end), below minus the nearest vertex's
   -- index when the centre lies in that vertex's corner region
-  local sign, near, nearSq, farSq, feature = edgeWalk(points, n, cx, cy, r, known)
+  local sign, near, nearSq, farSq, feature = edgeWalk(points, n, cx, cy, r, checks)
   if feature < 0 then   -- certainly apart (PUC only), a zero area or a non-finite one (see edgeWalk)
+    if feature == -3 then return nil, "unsure" end
     if feature == -2 then   -- an infinite or NaN area: a non-finite coordinate or overflow
       local overlap, px, py = circleCollisionScaled(points, n, cx, cy, r)
       return overlap, px, py

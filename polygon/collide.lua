@@ -14,7 +14,7 @@ local checkRadius = check.checkRadius
 local convexPenetration, separatingPush = sat.convexPenetration, sat.separatingPush
 local collideParts, collideCircleParts = compound.collideParts, compound.collideCircleParts
 local circleCollision = circle.circleCollision
-local checkConvex, refuseEntries, vouch = convex.checkConvex, convex.refuseEntries, convex.vouch
+local checkConvex, refuseEntries = convex.checkConvex, convex.refuseEntries
 local objectPoints = object.objectPoints
 
 local M = {}
@@ -255,16 +255,18 @@ local function build(T, checked)
       if checked then checkConvex(points, n, fname, "points", 2) end
       return false
     end
-    -- checked: the vouching pass (convex.lua) gives the engine the polygon's sign, or the
-    -- careful way raises for a concave polygon (or a non-finite coordinate) before the engine
-    local known = checked and vouch(points, n)
-    if checked and not known then checkConvex(points, n, fname, "points", 2) end
     -- converted in place: on LuaJIT the numbers of this frame and of circleCollision's are then
     -- the same (see circleCollision: fewer for a side trace to take over)
     cx = cx + 0.0
     cy = cy + 0.0
     radius = radius + 0.0
-    local overlap, dx, dy = circleCollision(points, n, cx, cy, radius, known or nil)
+    -- checked: the engine's first pass vouches that the polygon is convex, or the careful way
+    -- (raises for a concave polygon or a non-finite coordinate) and the engine again
+    local overlap, dx, dy = circleCollision(points, n, cx, cy, radius, checked)
+    if overlap == nil and dx == "unsure" then
+      checkConvex(points, n, fname, "points", 2)
+      overlap, dx, dy = circleCollision(points, n, cx, cy, radius)
+    end
     if overlap == nil then error(fname .. ": points holds a non-finite coordinate", 2) end
     if not overlap then return false end
     return overlap, dx, dy
