@@ -166,7 +166,8 @@ local function convexCareful(points, n, fname, argname, level)
 end
 
 -- THE VOUCHING PASS: the collision engines' first pass when they check (sat.lua's
--- convexPenetration, circle.lua's circleCollision), fused with the convexity filter: one read of
+-- convexPenetration; circle.lua's edge walk on PUC Lua, whose LuaJIT walk takes the same check in
+-- its own loop), fused with the convexity filter: one read of
 -- the vertices gives the polygon's bounding box and its turns, and when every turn is surely of
 -- one sign and the polygon winds once, its orientation too (a convex polygon's area has its
 -- turns' sign), so the engine needs no shoelace pass of its own. Returns turn (1.0 or -1.0),

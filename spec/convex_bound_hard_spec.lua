@@ -249,3 +249,30 @@ describe("windings and non-finite entries", function()
     end
   end)
 end)
+
+-- polygonCircleCollideV takes the check in its edge walk on LuaJIT, its error bound from the
+-- squared distance to the farthest vertex: a circle far from a small polygon leaves the
+-- decision to the careful walk. Either way the same polygons are taken and refused.
+describe("the circle's check, near and far", function()
+  it("takes and refuses as the oracle says, the circle at any distance", function()
+    local rng = prng.new(5150)
+    local taken, refused = 0, 0
+    for _ = 1, 300 do
+      local m = rng:int(3, 12)
+      local p = shapes.convex(rng, m, rng:range(-50, 50), rng:range(-50, 50), rng:range(1, 40), 0.3)
+      if rng:int(0, 2) == 0 then   -- a vertex pushed inward past its neighbours' chord: concave
+        local i = 2 * rng:int(1, m) - 1
+        p[i], p[i + 1] = p[i] * 0.2, p[i + 1] * 0.2
+      end
+      if rng:int(0, 1) == 1 then p = shapes.reverse(p) end
+      local takes = oracle.polygonType(p) ~= "concave"
+      for _, d in ipairs({ 0, 30, 1e6, 1e12, 1e200 }) do
+        local ok, err = pcall(polygon.polygonCircleCollideV, p, d, -d, rng:range(0.5, 20) + d / 2)
+        assert.are.equal(takes, ok, table.concat(p, ", ") .. " at " .. d .. ": " .. tostring(err))
+        if not ok then assert.is_truthy(tostring(err):find("is not convex", 1, true)) end
+      end
+      if takes then taken = taken + 1 else refused = refused + 1 end
+    end
+    assert.is_true(taken > 100 and refused > 30, ("taken %d, refused %d"):format(taken, refused))
+  end)
+end)
