@@ -17,6 +17,7 @@ local checkPoints = check.checkPoints
 local shapeBehind = check.shapeBehind
 local validate = object.validate
 local orient, same, leftmostFirst, newArray = sweep.orient, sweep.same, sweep.leftmostFirst, sweep.newArray
+local scratch = sweep.scratch   -- arrays kept between calls (slots 1 to 9 are sweep.lua's)
 local anyCrossing, ringsTrouble = sweep.anyCrossing, sweep.ringsTrouble
 
 local M = {}
@@ -55,7 +56,7 @@ local turn              -- the sign of the outer ring's area: > 0 clockwise on s
 local function newNode(x, y, id)
   nodeCount = nodeCount + 1
   local k = nodeCount
-  inX[k], inY[k], nodeX[k], nodeY[k], origin[k] = x, y, x + 0.0, y + 0.0, id
+  inX[k], inY[k], nodeX[k], nodeY[k], origin[k], gone[k] = x, y, x + 0.0, y + 0.0, id, false
   return k
 end
 
@@ -191,8 +192,8 @@ local function buildBands(starts)
     if total <= BAND_LOAD * n or bandCount == 1 then break end
     bandCount = max(floor(bandCount / 2), 1)
   end
-  bandHead, bandEntries = {}, 0
-  bandNext, bandNode = newArray(BAND_LOAD * capacity), newArray(BAND_LOAD * capacity)
+  bandHead, bandEntries = scratch(10, bandCount), 0
+  bandNext, bandNode = scratch(11, BAND_LOAD * capacity), scratch(12, BAND_LOAD * capacity)
   for b = 1, bandCount do bandHead[b] = 0 end
   for _, s in ipairs(starts) do
     local k = s
@@ -344,8 +345,8 @@ local function buildGrid(s)
   gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
   spanMargin = gridFine and 2 * SPAN_MARGIN * cellSize or huge
   local cells = gridRows * gridCols
-  local cellOf = newArray(capacity)
-  cellStart = newArray(cells + 1)
+  local cellOf = scratch(13, capacity)
+  cellStart = scratch(14, cells + 1)
   for c = 1, cells + 1 do cellStart[c] = 0 end
   k = s
   repeat
@@ -355,9 +356,11 @@ local function buildGrid(s)
   until k == s
   local at = 1   -- the counts become each cell's first entry, then (filling) its next one
   for c = 1, cells + 1 do cellStart[c], at = at, at + cellStart[c] end
-  entryX, entryY, entryNode = newArray(count), newArray(count), newArray(count)
-  entryOf = newArray(capacity)
-  listed, shared, reflexSeen, listStale = newArray(capacity), newArray(capacity), newArray(capacity), false
+  entryX, entryY, entryNode = scratch(15, count), scratch(16, count), scratch(17, count)
+  entryOf = scratch(18, capacity)
+  listed, shared, reflexSeen, listStale = scratch(19, capacity), scratch(20, capacity), scratch(21, capacity), false
+  k = s
+  repeat listed[k], shared[k], reflexSeen[k] = false, false, false; k = nextNode[k] until k == s
   k = s
   repeat
     local cell = cellOf[k]
@@ -701,12 +704,13 @@ function build(points, n, holes, checkOnly)
   turn = turn < 0 and -1 or 1
   capacity = n / 2
   for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
-  nodeX, nodeY, inX, inY = newArray(capacity), newArray(capacity), newArray(capacity), newArray(capacity)
-  origin, nextNode = newArray(capacity), newArray(capacity)
-  prevNode, gone = newArray(capacity), newArray(capacity)
+  sweep.usePool(capacity)
+  nodeX, nodeY, inX, inY = scratch(22, capacity), scratch(23, capacity), scratch(24, capacity), scratch(25, capacity)
+  origin, nextNode = scratch(26, capacity), scratch(27, capacity)
+  prevNode, gone = scratch(28, capacity), scratch(29, capacity)
   nodeCount = 0
   listed = nil
-  nodeRing, twin, joined = newArray(capacity), newArray(capacity), { true }
+  nodeRing, twin, joined = scratch(30, capacity), scratch(31, capacity), { true }
   sweep.bind(nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn, twin)
   local outer = linkRing(points, n, 1, false, 1)
   if flat then
