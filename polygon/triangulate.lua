@@ -608,7 +608,9 @@ local function clipEars(s, tris)
   while ringCount > 2 do
     local a, c = prevNode[ear], nextNode[ear]
     if listStale then buildGrid(ear) end
-    if orient(a, ear, c) > 0 and isEar(ear) then
+    -- reflexSeen: not strictly convex, known without a test (most nodes a lap passes over)
+    local turning = not reflexSeen[ear] and orient(a, ear, c) > 0
+    if turning and isEar(ear) then
       local t = #tris
       tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
       unlink(ear); ringCount = ringCount - 1
@@ -620,6 +622,7 @@ local function clipEars(s, tris)
       stop = ear
       strict = true
     else
+      if not turning then reflexSeen[ear] = true end
       ear = c
       if ear == stop then
         if not strict then return false end
