@@ -251,6 +251,7 @@ local function sweepEvents(starts)
 end
 
 local status, lastPlace   -- the edges in order along the line; where the last event's edge was
+local slot              -- on LuaJIT, slot[k]: where edge k is in status
 local touchedAt         -- touchedAt[r]: the edges whose inside holds the place of rank r, or nil
 
 -- Notes the edges next to place `from` of the order, going `step` (-1 or 1), that hold node p:
@@ -359,6 +360,7 @@ local function sweep(starts)
   -- of 10,000 vertices: the shorter side moves 200 entries a vertex where one side moved 440.)
   local m, bottom = 0, JIT and eventCount or 0
   status, touchedAt = scratch(9, 2 * eventCount + 2), {}
+  slot = JIT and scratch(10, capacity)
   for j = 1, 2 * eventCount + 2 do status[j] = nil end   -- a reused array: empty past the order
   lastPlace = bottom + 1
   local i = 1
@@ -366,6 +368,14 @@ local function sweep(starts)
     local e = events[i]
     local s = e > 0 and e or -e
     local lo = besideLast(s, e > 0)
+    if lo == 0 and JIT and e < 0 then
+      -- an edge leaving: its place, kept as the order shifts, when the edges beside it lie
+      -- below and above it (else the search, which may find the order inconsistent). The
+      -- search took some 6 halvings for most edges leaving a noisy circle
+      lo = slot[s]
+      local below, above = status[lo - 1], status[lo + 1]
+      if (below and edgeOrder(s, below) < 0) or (above and edgeOrder(s, above) > 0) then lo = 0 end
+    end
     if lo == 0 then   -- the first place whose edge does not lie below s
       local hi
       lo, hi = bottom + 1, bottom + m + 1
@@ -378,12 +388,18 @@ local function sweep(starts)
       if not JIT then   -- on PUC Lua table.insert's C loop is faster than a loop in Lua
         table.insert(status, lo, s)
       elseif lo - bottom - 1 < bottom + m + 1 - lo then   -- fewer entries below: shift those down
-        for j = bottom + 1, lo - 1 do status[j - 1] = status[j] end
+        for j = bottom + 1, lo - 1 do
+          local f = status[j]
+          status[j - 1], slot[f] = f, j - 1
+        end
         bottom, lo = bottom - 1, lo - 1
-        status[lo] = s
+        status[lo], slot[s] = s, lo
       else
-        for j = bottom + m, lo, -1 do status[j + 1] = status[j] end
-        status[lo] = s
+        for j = bottom + m, lo, -1 do
+          local f = status[j]
+          status[j + 1], slot[f] = f, j + 1
+        end
+        status[lo], slot[s] = s, lo
       end
       m = m + 1
       lastPlace = lo
@@ -406,6 +422,7 @@ local function sweep(starts)
       if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
         and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
         status[lo] = t
+        if JIT then slot[t] = lo end
         noteRings(t, lo)
         i = i + 1
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
@@ -414,12 +431,18 @@ local function sweep(starts)
         if not JIT then   -- as for table.insert above (on LuaJIT the loop is faster)
           table.remove(status, lo)
         elseif lo - bottom - 1 < bottom + m - lo then   -- the entries below s move up
-          for j = lo, bottom + 2, -1 do status[j] = status[j - 1] end
+          for j = lo, bottom + 2, -1 do
+            local f = status[j - 1]
+            status[j], slot[f] = f, j
+          end
           status[bottom + 1] = nil
           bottom = bottom + 1
           lastPlace = lo + 1   -- as when the entries above move down: the two ends are at
         else                   -- lastPlace - 1 and lastPlace
-          for j = lo, bottom + m - 1 do status[j] = status[j + 1] end
+          for j = lo, bottom + m - 1 do
+            local f = status[j + 1]
+            status[j], slot[f] = f, j
+          end
           status[bottom + m] = nil
         end
         m = m - 1
@@ -569,7 +592,7 @@ local function sweepCrossing(starts)
     twin[placeOrder[last]] = placeOrder[first]
     i = last + 1
   end
-  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt = nil, nil, nil, nil, nil, nil
+  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt, slot = nil, nil, nil, nil, nil, nil, nil
   return crossing
 end
 

@@ -17,7 +17,7 @@ local checkPoints = check.checkPoints
 local shapeBehind = check.shapeBehind
 local validate = object.validate
 local orient, same, leftmostFirst, newArray = sweep.orient, sweep.same, sweep.leftmostFirst, sweep.newArray
-local scratch = sweep.scratch   -- arrays kept between calls (slots 1 to 9 are sweep.lua's)
+local scratch = sweep.scratch   -- arrays kept between calls (slots 1 to 10 are sweep.lua's)
 local anyCrossing, ringsTrouble = sweep.anyCrossing, sweep.ringsTrouble
 
 local M = {}
@@ -193,8 +193,8 @@ local function buildBands(starts)
     if total <= BAND_LOAD * n or bandCount == 1 then break end
     bandCount = max(floor(bandCount / 2), 1)
   end
-  bandHead, bandEntries = scratch(10, bandCount), 0
-  bandNext, bandNode = scratch(11, BAND_LOAD * capacity), scratch(12, BAND_LOAD * capacity)
+  bandHead, bandEntries = scratch(11, bandCount), 0
+  bandNext, bandNode = scratch(12, BAND_LOAD * capacity), scratch(13, BAND_LOAD * capacity)
   for b = 1, bandCount do bandHead[b] = 0 end
   for _, s in ipairs(starts) do
     local k = s
@@ -346,8 +346,8 @@ local function buildGrid(s)
   gridFine = cellSize > FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
   spanMargin = gridFine and 2 * SPAN_MARGIN * cellSize or huge
   local cells = gridRows * gridCols
-  local cellOf = scratch(13, capacity)
-  cellStart = scratch(14, cells + 1)
+  local cellOf = scratch(14, capacity)
+  cellStart = scratch(15, cells + 1)
   for c = 1, cells + 1 do cellStart[c] = 0 end
   k = s
   repeat
@@ -357,10 +357,10 @@ local function buildGrid(s)
   until k == s
   local at = 1   -- the counts become each cell's first entry, then (filling) its next one
   for c = 1, cells + 1 do cellStart[c], at = at, at + cellStart[c] end
-  entryX, entryY, entryNode = scratch(15, count), scratch(16, count), scratch(17, count)
-  entryOf = scratch(18, capacity)
-  listed, shared, reflexSeen, listStale = scratch(19, capacity), scratch(20, capacity), scratch(21, capacity), false
-  blocker = scratch(32, capacity)
+  entryX, entryY, entryNode = scratch(16, count), scratch(17, count), scratch(18, count)
+  entryOf = scratch(19, capacity)
+  listed, shared, reflexSeen, listStale = scratch(20, capacity), scratch(21, capacity), scratch(22, capacity), false
+  blocker = scratch(33, capacity)
   k = s
   repeat listed[k], shared[k], reflexSeen[k], blocker[k] = false, false, false, 0; k = nextNode[k] until k == s
   k = s
@@ -719,12 +719,12 @@ function build(points, n, holes, checkOnly)
   capacity = n / 2
   for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
   sweep.usePool(capacity)
-  nodeX, nodeY, inX, inY = scratch(22, capacity), scratch(23, capacity), scratch(24, capacity), scratch(25, capacity)
-  origin, nextNode = scratch(26, capacity), scratch(27, capacity)
-  prevNode, gone = scratch(28, capacity), scratch(29, capacity)
+  nodeX, nodeY, inX, inY = scratch(23, capacity), scratch(24, capacity), scratch(25, capacity), scratch(26, capacity)
+  origin, nextNode = scratch(27, capacity), scratch(28, capacity)
+  prevNode, gone = scratch(29, capacity), scratch(30, capacity)
   nodeCount = 0
   listed = nil
-  nodeRing, twin, joined = scratch(30, capacity), scratch(31, capacity), { true }
+  nodeRing, twin, joined = scratch(31, capacity), scratch(32, capacity), { true }
   sweep.bind(nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn, twin)
   local outer = linkRing(points, n, 1, false, 1)
   if flat then
