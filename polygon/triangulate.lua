@@ -615,8 +615,12 @@ local function clipEars(s, tris)
       tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
       unlink(ear); ringCount = ringCount - 1
       reflexSeen[a], reflexSeen[c] = false, false
-      pending[1], pending[2], pendingTop = a, c, 2
-      settle()
+      -- most clips leave a and c turning: tested here, settle's loop (a trace of its own on
+      -- LuaJIT, entered and left at every ear) runs only when one lies in line
+      if ringCount <= 2 or orient(prevNode[a], a, c) == 0 or orient(a, c, nextNode[c]) == 0 then
+        pending[1], pending[2], pendingTop = a, c, 2
+        settle()
+      end
       ear = c
       while gone[ear] do ear = nextNode[ear] end
       stop = ear
