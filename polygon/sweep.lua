@@ -49,7 +49,7 @@ local function scratch(slot, size)
   return a
 end
 -- Whether the call now starting, of at most `capacity` nodes, takes its arrays from the pool.
-function M.usePool(capacity) pooling = capacity <= SCRATCH_NODES end
+function M.usePool(nodes) pooling = nodes <= SCRATCH_NODES end
 
 -- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
 local sortKey

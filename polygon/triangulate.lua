@@ -359,10 +359,14 @@ local function buildGrid(s)
   for c = 1, cells + 1 do cellStart[c], at = at, at + cellStart[c] end
   entryX, entryY, entryNode = scratch(16, count), scratch(17, count), scratch(18, count)
   entryOf = scratch(19, capacity)
-  listed, shared, reflexSeen, listStale = scratch(20, capacity), scratch(21, capacity), scratch(22, capacity), false
+  listed, shared, reflexSeen = scratch(20, capacity), scratch(21, capacity), scratch(22, capacity)
+  listStale = false
   blocker = scratch(33, capacity)
   k = s
-  repeat listed[k], shared[k], reflexSeen[k], blocker[k] = false, false, false, 0; k = nextNode[k] until k == s
+  repeat
+    listed[k], shared[k], reflexSeen[k], blocker[k] = false, false, false, 0
+    k = nextNode[k]
+  until k == s
   k = s
   repeat
     local cell = cellOf[k]
@@ -543,7 +547,8 @@ local function isEar(b)
     else
       local x = entryX[j]
       if x >= spanX0 and x <= spanX1 then
-        local y, k = entryY[j], entryNode[j]
+        local y = entryY[j]
+        k = entryNode[j]
         if y >= boxY0 and y <= boxY1 and k ~= earA and k ~= earC and nearTriangle(x, y)
           and keepListed(k) and blocks(k, earA, earB, earC) then
           blocker[b] = k
@@ -723,7 +728,8 @@ function build(points, n, holes, checkOnly)
   capacity = n / 2
   for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
   sweep.usePool(capacity)
-  nodeX, nodeY, inX, inY = scratch(23, capacity), scratch(24, capacity), scratch(25, capacity), scratch(26, capacity)
+  nodeX, nodeY = scratch(23, capacity), scratch(24, capacity)
+  inX, inY = scratch(25, capacity), scratch(26, capacity)
   origin, nextNode = scratch(27, capacity), scratch(28, capacity)
   prevNode, gone = scratch(29, capacity), scratch(30, capacity)
   nodeCount = 0
