@@ -427,21 +427,22 @@ local function blocks(k, a, b, c)
   local s3 = orient(c, a, k)
   if s3 < 0 then return false end
   if s1 > 0 and s2 > 0 and s3 > 0 then return true end
-  if strict and s3 == 0 and not same(k, a) and not same(k, c) then return true end
+  local atA, atB, atC = same(k, a), same(k, b), same(k, c)   -- each asked once (pinch points)
+  if strict and s3 == 0 and not atA and not atC then return true end
   -- an edge of another node running along a side of the triangle the same way: it has the
   -- triangle's side as its inside too, which cutting the ear off would leave behind (two cuts
   -- meeting along one diagonal both ways, at pinch points, leave such an edge)
   local q = nextNode[k]
-  if (same(k, c) and same(q, a)) or (same(k, a) and same(q, b)) or (same(k, b) and same(q, c) and k ~= b) then
+  if (atC and same(q, a)) or (atA and same(q, b)) or (atB and same(q, c) and k ~= b) then
     return true
   end
   for side = 1, 2 do
     local t = side == 1 and prevNode[k] or nextNode[k]
-    if same(k, a) then
+    if atA then
       if orient(a, b, t) > 0 and orient(c, a, t) > 0 then return true end
-    elseif same(k, b) then
+    elseif atB then
       if orient(a, b, t) > 0 and orient(b, c, t) > 0 then return true end
-    elseif same(k, c) then
+    elseif atC then
       if orient(b, c, t) > 0 and orient(c, a, t) > 0 then return true end
     elseif (s1 == 0 and orient(a, b, t) > 0) or (s2 == 0 and orient(b, c, t) > 0)
       or (s3 == 0 and orient(c, a, t) > 0) then
