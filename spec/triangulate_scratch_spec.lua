@@ -71,7 +71,7 @@ end
 
 for _, fn in ipairs({ { "polygonTriangulate", triangulate }, { "polygonConvexParts", convexParts } }) do
   describe(fn[1] .. " after other calls", function()
-    it("answers each input as a fresh copy of the library does, in order, reversed and interleaved", function()
+    it("answers each input as a fresh copy of the library does, in order, reversed, interleaved", function()
       local list = inputs()
       local first = {}
       for i, case in ipairs(list) do first[i] = answer(freshLibrary()[fn[1]], case[1], case[2]) end
