@@ -32,6 +32,25 @@ do
   local found, tableNew = pcall(require, "table.new")
   if found then newArray = function(size) return tableNew(size, 0) end end
 end
+-- Scratch arrays, kept from one triangulation to the next when it makes at most SCRATCH_NODES
+-- nodes: a call on a small outline spent about a tenth of its time making its thirty-odd
+-- arrays and collecting them (bench/NOTES.md, session 20). Slot s holds one array at a time,
+-- replaced by a larger one when a call needs more; a larger call makes its own, dropped at its
+-- end, so what stays is bounded (some 35 arrays of a few thousand entries). A reused array
+-- holds the last call's values: every user writes an entry before reading it, or clears it.
+local SCRATCH_NODES = 2048
+local pool, poolSize, pooling = {}, {}, false
+local function scratch(slot, size)
+  if not pooling then return newArray(size) end
+  local a = pool[slot]
+  if a and poolSize[slot] >= size then return a end
+  a = newArray(size)
+  pool[slot], poolSize[slot] = a, size
+  return a
+end
+-- Whether the call now starting, of at most `capacity` nodes, takes its arrays from the pool.
+function M.usePool(nodes) pooling = nodes <= SCRATCH_NODES end
+
 -- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
 local sortKey
 local function bySortKey(a, b) return sortKey[a] < sortKey[b] end
@@ -147,7 +166,7 @@ local function sortPlaces(starts)
     until k == s
   end
   local scale = count / (x1 - x0)   -- x1 > x0: the outer ring has area
-  local bucketOf, first = newArray(capacity), newArray(count + 1)
+  local bucketOf, first = scratch(1, capacity), scratch(2, count + 1)
   for b = 1, count + 1 do first[b] = 0 end
   for _, s in ipairs(starts) do
     local k = s
@@ -160,7 +179,7 @@ local function sortPlaces(starts)
   end
   local at = 1   -- first[b]: where bucket b starts in the order; then where its next node goes
   for b = 1, count + 1 do first[b], at = at, at + first[b] end
-  local order, fill = newArray(count), newArray(count)
+  local order, fill = scratch(3, count), scratch(4, count)
   for b = 1, count do fill[b] = first[b] end
   for _, s in ipairs(starts) do
     local k = s
@@ -186,7 +205,7 @@ local function sortPlaces(starts)
       end
     end
   end
-  rank = newArray(capacity)
+  rank = scratch(5, capacity)
   local place = 0
   for i = 1, count do
     local k = order[i]
@@ -200,7 +219,7 @@ end
 -- The events in order: by place, and at one place every edge leaving before any coming in.
 local function sweepEvents(starts)
   local order, count = sortPlaces(starts)
-  sweepLeft, sweepRight = newArray(capacity), newArray(capacity)
+  sweepLeft, sweepRight = scratch(6, capacity), scratch(7, capacity)
   for _, s in ipairs(starts) do
     local k = s
     repeat
@@ -209,7 +228,7 @@ local function sweepEvents(starts)
       k = q
     until k == s
   end
-  local events, e = newArray(2 * count), 0
+  local events, e = scratch(8, 2 * count), 0
   local i = 1
   while i <= count do
     local last = i   -- the nodes at one place are order[i..last]
@@ -232,6 +251,7 @@ local function sweepEvents(starts)
 end
 
 local status, lastPlace   -- the edges in order along the line; where the last event's edge was
+local slot              -- on LuaJIT, slot[k]: where edge k is in status
 local touchedAt         -- touchedAt[r]: the edges whose inside holds the place of rank r, or nil
 
 -- Notes the edges next to place `from` of the order, going `step` (-1 or 1), that hold node p:
@@ -339,13 +359,23 @@ local function sweep(starts)
   -- events up keeps it in the array. (A vertical line meets some 650 edges of a noisy circle
   -- of 10,000 vertices: the shorter side moves 200 entries a vertex where one side moved 440.)
   local m, bottom = 0, JIT and eventCount or 0
-  status, touchedAt = newArray(2 * eventCount + 2), {}
+  status, touchedAt = scratch(9, 2 * eventCount + 2), {}
+  slot = JIT and scratch(10, capacity)
+  for j = 1, 2 * eventCount + 2 do status[j] = nil end   -- a reused array: empty past the order
   lastPlace = bottom + 1
   local i = 1
   while i <= eventCount do
     local e = events[i]
     local s = e > 0 and e or -e
     local lo = besideLast(s, e > 0)
+    if lo == 0 and JIT and e < 0 then
+      -- an edge leaving: its place, kept as the order shifts, when the edges beside it lie
+      -- below and above it (else the search, which may find the order inconsistent). The
+      -- search took some 6 halvings for most edges leaving a noisy circle
+      lo = slot[s]
+      local below, above = status[lo - 1], status[lo + 1]
+      if (below and edgeOrder(s, below) < 0) or (above and edgeOrder(s, above) > 0) then lo = 0 end
+    end
     if lo == 0 then   -- the first place whose edge does not lie below s
       local hi
       lo, hi = bottom + 1, bottom + m + 1
@@ -358,12 +388,18 @@ local function sweep(starts)
       if not JIT then   -- on PUC Lua table.insert's C loop is faster than a loop in Lua
         table.insert(status, lo, s)
       elseif lo - bottom - 1 < bottom + m + 1 - lo then   -- fewer entries below: shift those down
-        for j = bottom + 1, lo - 1 do status[j - 1] = status[j] end
+        for j = bottom + 1, lo - 1 do
+          local f = status[j]
+          status[j - 1], slot[f] = f, j - 1
+        end
         bottom, lo = bottom - 1, lo - 1
-        status[lo] = s
+        status[lo], slot[s] = s, lo
       else
-        for j = bottom + m, lo, -1 do status[j + 1] = status[j] end
-        status[lo] = s
+        for j = bottom + m, lo, -1 do
+          local f = status[j]
+          status[j + 1], slot[f] = f, j + 1
+        end
+        status[lo], slot[s] = s, lo
       end
       m = m + 1
       lastPlace = lo
@@ -386,6 +422,7 @@ local function sweep(starts)
       if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
         and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
         status[lo] = t
+        if JIT then slot[t] = lo end
         noteRings(t, lo)
         i = i + 1
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
@@ -394,12 +431,18 @@ local function sweep(starts)
         if not JIT then   -- as for table.insert above (on LuaJIT the loop is faster)
           table.remove(status, lo)
         elseif lo - bottom - 1 < bottom + m - lo then   -- the entries below s move up
-          for j = lo, bottom + 2, -1 do status[j] = status[j - 1] end
+          for j = lo, bottom + 2, -1 do
+            local f = status[j - 1]
+            status[j], slot[f] = f, j
+          end
           status[bottom + 1] = nil
           bottom = bottom + 1
           lastPlace = lo + 1   -- as when the entries above move down: the two ends are at
         else                   -- lastPlace - 1 and lastPlace
-          for j = lo, bottom + m - 1 do status[j] = status[j + 1] end
+          for j = lo, bottom + m - 1 do
+            local f = status[j + 1]
+            status[j], slot[f] = f, j
+          end
           status[bottom + m] = nil
         end
         m = m - 1
@@ -549,7 +592,7 @@ local function sweepCrossing(starts)
     twin[placeOrder[last]] = placeOrder[first]
     i = last + 1
   end
-  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt = nil, nil, nil, nil, nil, nil
+  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt, slot = nil, nil, nil, nil, nil, nil, nil
   return crossing
 end
 
@@ -668,6 +711,6 @@ function M.ringsTrouble(starts)
 end
 
 M.anyCrossing = anyCrossing
-M.orient, M.same, M.leftmostFirst, M.newArray = orient, same, leftmostFirst, newArray
+M.orient, M.same, M.leftmostFirst, M.newArray, M.scratch = orient, same, leftmostFirst, newArray, scratch
 
 return M
