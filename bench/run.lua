@@ -2,7 +2,8 @@
 --
 -- From the repository root: luajit bench/run.lua [--quick] [--only PATTERN] [--out FILE] [--data FILE]
 -- [--label NAME] [--draws K] [--targets]. --only times the rows whose "function workload" (e.g.
--- "polygonType ord") matches the Lua pattern, --targets the rows with a target. Prints a
+-- "polygonType ord"; "unchecked polygonsCollideV pMix" for a collision row against itself
+-- without the convexity check) matches the Lua pattern, --targets the rows with a target. Prints a
 -- markdown section (also to --out), writes gnuplot points to --data, and exits non-zero if a row
 -- raised an error, a function is missing or a checksum is NaN.
 -- BENCH_QUICK=1 in the environment is --quick: small inputs and few rounds, a smoke test.
@@ -523,7 +524,9 @@ for _, f in ipairs({ { "polygonCollidesWith", "bool", "collide1" }, { "polygonsC
 end
 row("polygonCircleCollideV", "ciMix", "v3", "circleV", "unchecked polygonCircleCollideV")
 
--- function, workload, LuaJIT target, Lua 5.4 target (ratio of the medians at most)
+-- function, workload, LuaJIT target, Lua 5.4 target (ratio of the medians at most); a workload
+-- "KEY@unchecked" is the row against the same function without the convexity check (issue 29:
+-- the check costs at most 15%)
 local TARGETS = {
   { "polygonsCollideV", "pMix", 0.25, 0.45 },
   { "polygonCircleCollideV", "ciMix", 0.35, 0.9 },
@@ -535,6 +538,11 @@ local TARGETS = {
   { "polygonAreaAccurate", "far9", 3, 3 },
   { "polygonAreaAccurate", "big", 3, 3 },
   { "polygonRayCast", "rMix", 1.5, 2 },
+  { "polygonCollidesWith", "pMix@unchecked", 1.15, 1.15 },
+  { "polygonsCollide", "pMix@unchecked", 1.15, 1.15 },
+  { "polygonCollidesWithV", "pMix@unchecked", 1.15, 1.15 },
+  { "polygonsCollideV", "pMix@unchecked", 1.15, 1.15 },
+  { "polygonCircleCollideV", "ciMix@unchecked", 1.15, 1.15 },
 }
 
 ---------------------------------------------------------------------------------------------
@@ -577,14 +585,19 @@ end
 local isTarget = {}
 for _, t in ipairs(TARGETS) do isTarget[t[1] .. "@" .. t[2]] = true end
 -- a row's key; the rows against an unchecked variant (the convexity check's cost) have their own
+local function isUnchecked(r) return r.base and r.base:match("^unchecked ") ~= nil end
 local function rowKey(r)
-  return r.fname .. "@" .. r.wl.key .. (r.base and r.base:match("^unchecked ") and "@unchecked" or "")
+  return r.fname .. "@" .. r.wl.key .. (isUnchecked(r) and "@unchecked" or "")
+end
+-- what --only matches: "FUNCTION WORKLOAD", "unchecked FUNCTION WORKLOAD" for those rows
+local function rowName(r)
+  return (isUnchecked(r) and "unchecked " or "") .. r.fname .. " " .. r.wl.key
 end
 
 -- The per-round ratios of one row timed in a fresh process (a new draw of LuaJIT's traces), and
 -- each side's per-round times (ns a call).
 local function drawRatios(r)
-  local command = ("%s bench/run.lua --ratios --only '^%s %s$'"):format(INTERPRETER_PATH, r.fname, r.wl.key)
+  local command = ("%s bench/run.lua --ratios --only '^%s$'"):format(INTERPRETER_PATH, rowName(r))
   local pipe = assert(io.popen(command, "r"))
   local text = pipe:read("*a")
   pipe:close()
@@ -660,7 +673,7 @@ end
 
 local rowsRun, byKey = {}, {}
 for _, r in ipairs(ROWS) do
-  if (not opts.only or (r.fname .. " " .. r.wl.key):find(opts.only))
+  if (not opts.only or rowName(r):find(opts.only))
       and (not opts.targets or isTarget[rowKey(r)]) then
     local ok, err = pcall(measureRow, r)
     if not ok then
