@@ -227,7 +227,7 @@ local function vouchSource(m)
     for k = 1, last or m do items[k] = format:gsub("#n", after(k)):gsub("#", k) end
     return table.concat(items, sep or ", ")
   end
-  line("local min, max, SHARED_BOUND, TINY, zeroFlips = ...")
+  line("local SHARED_BOUND, TINY, zeroFlips = ...")
   line("return function(p)")
   line("local x1, y1 = p[1] + 0.0, p[2] + 0.0")
   line("local xmin, xmax, ymin, ymax, low, high = x1, x1, y1, y1, 1, 1")
@@ -385,7 +385,7 @@ local function vouchBodies(largest)
   local byCount = {}
   for m = 3, largest do
     local chunk = assert(loadChunk(vouchSource(m), "=polygon/convex.lua vouch" .. m))
-    byCount[2 * m] = chunk(min, max, SHARED_BOUND, TINY, zeroFlips)
+    byCount[2 * m] = chunk(SHARED_BOUND, TINY, zeroFlips)
   end
   return byCount
 end
@@ -420,7 +420,6 @@ M.carefulWalk = carefulWalk
 M.vouch = vouch
 M.vouchJit = vouchJit
 M.vouchPuc = vouchPuc
-M.vouchSource = vouchSource
 M.vouchLoopJit = vouchLoopJit
 M.vouchLoopPuc = vouchLoopPuc
 M.convexCareful = convexCareful
