@@ -7,7 +7,7 @@
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 
-local abs, huge, min, max = math.abs, math.huge, math.min, math.max
+local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 local floor, sort = math.floor, table.sort
 local CROSS_BOUND, crossExact, JIT = kernel.CROSS_BOUND, kernel.crossExact, kernel.JIT
 local cross = kernel.cross
@@ -218,7 +218,7 @@ end
 
 -- The events in order: by place, and at one place every edge leaving before any coming in.
 local function sweepEvents(starts)
-  local order, count = sortPlaces(starts)
+  local order, count = placeOrder, placeCount
   sweepLeft, sweepRight = scratch(6, capacity), scratch(7, capacity)
   for _, s in ipairs(starts) do
     local k = s
@@ -359,7 +359,7 @@ local function sweep(starts)
   -- events up keeps it in the array. (A vertical line meets some 650 edges of a noisy circle
   -- of 10,000 vertices: the shorter side moves 200 entries a vertex where one side moved 440.)
   local m, bottom = 0, JIT and eventCount or 0
-  status, touchedAt = scratch(9, 2 * eventCount + 2), {}
+  status = scratch(9, 2 * eventCount + 2)
   slot = JIT and scratch(10, capacity)
   for j = 1, 2 * eventCount + 2 do status[j] = nil end   -- a reused array: empty past the order
   lastPlace = bottom + 1
@@ -579,8 +579,312 @@ local function placesCross()
   return false
 end
 
+-- The check's usual way, before the sweep (which stays as its fallback): a grid of cells over
+-- the rings' box, each edge filed in the cells it passes through, and every two edges filed in
+-- one cell whose boxes overlap tested as the sweep tests neighbours (a proper crossing, or an
+-- end of one inside the other: touchedAt, for placesCross). Two edges that meet share the cell
+-- of a point where they meet, so no meeting is missed. About GRID_LOAD edges a cell: for edges
+-- short against the box (outlines, tile maps, map data) each is filed in a cell or two and
+-- meets a few others, in straight loops without the sweep's ordered search and shifts, which
+-- cost 150 to 250 ns an event on LuaJIT and grew with the order's length on PUC Lua (table.insert
+-- moves entries one by one there: noisy-circle-10000 took 4 times noisy-circle-100's time a
+-- vertex). Long edges crossing many cells (a star's spikes) would meet each other in many
+-- cells: past GRID_BUDGET entries an edge the grid is given up for the sweep, and so it is when
+-- the cells are too small for the coordinates (see GRID_FINE).
+local GRID_LOAD = 2        -- edges a cell, about
+local GRID_BUDGET = 6      -- cell entries an edge, on average, at most
+local GRID_PAIRS = 48      -- pairs of edges sharing a cell, an edge, on average, at most
+local GRID_REACH = 2       -- an edge's |dx| + |dy| in cells, on average, at most (the edges of
+                           -- a noisy circle of 1,000 vertices reach 2.8 cells, 10,000 8.5:
+                           -- their boxes overlap by the dozen, where the sweep's order is cheap)
+local GRID_FINE = 2^-24    -- a cell's side against the largest coordinate's magnitude, at least:
+                           -- the rows' spans in x below then err by far less than GRID_MARGIN
+local GRID_MARGIN = 0.25   -- cells: the spans' widening against rounding
+local gridLeft, gridTop, gridScale, gridSize, gridCols, gridRows
+local cellFirst, cellEdge  -- cellEdge[cellFirst[c] .. cellFirst[c + 1] - 1]: the edges in cell c
+local boxX0, boxX1, boxY0, boxY1   -- boxX0[k] .. boxY1[k]: edge k's box
+local stamp                -- stamp[k]: the node whose ray last looked at edge k (see gridPlace)
+
+local function gridCol(x)
+  local col = floor((x - gridLeft) * gridScale)
+  return col < gridCols and col or gridCols - 1
+end
+local function gridRow(y)
+  local row = floor((y - gridTop) * gridScale)
+  return row < gridRows and row or gridRows - 1
+end
+
+-- The first and last cells (numbers, from 1) that the edge from node k to node q, not level,
+-- may pass through in a row: its span in x over the row's band of y, band and span widened
+-- against rounding, clamped to the edge's box.
+local function gridSpan(k, q, row)
+  local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+  local margin = GRID_MARGIN * gridSize
+  local lo = max(min(ay, by), gridTop + row * gridSize - margin)
+  local hi = max(ay, by)   -- the last row holds every place past it (see gridRow)
+  if row < gridRows - 1 then hi = min(hi, gridTop + (row + 1) * gridSize + margin) end
+  local slope = (bx - ax) / (by - ay)
+  local xa, xb = ax + (lo - ay) * slope, ax + (hi - ay) * slope
+  local base = row * gridCols + 1
+  return base + gridCol(max(min(ax, bx), min(xa, xb) - margin)),
+    base + gridCol(min(max(ax, bx), max(xa, xb) + margin))
+end
+
+-- Notes that node p lies inside edge f (f's list at p's place, once).
+local function touch(p, f)
+  local r = rank[p]
+  local list = touchedAt[r]
+  if not list then list = {}; touchedAt[r] = list end
+  for g = 1, #list do if list[g] == f then return end end
+  list[#list + 1] = f
+end
+
+-- Whether node p, in line with nodes a and b, lies inside the segment a-b (not at an end).
+-- (Two tests of two numbers: a branch per comparison grew side traces that aborted on tile
+-- maps, whose edges lie in line by the hundred.)
+local function within(p, a, b)
+  local px, py, ax, ay, bx, by = nodeX[p], nodeY[p], nodeX[a], nodeY[a], nodeX[b], nodeY[b]
+  return max(min(ax, bx) - px, px - max(ax, bx), min(ay, by) - py, py - max(ay, by)) <= 0
+    and min(abs(px - ax) + abs(py - ay), abs(px - bx) + abs(py - by)) > 0
+end
+
+-- Whether edges e and f cross properly (then crossedA, crossedB are set); notes an end of
+-- one inside the other.
+local function pairCross(e, f)
+  local a, b, c, d = e, nextNode[e], f, nextNode[f]
+  if d == a then a, b, c, d, e, f = c, d, a, b, f, e end
+  if b == c then   -- one after the other: they meet at b, and overlap only folded in line
+    if orient(a, b, d) == 0 then
+      if within(d, a, b) then touch(d, e) end
+      if within(a, c, d) then touch(a, f) end
+    end
+    return false
+  end
+  local s1, s2 = orient(a, b, c), orient(a, b, d)
+  if min(s1, s2) > 0 or max(s1, s2) < 0 then return false end   -- c and d on one side
+  local s3, s4 = orient(c, d, a), orient(c, d, b)
+  if min(max(s1, s2), -min(s1, s2)) > 0 and min(max(s3, s4), -min(s3, s4)) > 0 then
+    crossedA, crossedB = a, c
+    return true
+  end
+  if s1 == 0 and within(c, a, b) then touch(c, e) end
+  if s2 == 0 and within(d, a, b) then touch(d, e) end
+  if s3 == 0 and within(a, c, d) then touch(a, f) end
+  if s4 == 0 and within(b, c, d) then touch(b, f) end
+  return false
+end
+
+-- Files edge k (to node q) in the cells it passes through, its entries after entry n: the
+-- entries' count then, or nil past the budget. One loop over the cells of all the edge's rows,
+-- not a loop per row, with few live values (the arrays are upvalues, the coordinates read
+-- again by gridSpan), and only for the edges that pass more than two cells or more than one
+-- row (see fileEdges): on LuaJIT the side traces of loops within the loop over all edges
+-- aborted ("register coalescing too complex") hundreds of times on water2, and the call ran 5
+-- to 30 times slower.
+local entryCell, entryEdge, entryBudget
+local function fileLong(k, q, n)
+  local row, lastRow = gridRow(boxY0[k]), gridRow(boxY1[k])
+  local c, last = row * gridCols + gridCol(boxX0[k]) + 1, row * gridCols + gridCol(boxX1[k]) + 1
+  if row < lastRow then c, last = gridSpan(k, q, row) end   -- rows apart: see gridSpan
+  while true do
+    if c > last then
+      row = row + 1
+      if row > lastRow then return n end
+      c, last = gridSpan(k, q, row)
+    elseif n >= entryBudget then
+      return nil
+    else
+      n = n + 1
+      entryCell[n], entryEdge[n] = c, k
+      c = c + 1
+    end
+  end
+end
+
+-- Notes the box of edge k (to node q) and files it when it lies in one cell or in two side
+-- by side: the entries' count then, or -1 - n for an edge left to fileLong.
+local function fileShort(k, q, n)
+  local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+  local ex0, ex1, ey0, ey1 = min(ax, bx), max(ax, bx), min(ay, by), max(ay, by)
+  boxX0[k], boxX1[k], boxY0[k], boxY1[k], stamp[k] = ex0, ex1, ey0, ey1, 0
+  local row, c0, c1 = gridRow(ey0), gridCol(ex0), gridCol(ex1)
+  if row ~= gridRow(ey1) or c1 > c0 + 1 or n + 2 > entryBudget then return -1 - n end
+  local cell = row * gridCols + c0 + 1
+  entryCell[n + 1], entryEdge[n + 1] = cell, k
+  if c1 == c0 then return n + 1 end
+  entryCell[n + 2], entryEdge[n + 2] = cell + 1, k
+  return n + 2
+end
+
+-- Files every edge in the cells it passes through: true when done, false when the cells are
+-- too small for the coordinates, or the entries or the pairs they make pass their budgets
+-- (then the sweep).
+local function fileEdges()
+  local x0, x1 = nodeX[placeOrder[1]], nodeX[placeOrder[placeCount]]
+  local y0, y1, reach = huge, -huge, 0
+  for i = 1, placeCount do
+    local k = placeOrder[i]
+    local y, q = nodeY[k], nextNode[k]
+    y0, y1 = min(y0, y), max(y1, y)
+    reach = reach + abs(nodeX[q] - nodeX[k]) + abs(nodeY[q] - y)
+  end
+  -- the outer ring has area: its box has width and height
+  gridSize = sqrt((x1 - x0) * (y1 - y0) * GRID_LOAD / placeCount)
+  if gridSize <= GRID_FINE * max(abs(x0), abs(x1), abs(y0), abs(y1)) or gridSize == huge
+    or reach > GRID_REACH * gridSize * placeCount then
+    return false   -- also when the box's area underflows or overflows
+  end
+  gridLeft, gridTop, gridScale = x0, y0, 1 / gridSize
+  gridCols = min(floor((x1 - x0) * gridScale) + 1, placeCount)
+  gridRows = min(floor((y1 - y0) * gridScale) + 1, placeCount)
+  entryBudget = GRID_BUDGET * placeCount
+  entryCell, entryEdge = scratch(34, entryBudget), scratch(35, entryBudget)
+  boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
+  boxY0, boxY1 = scratch(38, capacity), scratch(39, capacity)
+  stamp = scratch(40, capacity)
+  local n, long, longEdges = 0, 0, scratch(43, capacity)
+  for i = 1, placeCount do   -- the short edges; the others listed
+    local k = placeOrder[i]
+    n = fileShort(k, nextNode[k], n)
+    if n < 0 then n, long = -1 - n, long + 1; longEdges[long] = k end
+  end
+  for j = 1, long do
+    local k = longEdges[j]
+    n = fileLong(k, nextNode[k], n)
+    if not n then return false end
+  end
+  -- the entries sorted by cell (counted, then placed)
+  local cells = gridCols * gridRows
+  cellFirst = scratch(41, cells + 1)
+  for c = 1, cells + 1 do cellFirst[c] = 0 end
+  for j = 1, n do
+    local c = entryCell[j]
+    cellFirst[c] = cellFirst[c] + 1
+  end
+  local at, pairCount = 1, 0   -- each cell's first entry, then (filling) its next one
+  for c = 1, cells + 1 do
+    local count = cellFirst[c]
+    cellFirst[c], at, pairCount = at, at + count, pairCount + count * (count - 1)
+  end
+  if pairCount > 2 * GRID_PAIRS * placeCount then return false end
+  cellEdge = scratch(42, n)
+  for j = 1, n do
+    local c = entryCell[j]
+    cellEdge[cellFirst[c]], cellFirst[c] = entryEdge[j], cellFirst[c] + 1
+  end
+  for c = cells, 1, -1 do cellFirst[c + 1] = cellFirst[c] end   -- back to first entries
+  cellFirst[1] = 1
+  return true
+end
+
+-- true when two edges cross properly, false when none do, nil when the grid was given up.
+-- Of several crossings, the one named is the first by its rings (the outline's own first,
+-- then by the lower ring, then the higher): the cells' order says nothing a user could use.
+local foundA, foundB, foundLow, foundHigh   -- the crossing to name, so far, and its rings
+
+-- Notes the crossing just found by pairCross (of edges e and f) when it comes first so far.
+local function noteCrossing(e, f)
+  local low, high = nodeRing[e], nodeRing[f]
+  if low > high then low, high = high, low end
+  if low < foundLow or (low == foundLow and high < foundHigh) then
+    foundA, foundB, foundLow, foundHigh = crossedA, crossedB, low, high
+  end
+end
+
+-- (The loop keeps few values live, the boxes read again for each pair: on LuaJIT the exact
+-- tests' side traces, started with more, aborted hundreds of times on tile maps.)
+local function gridCrossing()
+  if not fileEdges() then return nil end
+  foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
+  for c = 1, gridCols * gridRows do
+    local last = cellFirst[c + 1] - 1
+    for i = cellFirst[c], last - 1 do
+      local e = cellEdge[i]
+      for j = i + 1, last do
+        local f = cellEdge[j]
+        -- the boxes overlap: one test of one number (its differences are exact in sign)
+        if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
+          and pairCross(e, f) then
+          noteCrossing(e, f)
+        end
+      end
+    end
+  end
+  crossedA, crossedB = foundA, foundB
+  return foundA ~= nil
+end
+
+-- Where the hole at node `start` lies, by the crossing rule along its row of cells (the rings
+-- do not cross): a message when outside the polygon or inside another hole, nil when well
+-- placed, false when every vertex of the hole lies on another ring (holeMisplaced decides).
+-- A ray from a vertex v of the hole, level, to the nearer side of the grid: the other rings'
+-- edges it crosses lie in the cells of v's row on that side (the edges reaching v's height
+-- there pass through the row). Crossing the edges of ring r an odd number of times puts v
+-- inside ring r. An edge of another ring holding v (an end, or inside) leaves the count
+-- undecided: the next vertex is tried.
+local oddRing, oddRings = {}, {}
+local function gridPlace(start)
+  local ring = nodeRing[start]
+  local v = start
+  repeat
+    local vx, vy = nodeX[v], nodeY[v]
+    local row, col = gridRow(vy), gridCol(vx)
+    local leftward = col + col < gridCols
+    local base = row * gridCols + 1
+    local from = leftward and cellFirst[base] or cellFirst[base + col]
+    local to = leftward and cellFirst[base + col + 1] - 1 or cellFirst[base + gridCols] - 1
+    local decided, count = true, 0
+    for i = from, to do
+      local e = cellEdge[i]
+      if stamp[e] ~= v and nodeRing[e] ~= ring and boxY0[e] <= vy and boxY1[e] >= vy then
+        stamp[e] = v
+        local q = nextNode[e]
+        local side = orient(e, q, v) * turn   -- the sign of (q - e) x (v - e)
+        if side == 0 and boxX0[e] <= vx and boxX1[e] >= vx then decided = false; break end
+        local ya, yb = nodeY[e], nodeY[q]
+        -- crossing the level of v, ends at that level counted as below it (each crossing once);
+        -- v lies right of the crossing when side < 0 for an edge going down the screen
+        if (ya > vy) ~= (yb > vy) and ((side < 0) == (yb > ya)) == leftward then
+          local r = nodeRing[e]
+          local odd = oddRing[r]
+          if odd == nil then count, odd = count + 1, false; oddRings[count] = r end
+          oddRing[r] = not odd
+        end
+      end
+    end
+    local message
+    if decided then
+      message = nil
+      if not oddRing[1] then message = ("holes[%d] is outside the polygon"):format(ring - 1) end
+      for j = 1, count do
+        local r = oddRings[j]
+        if r > 1 and oddRing[r] and not message then
+          message = ("holes[%d] is inside holes[%d]"):format(ring - 1, r - 1)
+        end
+      end
+    end
+    for j = 1, count do oddRing[oddRings[j]] = nil; oddRings[j] = nil end
+    if decided then return message end
+    v = nextNode[v]
+  until v == start
+  return false
+end
+
+local gridUsed   -- whether the last check went by the grid (then gridPlace places the holes)
+M.grid = true    -- false: the sweep always (for the specs that compare the two ways)
+M.lastWay = nil  -- "grid" or "sweep": the way the last check went (for those specs)
+
 local function sweepCrossing(starts)
-  local crossing = sweep(starts)
+  sortPlaces(starts)
+  touchedAt = {}
+  local crossing
+  if M.grid then crossing = gridCrossing() end
+  gridUsed = crossing ~= nil
+  M.lastWay = gridUsed and "grid" or "sweep"
+  if crossing == nil then
+    touchedAt = {}   -- the sweep notes them again
+    crossing = sweep(starts)
+  end
   if crossing == false and placesCross() then crossing = true end
   -- the nodes at one place, linked in a circle (twin[k]: the next; k alone: itself), for the
   -- bridges to find a pinch point's nodes without walking the ring
@@ -690,7 +994,12 @@ local function trouble(starts)
   if crossing then return crossingMessage() end
   for i = 2, #starts do
     local h = nodeRing[starts[i]]   -- hole h - 1
-    local start = ordered and ringStart[h] or 0
+    if gridUsed then
+      local message = gridPlace(starts[i])
+      if message == false then message = holeMisplaced(starts, i) end
+      if message then return message end
+    end
+    local start = gridUsed and 1 or ordered and ringStart[h] or 0
     if start < 0 then
       local g = ringBelow[h] and nodeRing[ringBelow[h]] or 1
       if g == 1 then return ("holes[%d] is outside the polygon"):format(h - 1) end
@@ -707,6 +1016,8 @@ end
 function M.ringsTrouble(starts)
   local message = trouble(starts)
   ringStart, ringBelow, leftRank = nil, nil, nil
+  cellFirst, cellEdge, boxX0, boxX1, boxY0, boxY1, stamp = nil, nil, nil, nil, nil, nil, nil
+  entryCell, entryEdge = nil, nil
   return message
 end
 

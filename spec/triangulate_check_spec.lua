@@ -1,0 +1,179 @@
+-- The validity check of polygonTriangulate and polygonConvexParts has two ways (polygon/sweep.lua):
+-- a grid of cells, whose pairs of edges in one cell are tested and whose rows place the holes by
+-- the crossing rule, and the sweep, taken when the grid would be slow (long edges) or too coarse
+-- for the coordinates. Both must give every input the same verdict, the oracle's (spec/support:
+-- no code shared with the library). Generated cases through both ways, then the hard cases of the
+-- grid's hole placement: a hole touching another ring exactly where the crossing rule's ray
+-- starts, which once would have taken the touching vertex's side for the hole's.
+
+local polygon = require "polygon"
+local sweep = require "polygon.sweep"
+local oracle = require "oracle"
+local prng = require "prng"
+local holes = require "holes"
+local shapes = require "shapes"
+
+local triangulate = polygon.polygonTriangulate
+
+local JIT = rawget(_G, "jit") ~= nil
+local CASES = JIT and 300 or 600
+local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
+  ["Lua 5.4"] = 4 })[_VERSION] or 5
+
+-- The words a refusal of each verdict must hold.
+local NAMED = { cross = "cross", outside = "outside", inside = "inside" }
+
+-- polygonTriangulate by one way: the triangles or nil, the message, and the way taken.
+local function byWay(grid, points, list)
+  sweep.grid = grid
+  local tris, message = triangulate(points, list)
+  local way = sweep.lastWay
+  sweep.grid = true
+  return tris, message, way
+end
+
+-- Checks one case against the oracle's verdict by both ways; returns the way the default took.
+local function checkBoth(points, list, where)
+  local verdict = oracle.regionCrossing(points, list)
+  local gridTris, gridMessage, way = byWay(true, points, list)
+  local sweepTris, sweepMessage, sweepWay = byWay(false, points, list)
+  assert(sweepWay == nil or sweepWay == "sweep", where)
+  assert((gridTris == nil) == (sweepTris == nil), ("%s: grid %s, sweep %s"):format(where,
+    tostring(gridMessage or "accepts"), tostring(sweepMessage or "accepts")))
+  if verdict == "valid" then
+    assert(gridTris, where .. " refused: " .. tostring(gridMessage))
+    local ok, why = oracle.checkCover(points, list, gridTris)
+    assert(ok, where .. ": " .. tostring(why))
+  elseif NAMED[verdict] then
+    assert(not gridTris, where .. " accepted")
+    assert(gridMessage:find(NAMED[verdict]), where .. ": " .. gridMessage)
+    assert(sweepMessage:find(NAMED[verdict]), where .. ": " .. sweepMessage)
+  end
+  return way, verdict
+end
+
+describe("polygonTriangulate's validity check", function()
+  after_each(function() sweep.grid = true end)
+
+  describe("when the grid and the sweep check the same random outlines with random holes", function()
+    it("give each the oracle's verdict, and the grid takes most of them", function()
+      local ways, verdicts = {}, {}
+      local first = 520000 + INDEX * 1000
+      for seed = first, first + CASES - 1 do
+        local points, list = holes.case(prng.new(seed))
+        local way, verdict = checkBoth(points, list, "seed " .. seed)
+        ways[way or "none"] = (ways[way or "none"] or 0) + 1
+        verdicts[verdict] = (verdicts[verdict] or 0) + 1
+      end
+      assert.is_true((ways.grid or 0) > CASES / 2, tostring(ways.grid))
+      assert.is_true(verdicts.valid > CASES / 3 and verdicts.cross > 0 and verdicts.outside > 0)
+    end)
+  end)
+
+  describe("when the edges are long against the rings' box", function()
+    it("takes the sweep for a noisy circle (spikes by the hundred) and answers as the oracle", function()
+      -- 1,000 vertices at radii 600 to 1,400: an edge reaches 2.8 cells on average
+      local points = shapes.noisyCircle(1000, prng.new(7))
+      local way = checkBoth(points, {}, "noisy circle")
+      assert.are.equal("sweep", way)
+    end)
+  end)
+
+  describe("when the coordinates are too large for cells of the rings' size", function()
+    it("takes the sweep at 2^60 and answers as the oracle", function()
+      local big = 2 ^ 60
+      local points = { big, big, big + 64, big, big + 64, big + 64, big, big + 64 }
+      local list = { { big + 16, big + 16, big + 16, big + 32, big + 32, big + 32 } }
+      assert.are.equal("sweep", (checkBoth(points, list, "2^60")))
+      list[1][1] = big - 16   -- now the hole crosses the outline
+      assert.are.equal("sweep", (checkBoth(points, list, "2^60 crossing")))
+    end)
+  end)
+
+  -- A hole in the notch of another: hole 1 is the rectangle 20..80 x 30..70 with a V cut down
+  -- from its top side to w = (50, 50), so w is reflex and both its edges rise to y = 30.
+  -- Hole 2 touches hole 1 at w only. Seen from w, a ray's side of hole 1 is not hole 2's side:
+  -- the grid tries the next vertex of hole 2 (or the placement by the whole rings).
+  local OUTLINE = { 0, 0, 100, 0, 100, 100, 0, 100 }
+  local NOTCHED = { 20, 30, 50, 50, 80, 30, 80, 70, 20, 70 }
+  -- all the orders of a triangle's vertices: each of them first, both ways round
+  local function orders(tri)
+    local out = {}
+    for start = 0, 2 do
+      local fwd, back = {}, {}
+      for j = 0, 2 do
+        local f, b = (start + j) % 3, (start - j) % 3
+        fwd[#fwd + 1], fwd[#fwd + 2] = tri[2 * f + 1], tri[2 * f + 2]
+        back[#back + 1], back[#back + 2] = tri[2 * b + 1], tri[2 * b + 2]
+      end
+      out[#out + 1], out[#out + 1] = fwd, back
+    end
+    return out
+  end
+  -- the picture mirrored top to bottom (y -> 100 - y), and the outline's turn reversed
+  local function flipped(points)
+    local out = {}
+    for i = 1, #points, 2 do out[i], out[i + 1] = points[i], 100 - points[i + 1] end
+    return out
+  end
+
+  describe("when a hole touches another at its reflex vertex", function()
+    for _, flip in ipairs({ false, true }) do
+      local label = flip and " (mirrored)" or ""
+      it("accepts the hole in the notch, whichever vertex comes first" .. label, function()
+        -- (45, 35) and (55, 35) lie above both edges of the notch: the edge (20, 30)-(50, 50)
+        -- is at y = 30 + 25 * 20 / 30 = 46.7 for x = 45, below 35 on screen
+        for _, tri in ipairs(orders({ 50, 50, 55, 35, 45, 35 })) do
+          local outline, notched = OUTLINE, NOTCHED
+          if flip then outline, notched, tri = flipped(OUTLINE), flipped(NOTCHED), flipped(tri) end
+          local way, verdict = checkBoth(outline, { notched, tri }, "notch " .. table.concat(tri, ","))
+          assert.are.equal("valid", verdict)
+          assert.are.equal("grid", way)
+        end
+      end)
+      it("refuses the hole inside the other, touching at the reflex vertex" .. label, function()
+        -- (45, 60) and (55, 60) lie inside hole 1's rectangle, below w: the two holes'
+        -- regions overlap, which the oracle and the library call a crossing
+        for _, tri in ipairs(orders({ 50, 50, 45, 60, 55, 60 })) do
+          local outline, notched = OUTLINE, NOTCHED
+          if flip then outline, notched, tri = flipped(OUTLINE), flipped(NOTCHED), flipped(tri) end
+          local _, verdict = checkBoth(outline, { notched, tri }, "nested " .. table.concat(tri, ","))
+          assert.are.equal("cross", verdict)
+        end
+      end)
+    end
+  end)
+
+  describe("when a hole's vertex lies inside a level edge of another ring", function()
+    it("accepts the hole touching from outside and refuses it from inside", function()
+      -- hole 1: the rectangle 20..80 x 40..60; (50, 40) lies inside its top edge
+      local rect = { 20, 40, 80, 40, 80, 60, 20, 60 }
+      for _, tri in ipairs(orders({ 50, 40, 55, 30, 45, 30 })) do
+        local _, verdict = checkBoth(OUTLINE, { rect, tri }, "above " .. table.concat(tri, ","))
+        assert.are.equal("valid", verdict)
+      end
+      for _, tri in ipairs(orders({ 50, 40, 45, 50, 55, 50 })) do   -- overlapping: a crossing
+        local _, verdict = checkBoth(OUTLINE, { rect, tri }, "below " .. table.concat(tri, ","))
+        assert.are.equal("cross", verdict)
+      end
+      -- the outline's top edge holds (50, 0): a hole touching it from inside the polygon
+      for _, tri in ipairs(orders({ 50, 0, 55, 10, 45, 10 })) do
+        local _, verdict = checkBoth(OUTLINE, { tri }, "outline " .. table.concat(tri, ","))
+        assert.are.equal("valid", verdict)
+      end
+    end)
+  end)
+
+  describe("when every vertex of a hole lies on another ring", function()
+    it("places the hole by the whole rings", function()
+      -- hole 2's three vertices lie on hole 1's boundary (two of its corners and a point of
+      -- its bottom side): inside hole 1, so refused
+      local rect = { 20, 20, 80, 20, 80, 80, 20, 80 }
+      for _, tri in ipairs(orders({ 20, 20, 80, 20, 50, 80 })) do
+        local _, verdict = checkBoth(OUTLINE, { rect, tri }, "on rect " .. table.concat(tri, ","))
+        assert.is_true(verdict == "inside" or verdict == "cross" or verdict == "unknown", verdict)
+        assert.is_nil((triangulate(OUTLINE, { rect, tri })))
+      end
+    end)
+  end)
+end)
