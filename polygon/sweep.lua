@@ -579,18 +579,16 @@ local function placesCross()
   return false
 end
 
--- The check's usual way, before the sweep (which stays as its fallback): a grid of cells over
--- the rings' box, each edge filed in the cells it passes through, and every two edges filed in
--- one cell whose boxes overlap tested as the sweep tests neighbours (a proper crossing, or an
--- end of one inside the other: touchedAt, for placesCross). Two edges that meet share the cell
--- of a point where they meet, so no meeting is missed. About GRID_LOAD edges a cell: for edges
--- short against the box (outlines, tile maps, map data) each is filed in a cell or two and
--- meets a few others, in straight loops without the sweep's ordered search and shifts, which
--- cost 150 to 250 ns an event on LuaJIT and grew with the order's length on PUC Lua (table.insert
--- moves entries one by one there: noisy-circle-10000 took 4 times noisy-circle-100's time a
--- vertex). Long edges crossing many cells (a star's spikes) would meet each other in many
--- cells: past GRID_BUDGET entries an edge the grid is given up for the sweep, and so it is when
--- the cells are too small for the coordinates (see GRID_FINE).
+-- The check's usual way, before the sweep (its fallback): a grid of cells over the rings' box,
+-- each edge filed in the cells it passes through, and every two edges filed in one cell whose
+-- boxes overlap given the tests the sweep gives neighbours (a proper crossing, or an end of one
+-- inside the other: touchedAt, for placesCross). Two edges that meet share the cell of a point
+-- where they meet, so no meeting is missed. With edges short against the box (tile maps, map
+-- data, drawn levels: an edge in a cell or two, meeting a few others) these are straight loops,
+-- without the sweep's ordered search and shifts (150 to 250 ns an event on LuaJIT). Edges long
+-- against the cells (a noisy circle's spikes) overlap by the dozen in every cell they cross,
+-- where the sweep's order stays cheap: past GRID_REACH, GRID_BUDGET or GRID_PAIRS the grid is
+-- given up for the sweep, and so it is when the cells are too small for the coordinates.
 local GRID_LOAD = 2        -- edges a cell, about
 local GRID_BUDGET = 6      -- cell entries an edge, on average, at most
 local GRID_PAIRS = 48      -- pairs of edges sharing a cell, an edge, on average, at most
@@ -777,9 +775,6 @@ local function fileEdges()
   return true
 end
 
--- true when two edges cross properly, false when none do, nil when the grid was given up.
--- Of several crossings, the one named is the first by its rings (the outline's own first,
--- then by the lower ring, then the higher): the cells' order says nothing a user could use.
 local foundA, foundB, foundLow, foundHigh   -- the crossing to name, so far, and its rings
 
 -- Notes the crossing just found by pairCross (of edges e and f) when it comes first so far.
@@ -791,6 +786,9 @@ local function noteCrossing(e, f)
   end
 end
 
+-- true when two edges cross properly, false when none do, nil when the grid was given up.
+-- Of several crossings, the one named is the first by its rings (the outline's own first,
+-- then by the lower ring, then the higher): the cells' order says nothing a user could use.
 -- (The loop keeps few values live, the boxes read again for each pair: on LuaJIT the exact
 -- tests' side traces, started with more, aborted hundreds of times on tile maps.)
 local function gridCrossing()
