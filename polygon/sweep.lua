@@ -154,6 +154,50 @@ end
 local BUCKET_RUN = 24   -- a bucket holding more nodes than this is sorted by table.sort
                         -- (many vertices on one vertical line), fewer by insertion
 
+-- Whether the nodes order[lo..hi] all lie on one vertical line.
+local function sameX(order, lo, hi)
+  local x = nodeX[order[lo]]
+  for i = lo + 1, hi do
+    if nodeX[order[i]] ~= x then return false end
+  end
+  return true
+end
+
+-- Sorts order[lo..hi], nodes on one vertical line, by y: counted into as many buckets as nodes,
+-- each then sorted by insertion; false, leaving them as they were, when a bucket is crowded. A
+-- crowded bucket by x is most often such a line (a tile map's column of corners: tiles-120 has
+-- 63 nodes a line), where table.sort with a Lua comparison took a fifth of the check.
+local function sortByY(order, lo, hi)
+  local y0, y1 = huge, -huge
+  for i = lo, hi do y0, y1 = min(y0, nodeY[order[i]]), max(y1, nodeY[order[i]]) end
+  if y1 == y0 then return true end   -- one place
+  local count = hi - lo + 1
+  local scale = count / (y1 - y0)
+  local start, run = scratch(44, count + 1), scratch(45, count)
+  for b = 1, count + 1 do start[b] = 0 end
+  local most = 0
+  for i = lo, hi do
+    local b = min(floor((nodeY[order[i]] - y0) * scale), count - 1) + 1
+    start[b] = start[b] + 1
+    most = max(most, start[b])
+  end
+  if most > BUCKET_RUN then return false end   -- crowded again: table.sort (see sortPlaces)
+  local at = 1
+  for b = 1, count + 1 do start[b], at = at, at + start[b] end
+  for i = lo, hi do
+    local k = order[i]
+    local b = min(floor((nodeY[k] - y0) * scale), count - 1) + 1
+    run[start[b]], start[b] = k, start[b] + 1
+  end
+  for i = 1, count do   -- each bucket's run by insertion: the buckets are in order
+    local k, j = run[i], i - 1
+    while j >= 1 and nodeY[run[j]] > nodeY[k] do run[j + 1] = run[j]; j = j - 1 end
+    run[j + 1] = k
+  end
+  for i = 1, count do order[lo + i - 1] = run[i] end
+  return true
+end
+
 -- The nodes of the rings at `starts` in (x, y) order, and their count: counted into as many
 -- buckets as nodes by x (the bucket is monotone in x), then each bucket sorted. Sets rank.
 local function sortPlaces(starts)
@@ -193,10 +237,12 @@ local function sortPlaces(starts)
   for b = 1, count do
     local lo, hi = first[b], first[b + 1] - 1
     if hi - lo >= BUCKET_RUN then
-      local run = {}
-      for i = lo, hi do run[i - lo + 1] = order[i] end
-      sort(run, leftmostFirst)
-      for i = lo, hi do order[i] = run[i - lo + 1] end
+      if not (sameX(order, lo, hi) and sortByY(order, lo, hi)) then
+        local run = {}
+        for i = lo, hi do run[i - lo + 1] = order[i] end
+        sort(run, leftmostFirst)
+        for i = lo, hi do order[i] = run[i - lo + 1] end
+      end
     else
       for i = lo + 1, hi do
         local k, j = order[i], i - 1
@@ -603,13 +649,12 @@ local cellFirst, cellEdge  -- cellEdge[cellFirst[c] .. cellFirst[c + 1] - 1]: th
 local boxX0, boxX1, boxY0, boxY1   -- boxX0[k] .. boxY1[k]: edge k's box
 local stamp                -- stamp[k]: the node whose ray last looked at edge k (see gridPlace)
 
+-- (min, not a branch: see fileShort)
 local function gridCol(x)
-  local col = floor((x - gridLeft) * gridScale)
-  return col < gridCols and col or gridCols - 1
+  return min(floor((x - gridLeft) * gridScale), gridCols - 1)
 end
 local function gridRow(y)
-  local row = floor((y - gridTop) * gridScale)
-  return row < gridRows and row or gridRows - 1
+  return min(floor((y - gridTop) * gridScale), gridRows - 1)
 end
 
 -- The first and last cells (numbers, from 1) that the edge from node k to node q, not level,
@@ -700,17 +745,21 @@ local function fileLong(k, q, n)
 end
 
 -- Notes the box of edge k (to node q) and files it when it lies in one cell or in two side
--- by side: the entries' count then, or -1 - n for an edge left to fileLong.
+-- by side: the entries' count then, or -1 - n for an edge left to fileLong. An edge in one cell
+-- takes two entries too, the second in the spare cell past the grid (junkCell), which no loop
+-- reads: on LuaJIT the branch between one and two went both ways, and its side trace aborted
+-- ("register coalescing too complex") until the exit was left to the interpreter, which then
+-- ran a fifth of the calls' filing.
+local junkCell
 local function fileShort(k, q, n)
   local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
   local ex0, ex1, ey0, ey1 = min(ax, bx), max(ax, bx), min(ay, by), max(ay, by)
   boxX0[k], boxX1[k], boxY0[k], boxY1[k], stamp[k] = ex0, ex1, ey0, ey1, 0
   local row, c0, c1 = gridRow(ey0), gridCol(ex0), gridCol(ex1)
-  if row ~= gridRow(ey1) or c1 > c0 + 1 or n + 2 > entryBudget then return -1 - n end
+  if max(gridRow(ey1) - row, c1 - c0 - 1, n + 2 - entryBudget) > 0 then return -1 - n end
   local cell = row * gridCols + c0 + 1
   entryCell[n + 1], entryEdge[n + 1] = cell, k
-  if c1 == c0 then return n + 1 end
-  entryCell[n + 2], entryEdge[n + 2] = cell + 1, k
+  entryCell[n + 2], entryEdge[n + 2] = max(cell + c1 - c0, junkCell * (c0 + 1 - c1)), k
   return n + 2
 end
 
@@ -735,6 +784,7 @@ local function fileEdges()
   gridLeft, gridTop, gridScale = x0, y0, 1 / gridSize
   gridCols = min(floor((x1 - x0) * gridScale) + 1, placeCount)
   gridRows = min(floor((y1 - y0) * gridScale) + 1, placeCount)
+  junkCell = gridCols * gridRows + 1
   entryBudget = GRID_BUDGET * placeCount
   entryCell, entryEdge = scratch(34, entryBudget), scratch(35, entryBudget)
   boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
@@ -753,24 +803,26 @@ local function fileEdges()
   end
   -- the entries sorted by cell (counted, then placed)
   local cells = gridCols * gridRows
-  cellFirst = scratch(41, cells + 1)
-  for c = 1, cells + 1 do cellFirst[c] = 0 end
+  cellFirst = scratch(41, cells + 2)
+  for c = 1, cells + 2 do cellFirst[c] = 0 end
   for j = 1, n do
     local c = entryCell[j]
     cellFirst[c] = cellFirst[c] + 1
   end
   local at, pairCount = 1, 0   -- each cell's first entry, then (filling) its next one
-  for c = 1, cells + 1 do
+  for c = 1, cells + 2 do
     local count = cellFirst[c]
     cellFirst[c], at, pairCount = at, at + count, pairCount + count * (count - 1)
   end
+  local junk = cellFirst[junkCell + 1] - cellFirst[junkCell]
+  pairCount = pairCount - junk * (junk - 1)   -- the spare cell's pairs are never tested
   if pairCount > 2 * GRID_PAIRS * placeCount then return false end
   cellEdge = scratch(42, n)
   for j = 1, n do
     local c = entryCell[j]
     cellEdge[cellFirst[c]], cellFirst[c] = entryEdge[j], cellFirst[c] + 1
   end
-  for c = cells, 1, -1 do cellFirst[c + 1] = cellFirst[c] end   -- back to first entries
+  for c = cells + 1, 1, -1 do cellFirst[c + 1] = cellFirst[c] end   -- back to first entries
   cellFirst[1] = 1
   return true
 end
@@ -789,23 +841,33 @@ end
 -- true when two edges cross properly, false when none do, nil when the grid was given up.
 -- Of several crossings, the one named is the first by its rings (the outline's own first,
 -- then by the lower ring, then the higher): the cells' order says nothing a user could use.
--- (The loop keeps few values live, the boxes read again for each pair: on LuaJIT the exact
--- tests' side traces, started with more, aborted hundreds of times on tile maps.)
+-- One loop over the pairs of all cells, cell after cell (entries i and j of the cell ending at
+-- entry `last`), with few values live and the boxes read again for each pair: a loop per cell
+-- and per entry, a few turns each, ran on LuaJIT as many small traces entered and left at every
+-- cell (8 us of tiles-8's 36), and the exact tests' side traces, started with more values
+-- live, aborted hundreds of times on tile maps.
 local function gridCrossing()
   if not fileEdges() then return nil end
   foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
-  for c = 1, gridCols * gridRows do
-    local last = cellFirst[c + 1] - 1
-    for i = cellFirst[c], last - 1 do
-      local e = cellEdge[i]
-      for j = i + 1, last do
-        local f = cellEdge[j]
-        -- the boxes overlap: one test of one number (its differences are exact in sign)
-        if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
-          and pairCross(e, f) then
-          noteCrossing(e, f)
-        end
+  local cells = gridCols * gridRows
+  local c, i, j, last = 0, 0, 1, 0
+  while true do
+    if j <= last then
+      local e, f = cellEdge[i], cellEdge[j]
+      -- the boxes overlap: one test of one number (its differences are exact in sign)
+      if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
+        and pairCross(e, f) then
+        noteCrossing(e, f)
       end
+      j = j + 1
+    elseif i + 1 < last then   -- the cell's next entry, with those after it
+      i = i + 1
+      j = i + 1
+    else                       -- the next cell
+      c = c + 1
+      if c > cells then break end
+      i, last = cellFirst[c], cellFirst[c + 1] - 1
+      j = i + 1
     end
   end
   crossedA, crossedB = foundA, foundB
@@ -834,7 +896,8 @@ local function gridPlace(start)
     local decided, count = true, 0
     for i = from, to do
       local e = cellEdge[i]
-      if stamp[e] ~= v and nodeRing[e] ~= ring and boxY0[e] <= vy and boxY1[e] >= vy then
+      -- most entries do not reach v's height: that test first, as one number (one branch)
+      if max(boxY0[e] - vy, vy - boxY1[e]) <= 0 and stamp[e] ~= v and nodeRing[e] ~= ring then
         stamp[e] = v
         local q = nextNode[e]
         local side = orient(e, q, v) * turn   -- the sign of (q - e) x (v - e)
