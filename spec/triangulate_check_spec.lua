@@ -90,6 +90,41 @@ describe("polygonTriangulate's validity check", function()
     end)
   end)
 
+  describe("when many vertices share one vertical line", function()
+    it("sorts them by y, spread or crowded, and answers as the oracle", function()
+      -- the left side: 40 vertices at x = 0, y spread over 0..390 (a tile map's column) or
+      -- crowded into 0..39e-6 below one at y = 400 (the sort's buckets by y crowd again)
+      for _, step in ipairs({ 10, 1e-6 }) do
+        local points = { 0, 400 }
+        for i = 39, 0, -1 do points[#points + 1], points[#points + 2] = 0, i * step end
+        for _, v in ipairs({ 100, 0, 100, 400 }) do points[#points + 1] = v end
+        checkBoth(points, { { 50, 200, 60, 210, 50, 220 } }, "column " .. step)
+        points[2] = 0.5 * step   -- now the first edge runs back along the column: overlapping
+        checkBoth(points, {}, "column overlapping " .. step)
+      end
+    end)
+    it("finds the holes that meet the column at one of its vertices", function()
+      -- (0, 200) is the outline's and each hole's: touching there, or overlapping, or outside;
+      -- the places along the column must come out in order for the nodes there to be one place
+      local column = { 0, 400 }
+      for i = 39, 0, -1 do column[#column + 1], column[#column + 2] = 0, 10 * i end
+      for _, v in ipairs({ 100, 0, 100, 400 }) do column[#column + 1] = v end
+      local reversed = {}
+      for i = #column - 1, 1, -2 do
+        reversed[#reversed + 1], reversed[#reversed + 2] = column[i], column[i + 1]
+      end
+      local lists = {
+        { { 0, 200, 20, 190, 20, 210 } },
+        { { 0, 200, 20, 190, 20, 210 }, { 0, 200, 20, 215, 20, 230 } },
+        { { 0, 200, 20, 190, 20, 230 }, { 0, 200, 20, 200, 20, 220 } },
+        { { 0, 200, -20, 190, -20, 210 } },
+      }
+      for _, points in ipairs({ column, reversed }) do
+        for c, list in ipairs(lists) do checkBoth(points, list, "column, holes " .. c) end
+      end
+    end)
+  end)
+
   -- A hole in the notch of another: hole 1 is the rectangle 20..80 x 30..70 with a V cut down
   -- from its top side to w = (50, 50), so w is reflex and both its edges rise to y = 30.
   -- Hole 2 touches hole 1 at w only. Seen from w, a ray's side of hole 1 is not hole 2's side:
