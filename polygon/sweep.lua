@@ -877,22 +877,37 @@ end
 -- Where the hole at node `start` lies, by the crossing rule along its row of cells (the rings
 -- do not cross): a message when outside the polygon or inside another hole, nil when well
 -- placed, false when every vertex of the hole lies on another ring (holeMisplaced decides).
--- A ray from a vertex v of the hole, level, to the nearer side of the grid: the other rings'
--- edges it crosses lie in the cells of v's row on that side (the edges reaching v's height
+-- A ray from a vertex v of the hole, level, to one side of the grid: the other rings' edges
+-- it crosses lie in the cells of v's row on that side (the edges reaching v's height
 -- there pass through the row). Crossing the edges of ring r an odd number of times puts v
 -- inside ring r. An edge of another ring holding v (an end, or inside) leaves the count
 -- undecided: the next vertex is tried.
 local oddRing, oddRings = {}, {}
+
+-- The entries a ray from node v reads: the first and last, and whether it goes left (the side
+-- of v's row with fewer entries: their number is a difference of cellFirst's).
+local function rayEntries(v)
+  local row, col = gridRow(nodeY[v]), gridCol(nodeX[v])
+  local base = row * gridCols + 1
+  local left, right = cellFirst[base], cellFirst[base + gridCols] - 1
+  local here, past = cellFirst[base + col], cellFirst[base + col + 1] - 1
+  if past - left <= right - here then return left, past, true end
+  return here, right, false
+end
+
 local function gridPlace(start)
   local ring = nodeRing[start]
-  local v = start
+  -- from the vertex whose ray reads the fewest entries (holes are small: a few rows apart)
+  local v, k, fewest = start, start, huge
+  repeat
+    local from, to = rayEntries(k)
+    if to - from < fewest then v, fewest = k, to - from end
+    k = nextNode[k]
+  until k == start
+  start = v
   repeat
     local vx, vy = nodeX[v], nodeY[v]
-    local row, col = gridRow(vy), gridCol(vx)
-    local leftward = col + col < gridCols
-    local base = row * gridCols + 1
-    local from = leftward and cellFirst[base] or cellFirst[base + col]
-    local to = leftward and cellFirst[base + col + 1] - 1 or cellFirst[base + gridCols] - 1
+    local from, to, leftward = rayEntries(v)
     local decided, count = true, 0
     for i = from, to do
       local e = cellEdge[i]
