@@ -649,12 +649,16 @@ local cellFirst, cellEdge  -- cellEdge[cellFirst[c] .. cellFirst[c + 1] - 1]: th
 local boxX0, boxX1, boxY0, boxY1   -- boxX0[k] .. boxY1[k]: edge k's box
 local stamp                -- stamp[k]: the node whose ray last looked at edge k (see gridPlace)
 
--- (min, not a branch: see fileShort)
+-- (On LuaJIT min, not a branch: see fileShort. On PUC Lua the branch, cheaper than a call.)
 local function gridCol(x)
-  return min(floor((x - gridLeft) * gridScale), gridCols - 1)
+  if JIT then return min(floor((x - gridLeft) * gridScale), gridCols - 1) end
+  local col = floor((x - gridLeft) * gridScale)
+  return col < gridCols and col or gridCols - 1
 end
 local function gridRow(y)
-  return min(floor((y - gridTop) * gridScale), gridRows - 1)
+  if JIT then return min(floor((y - gridTop) * gridScale), gridRows - 1) end
+  local row = floor((y - gridTop) * gridScale)
+  return row < gridRows and row or gridRows - 1
 end
 
 -- The first and last cells (numbers, from 1) that the edge from node k to node q, not level,
@@ -704,7 +708,11 @@ local function pairCross(e, f)
     return false
   end
   local s1, s2 = orient(a, b, c), orient(a, b, d)
-  if min(s1, s2) > 0 or max(s1, s2) < 0 then return false end   -- c and d on one side
+  if JIT then   -- c and d on one side (on PUC Lua the comparisons, cheaper than the calls)
+    if min(s1, s2) > 0 or max(s1, s2) < 0 then return false end
+  elseif (s1 > 0 and s2 > 0) or (s1 < 0 and s2 < 0) then
+    return false
+  end
   local s3, s4 = orient(c, d, a), orient(c, d, b)
   if min(max(s1, s2), -min(s1, s2)) > 0 and min(max(s3, s4), -min(s3, s4)) > 0 then
     crossedA, crossedB = a, c
@@ -854,9 +862,15 @@ local function gridCrossing()
   while true do
     if j <= last then
       local e, f = cellEdge[i], cellEdge[j]
-      -- the boxes overlap: one test of one number (its differences are exact in sign)
-      if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
-        and pairCross(e, f) then
+      -- the boxes overlap: on LuaJIT one test of one number (its differences are exact in
+      -- sign), on PUC Lua the comparisons, most often only the first (no call of max)
+      if JIT then
+        if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
+          and pairCross(e, f) then
+          noteCrossing(e, f)
+        end
+      elseif boxX0[f] <= boxX1[e] and boxX0[e] <= boxX1[f] and boxY0[f] <= boxY1[e]
+        and boxY0[e] <= boxY1[f] and pairCross(e, f) then
         noteCrossing(e, f)
       end
       j = j + 1
@@ -911,8 +925,12 @@ local function gridPlace(start)
     local decided, count = true, 0
     for i = from, to do
       local e = cellEdge[i]
-      -- most entries do not reach v's height: that test first, as one number (one branch)
-      if max(boxY0[e] - vy, vy - boxY1[e]) <= 0 and stamp[e] ~= v and nodeRing[e] ~= ring then
+      -- most entries do not reach v's height: that test first (on LuaJIT as one number, one
+      -- branch; on PUC Lua two comparisons, cheaper than a call of max)
+      local reaches
+      if JIT then reaches = max(boxY0[e] - vy, vy - boxY1[e]) <= 0
+      else reaches = boxY0[e] <= vy and boxY1[e] >= vy end
+      if reaches and stamp[e] ~= v and nodeRing[e] ~= ring then
         stamp[e] = v
         local q = nextNode[e]
         local side = orient(e, q, v) * turn   -- the sign of (q - e) x (v - e)
