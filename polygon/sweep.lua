@@ -544,8 +544,9 @@ local TIED_PAIRS = 4      -- pairs of edges along one another (both ways) at a p
                         -- whose 2^pairs orders are tried; past that the place is not tested
 
 -- Whether entries[1..count], sorted by angle, alternate in and out and nest like brackets.
+local open = {}   -- alternateAndNest's open brackets: read only up to its depth
 local function alternateAndNest(entries, count)
-  local open, depth = {}, 0   -- the chains' pairs, as brackets
+  local depth = 0   -- the chains' pairs, as brackets
   for j = 1, count do
     local u = entries[j]
     if u % 2 == entries[j % count + 1] % 2 then return false end   -- two of a kind in a row
@@ -561,8 +562,14 @@ local function alternateAndNest(entries, count)
   return depth == 0
 end
 
+-- chainsCross's arrays, kept from one place to the next (read only up to their counts): tile
+-- maps meet at a thousand places, each of which made three tables.
+local entries, tied = {}, {}
+local SORT_RUN = 16   -- entries sorted by insertion at most (in Lua, which LuaJIT compiles;
+                      -- table.sort's comparison calls are not compiled into the caller)
+
 local function chainsCross(first, last, touched)
-  local entries, count = {}, 0
+  local count = 0
   for g = first, last do
     local k = placeOrder[g]
     entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
@@ -574,28 +581,37 @@ local function chainsCross(first, last, touched)
     count = count + 2
   end
   placeX, placeY = nodeX[placeOrder[first]], nodeY[placeOrder[first]]
-  sort(entries, byAngle)
-  local at, tied = 1, {}
+  if count <= SORT_RUN then
+    for i = 2, count do
+      local u, j = entries[i], i - 1
+      while j >= 1 and byAngle(u, entries[j]) do entries[j + 1] = entries[j]; j = j - 1 end
+      entries[j + 1] = u
+    end
+  else
+    for i = #entries, count + 1, -1 do entries[i] = nil end   -- table.sort sorts them all
+    sort(entries, byAngle)
+  end
+  local at, tiedCount = 1, 0
   while at <= count do   -- the runs of edges in one direction: count those leaving, reaching
     local u, runEnd, balance = entries[at], at, 0
     while runEnd < count and not byAngle(u, entries[runEnd + 1]) do runEnd = runEnd + 1 end
     for j = at, runEnd do balance = balance + (entries[j] % 2 == 0 and 1 or -1) end
     if balance > 1 or balance < -1 then return true end
     if runEnd > at + 1 then return false end   -- three or more: not decided here
-    if runEnd == at + 1 then tied[#tied + 1] = at end   -- one each way: either order
+    if runEnd == at + 1 then tiedCount = tiedCount + 1; tied[tiedCount] = at end   -- either order
     at = runEnd + 1
   end
-  if #tied > TIED_PAIRS then return false end
-  for orders = 0, 2 ^ #tied - 1 do   -- bit t of orders: swap the t-th tied pair
+  if tiedCount > TIED_PAIRS then return false end
+  for orders = 0, 2 ^ tiedCount - 1 do   -- bit t of orders: swap the t-th tied pair
     local swapped = orders
-    for t = 1, #tied do
+    for t = 1, tiedCount do
       local j = tied[t]
       if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
       swapped = (swapped - swapped % 2) / 2
     end
     if alternateAndNest(entries, count) then return false end
     swapped = orders
-    for t = 1, #tied do
+    for t = 1, tiedCount do
       local j = tied[t]
       if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
       swapped = (swapped - swapped % 2) / 2
