@@ -125,6 +125,31 @@ describe("polygonTriangulate's validity check", function()
     end)
   end)
 
+  describe("when the outline is a wide flat strip", function()
+    it("places its holes along the columns and answers as the oracle", function()
+      -- 0..1600 x 0..10, its long sides in edges of 5, so the grid takes it (two rows of
+      -- cells); 40 square holes 4 wide at x = 20h - 10; then one hole moved out of the strip,
+      -- one into another hole, one touching the bottom side at a vertex
+      local points = {}
+      for i = 0, 320 do points[#points + 1], points[#points + 2] = 5 * i, 0 end
+      for i = 320, 0, -1 do points[#points + 1], points[#points + 2] = 5 * i, 10 end
+      local function square(x, y, size) return { x, y, x + size, y, x + size, y + size, x, y + size } end
+      local list = {}
+      for h = 1, 40 do list[h] = square(20 * h - 10, 3, 4) end
+      assert.are.equal("valid", select(2, checkBoth(points, list, "strip")))
+      for _, change in ipairs({ { 17, square(330, 12, 4), "outside" },
+                                { 18, square(331, 4, 2), "inside" },
+                                { 19, { 380, 0, 384, 4, 376, 4 }, "valid" } }) do
+        local moved = {}
+        for h = 1, 40 do moved[h] = list[h] end
+        moved[change[1]] = change[2]
+        local way, verdict = checkBoth(points, moved, "strip, hole " .. change[1])
+        assert.are.equal(change[3], verdict)
+        assert.are.equal("grid", way)
+      end
+    end)
+  end)
+
   -- A hole in the notch of another: hole 1 is the rectangle 20..80 x 30..70 with a V cut down
   -- from its top side to w = (50, 50), so w is reflex and both its edges rise to y = 30.
   -- Hole 2 touches hole 1 at w only. Seen from w, a ray's side of hole 1 is not hole 2's side:
