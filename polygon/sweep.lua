@@ -36,7 +36,7 @@ end
 -- nodes: a call on a small outline spent about a tenth of its time making its thirty-odd
 -- arrays and collecting them (bench/NOTES.md, session 20). Slot s holds one array at a time,
 -- replaced by a larger one when a call needs more; a larger call makes its own, dropped at its
--- end, so what stays is bounded (some 35 arrays of a few thousand entries). A reused array
+-- end, so what stays is bounded (some 45 arrays of a few thousand entries). A reused array
 -- holds the last call's values: every user writes an entry before reading it, or clears it.
 local SCRATCH_NODES = 2048
 local pool, poolSize, pooling = {}, {}, false
@@ -810,7 +810,9 @@ local function fileEdges()
   gridRows = min(floor((y1 - y0) * gridScale) + 1, placeCount)
   junkCell = gridCols * gridRows + 1
   entryBudget = GRID_BUDGET * placeCount
-  entryCell, entryEdge = scratch(34, entryBudget), scratch(35, entryBudget)
+  -- made for 3 entries an edge (2 for most: a short edge's second may be the spare cell's);
+  -- past that they grow
+  entryCell, entryEdge = scratch(34, 3 * placeCount), scratch(35, 3 * placeCount)
   boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
   boxY0, boxY1 = scratch(38, capacity), scratch(39, capacity)
   stamp = scratch(40, capacity)

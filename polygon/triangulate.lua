@@ -17,7 +17,7 @@ local checkPoints = check.checkPoints
 local shapeBehind = check.shapeBehind
 local validate = object.validate
 local orient, same, leftmostFirst, newArray = sweep.orient, sweep.same, sweep.leftmostFirst, sweep.newArray
-local scratch = sweep.scratch   -- arrays kept between calls (slots 1 to 10 are sweep.lua's)
+local scratch = sweep.scratch   -- arrays kept between calls (slots 1 to 10 and 34 to 45 are sweep.lua's)
 local anyCrossing, ringsTrouble = sweep.anyCrossing, sweep.ringsTrouble
 
 local M = {}
