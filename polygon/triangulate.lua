@@ -550,7 +550,7 @@ local function isEar(b)
       if x >= spanX0 and x <= spanX1 then
         local y = entryY[j]
         k = entryNode[j]
-        if y >= boxY0 and y <= boxY1 and k ~= earA and k ~= earC and nearTriangle(x, y)
+        if y >= boxY0 and y <= boxY1 and k ~= earA and k ~= earB and k ~= earC and nearTriangle(x, y)
           and keepListed(k) and blocks(k, earA, earB, earC) then
           blocker[b] = k
           return false
@@ -559,9 +559,11 @@ local function isEar(b)
       j = j + 1
     end
   end
+  -- b itself comes up when listed (a pinch point's copy, or reflex before): blocks(b, a, b, c)
+  -- is false (at b, both of b's edges run along the triangle's sides), so it is passed over
   for i = 1, found do
     k = entryNode[nearby[i]]
-    if k ~= earA and k ~= earC and keepListed(k) and blocks(k, earA, earB, earC) then
+    if k ~= earA and k ~= earB and k ~= earC and keepListed(k) and blocks(k, earA, earB, earC) then
       blocker[b] = k
       return false
     end
