@@ -660,7 +660,7 @@ end
 
 local function clipEars(s, tris)
   strict = true
-  ringCount, pending = 0, {}
+  ringCount, pending = 0, scratch(37, capacity + capacity)   -- settle may push two a drop
   local k = s
   repeat ringCount = ringCount + 1; pending[ringCount] = k; k = nextNode[k] until k == s
   pendingTop = ringCount
