@@ -576,6 +576,13 @@ local function isEar(b)
   -- few entries) ran as a trace of its own, and every row left it for the interpreter
   local row, lastRow, j, last = rowOf(boxY0) - 1, rowOf(boxY1), 1, 0
   local found = 0
+  -- the corners, when listed, are hidden from the scan (their entries' x set to huge, as a
+  -- dropped one's): they lie on the triangle, so every scan found them, and the loop over what
+  -- it found ran for them alone on most ears
+  local listedA, listedB, listedC = listed[a], listed[b], listed[c]
+  if listedA then entryX[entryOf[a]] = huge end
+  if listedB then entryX[entryOf[b]] = huge end
+  if listedC then entryX[entryOf[c]] = huge end
   while true do
     if j > last then   -- the next row's span
       row = row + 1
@@ -605,20 +612,25 @@ local function isEar(b)
       if x >= spanX0 and x <= spanX1 then
         local y = entryY[j]
         k = entryNode[j]
-        if y >= boxY0 and y <= boxY1 and k ~= earA and k ~= earB and k ~= earC and nearTriangle(x, y)
-          and keepListed(k) and blocks(k, earA, earB, earC) then
-          blocker[b], heldBy[b] = k, insideFound
-          return false
+        if y >= boxY0 and y <= boxY1 and nearTriangle(x, y) and keepListed(k)
+          and blocks(k, earA, earB, earC) then
+          found = -1
+          break
         end
       end
       j = j + 1
     end
   end
-  -- b itself comes up when listed (a pinch point's copy, or reflex before): blocks(b, a, b, c)
-  -- is false (at b, both of b's edges run along the triangle's sides), so it is passed over
+  if listedA then entryX[entryOf[a]] = nodeX[a] end
+  if listedB then entryX[entryOf[b]] = nodeX[b] end
+  if listedC then entryX[entryOf[c]] = nodeX[c] end
+  if found < 0 then   -- PUC Lua's scan found k blocking
+    blocker[b], heldBy[b] = k, insideFound
+    return false
+  end
   for i = 1, found do
     k = entryNode[nearby[i]]
-    if k ~= earA and k ~= earB and k ~= earC and keepListed(k) and blocks(k, earA, earB, earC) then
+    if keepListed(k) and blocks(k, earA, earB, earC) then
       blocker[b], heldBy[b] = k, insideFound
       return false
     end
