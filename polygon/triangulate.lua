@@ -868,6 +868,7 @@ local function releaseNodes()
   twin, joined, bandHead, bandNext, bandNode = nil, nil, nil, nil, nil
   sweep.bind(nil, nil, nil, nil, nil, nil, nil, nil)
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
+  entryRow, rowDropped, pending = nil, nil, nil
 end
 
 -- polygonTriangulate, documented in polygon.lua: the triangles as new tables of the input's own
