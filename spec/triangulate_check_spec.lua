@@ -14,6 +14,7 @@ local holes = require "holes"
 local shapes = require "shapes"
 
 local triangulate = polygon.polygonTriangulate
+local unpack = rawget(table, "unpack") or rawget(_G, "unpack")   -- (5.1 and LuaJIT: a global)
 
 local JIT = rawget(_G, "jit") ~= nil
 local CASES = JIT and 300 or 600
@@ -177,6 +178,13 @@ describe("polygonTriangulate's validity check", function()
     return out
   end
 
+  -- checkBoth on the outline, the notched hole and the triangle `tri` as hole 2, mirrored or not
+  local function inNotch(tri, flip, label)
+    local outline, notched = OUTLINE, NOTCHED
+    if flip then outline, notched, tri = flipped(OUTLINE), flipped(NOTCHED), flipped(tri) end
+    return checkBoth(outline, { notched, tri }, label .. " " .. table.concat(tri, ","))
+  end
+
   describe("when a hole touches another at its reflex vertex", function()
     for _, flip in ipairs({ false, true }) do
       local label = flip and " (mirrored)" or ""
@@ -184,9 +192,7 @@ describe("polygonTriangulate's validity check", function()
         -- (45, 35) and (55, 35) lie above both edges of the notch: the edge (20, 30)-(50, 50)
         -- is at y = 30 + 25 * 20 / 30 = 46.7 for x = 45, below 35 on screen
         for _, tri in ipairs(orders({ 50, 50, 55, 35, 45, 35 })) do
-          local outline, notched = OUTLINE, NOTCHED
-          if flip then outline, notched, tri = flipped(OUTLINE), flipped(NOTCHED), flipped(tri) end
-          local way, verdict = checkBoth(outline, { notched, tri }, "notch " .. table.concat(tri, ","))
+          local way, verdict = inNotch(tri, flip, "notch")
           assert.are.equal("valid", verdict)
           assert.are.equal("grid", way)
         end
@@ -195,32 +201,37 @@ describe("polygonTriangulate's validity check", function()
         -- (45, 60) and (55, 60) lie inside hole 1's rectangle, below w: the two holes'
         -- regions overlap, which the oracle and the library call a crossing
         for _, tri in ipairs(orders({ 50, 50, 45, 60, 55, 60 })) do
-          local outline, notched = OUTLINE, NOTCHED
-          if flip then outline, notched, tri = flipped(OUTLINE), flipped(NOTCHED), flipped(tri) end
-          local _, verdict = checkBoth(outline, { notched, tri }, "nested " .. table.concat(tri, ","))
+          local _, verdict = inNotch(tri, flip, "nested")
           assert.are.equal("cross", verdict)
         end
       end)
     end
   end)
 
+  -- The oracle's verdicts on OUTLINE with the holes `before` and then `tri`, in each order of
+  -- tri's vertices, each checked by checkBoth.
+  local function verdicts(before, tri, label)
+    local out = {}
+    for _, t in ipairs(orders(tri)) do
+      local list = { unpack(before) }
+      list[#list + 1] = t
+      local _, verdict = checkBoth(OUTLINE, list, label .. " " .. table.concat(t, ","))
+      out[#out + 1] = verdict
+    end
+    return out
+  end
+  local function allOf(list, wanted)
+    for _, v in ipairs(list) do assert.are.equal(wanted, v) end
+  end
+
   describe("when a hole's vertex lies inside a level edge of another ring", function()
     it("accepts the hole touching from outside and refuses it from inside", function()
       -- hole 1: the rectangle 20..80 x 40..60; (50, 40) lies inside its top edge
       local rect = { 20, 40, 80, 40, 80, 60, 20, 60 }
-      for _, tri in ipairs(orders({ 50, 40, 55, 30, 45, 30 })) do
-        local _, verdict = checkBoth(OUTLINE, { rect, tri }, "above " .. table.concat(tri, ","))
-        assert.are.equal("valid", verdict)
-      end
-      for _, tri in ipairs(orders({ 50, 40, 45, 50, 55, 50 })) do   -- overlapping: a crossing
-        local _, verdict = checkBoth(OUTLINE, { rect, tri }, "below " .. table.concat(tri, ","))
-        assert.are.equal("cross", verdict)
-      end
+      allOf(verdicts({ rect }, { 50, 40, 55, 30, 45, 30 }, "above"), "valid")
+      allOf(verdicts({ rect }, { 50, 40, 45, 50, 55, 50 }, "below"), "cross")   -- overlapping
       -- the outline's top edge holds (50, 0): a hole touching it from inside the polygon
-      for _, tri in ipairs(orders({ 50, 0, 55, 10, 45, 10 })) do
-        local _, verdict = checkBoth(OUTLINE, { tri }, "outline " .. table.concat(tri, ","))
-        assert.are.equal("valid", verdict)
-      end
+      allOf(verdicts({}, { 50, 0, 55, 10, 45, 10 }, "outline"), "valid")
     end)
   end)
 
@@ -229,9 +240,10 @@ describe("polygonTriangulate's validity check", function()
       -- hole 2's three vertices lie on hole 1's boundary (two of its corners and a point of
       -- its bottom side): inside hole 1, so refused
       local rect = { 20, 20, 80, 20, 80, 80, 20, 80 }
-      for _, tri in ipairs(orders({ 20, 20, 80, 20, 50, 80 })) do
-        local _, verdict = checkBoth(OUTLINE, { rect, tri }, "on rect " .. table.concat(tri, ","))
+      for _, verdict in ipairs(verdicts({ rect }, { 20, 20, 80, 20, 50, 80 }, "on rect")) do
         assert.is_true(verdict == "inside" or verdict == "cross" or verdict == "unknown", verdict)
+      end
+      for _, tri in ipairs(orders({ 20, 20, 80, 20, 50, 80 })) do
         assert.is_nil((triangulate(OUTLINE, { rect, tri })))
       end
     end)
