@@ -14,7 +14,6 @@ local holes = require "holes"
 local shapes = require "shapes"
 
 local triangulate = polygon.polygonTriangulate
-local unpack = rawget(table, "unpack") or rawget(_G, "unpack")   -- (5.1 and LuaJIT: a global)
 
 local JIT = rawget(_G, "jit") ~= nil
 local CASES = JIT and 300 or 600
@@ -210,6 +209,7 @@ describe("polygonTriangulate's validity check", function()
 
   -- The oracle's verdicts on OUTLINE with the holes `before` and then `tri`, in each order of
   -- tri's vertices, each checked by checkBoth.
+  local unpack = rawget(table, "unpack") or rawget(_G, "unpack")   -- (5.1, LuaJIT: a global)
   local function verdicts(before, tri, label)
     local out = {}
     for _, t in ipairs(orders(tri)) do
