@@ -36,7 +36,7 @@ end
 -- nodes: a call on a small outline spent about a tenth of its time making its thirty-odd
 -- arrays and collecting them (bench/NOTES.md, session 20). Slot s holds one array at a time,
 -- replaced by a larger one when a call needs more; a larger call makes its own, dropped at its
--- end, so what stays is bounded (some 45 arrays of a few thousand entries). A reused array
+-- end, so what stays is bounded (some 50 arrays of a few thousand entries). A reused array
 -- holds the last call's values: every user writes an entry before reading it, or clears it.
 local SCRATCH_NODES = 2048
 local pool, poolSize, pooling = {}, {}, false
