@@ -651,11 +651,12 @@ end
 -- against the cells (a noisy circle's spikes) overlap by the dozen in every cell they cross,
 -- where the sweep's order stays cheap: past GRID_REACH, GRID_BUDGET or GRID_PAIRS the grid is
 -- given up for the sweep, and so it is when the cells are too small for the coordinates.
-local GRID_LOAD = 2        -- edges a cell, about
+local GRID_LOAD = 1        -- edges a cell, about (with 2 the check took rain 917 us, eberly-6
+                           -- 418, water2 522, against 646, 332, 443 now: bench/NOTES.md)
 local GRID_BUDGET = 6      -- cell entries an edge, on average, at most
 local GRID_PAIRS = 48      -- pairs of edges sharing a cell, an edge, on average, at most
 local GRID_REACH = 2       -- an edge's |dx| + |dy| in cells, on average, at most (the edges of
-                           -- a noisy circle of 1,000 vertices reach 2.8 cells, 10,000 8.5:
+                           -- a noisy circle of 1,000 vertices reach 3.9 cells, 10,000 12:
                            -- their boxes overlap by the dozen, where the sweep's order is cheap)
 local GRID_FINE = 2^-24    -- a cell's side against the largest coordinate's magnitude, at least:
                            -- the rows' spans in x below then err by far less than GRID_MARGIN
