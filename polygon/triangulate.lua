@@ -164,56 +164,100 @@ local function between(hx, hy, x, y, bx, by)
   return (hy < y) == (y < by) and y ~= hy
 end
 
--- The bridges' index: horizontal bands over the rings' box, each listing the nodes whose edge
--- (k -> nextNode[k]) reaches into it, so that a hole's ray and triangle look at the edges near
--- their rows instead of walking the whole joined ring for each hole (which made tile maps with a
--- thousand holes quadratic). A node is listed again when its edge changes (at a bridge); an
--- entry whose node is gone, not yet joined, or whose edge no longer reaches the band, is passed
--- over. Entries are singly linked from their band's head.
-local BAND_LOAD = 4     -- entries per node at most; fewer bands when the edges span more
-local bandHead, bandNext, bandNode, bandCount, bandTop, bandScale, bandEntries
+-- The bridges' index: a grid of square cells over the rings' box, each listing the nodes whose
+-- edge (k -> nextNode[k]) passes through it. A hole's ray walks its row of cells leftwards from
+-- the hole and stops one column past the nearest hit found, and the triangle searched next
+-- reads only the cells under its box: bands of whole rows made every ray read its band from end
+-- to end, which on a long flat strip with a thousand holes, or water-huge3's 1,443, was most of
+-- the call (bench/NOTES.md, session 22). A node is listed again when its edge changes (at a
+-- bridge); an entry whose node is gone, not yet joined, or whose edge no longer passes the
+-- cell, is passed over. Entries are singly linked from their cell's head.
+local INDEX_LOAD = 2        -- nodes per cell, about, when the cells are made
+local INDEX_ENTRIES = 4     -- entries per node at most; larger cells when the edges pass more
+local INDEX_MARGIN = 0.25   -- cells: an edge's span in a row, widened against rounding
+local INDEX_FINE = 2 ^ -30  -- cells narrower than this times the largest coordinate list edges
+                            -- by their boxes, and rays walk their whole row (rounding could
+                            -- pass a margin of a quarter cell)
+local indexHead, indexNext, indexNode, indexEntries
+local indexLeft, indexTop, indexScale, indexSize, indexCols, indexRows, indexFine
 
--- The band of a y coordinate: monotone in y (the scaling rounds monotonically), so an edge's
--- ends' bands bound the bands of every point of it.
-local function bandOf(y)
-  return min(max(floor((y - bandTop) * bandScale), 0), bandCount - 1) + 1
+-- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so an
+-- edge's box bounds the cells of every point of it.
+local function indexCol(x)
+  local c = floor((x - indexLeft) * indexScale)
+  return c < indexCols and c or indexCols - 1
+end
+local function indexRow(y)
+  local r = floor((y - indexTop) * indexScale)
+  return r < indexRows and r or indexRows - 1
 end
 
+-- The cells (numbers, from 1) edge k passes in row r, first and last: the columns of its span
+-- in x over the row's band of y, band and span widened by INDEX_MARGIN cells and clamped to its
+-- box; the columns of its box when it lies in one row (oneRow), or when the cells are too fine
+-- for the margin.
+local function indexSpan(k, r, oneRow)
+  local q = nextNode[k]
+  local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+  local x0, x1 = min(ax, bx), max(ax, bx)
+  local base = r * indexCols + 1
+  if oneRow or not indexFine then return base + indexCol(x0), base + indexCol(x1) end
+  local margin = INDEX_MARGIN * indexSize
+  local lo = max(min(ay, by), indexTop + r * indexSize - margin)
+  local hi = max(ay, by)   -- the last row holds every place past it (see indexRow)
+  if r < indexRows - 1 then hi = min(hi, indexTop + (r + 1) * indexSize + margin) end
+  local slope = (bx - ax) / (by - ay)
+  local xa, xb = ax + (lo - ay) * slope, ax + (hi - ay) * slope
+  return base + indexCol(max(x0, min(xa, xb) - margin)), base + indexCol(min(x1, max(xa, xb) + margin))
+end
+
+-- Lists node k in the cells its edge passes through. One flat loop over the cells of all its
+-- rows (nested loops here aborted LuaJIT's traces by the thousand: "register coalescing too
+-- complex", as in polygon/sweep.lua's filing).
 local function listEdge(k)
   local y0, y1 = nodeY[k], nodeY[nextNode[k]]
-  if y0 > y1 then y0, y1 = y1, y0 end
-  for b = bandOf(y0), bandOf(y1) do
-    bandEntries = bandEntries + 1
-    bandNode[bandEntries], bandNext[bandEntries], bandHead[b] = k, bandHead[b], bandEntries
+  local r, lastRow = indexRow(min(y0, y1)), indexRow(max(y0, y1))
+  local c, last = indexSpan(k, r, r == lastRow)
+  local n = indexEntries
+  while true do
+    if c > last then
+      r = r + 1
+      if r > lastRow then break end
+      c, last = indexSpan(k, r, false)
+    else
+      n = n + 1
+      indexNode[n], indexNext[n], indexHead[c] = k, indexHead[c], n
+      c = c + 1
+    end
   end
+  indexEntries = n
 end
 
--- Builds the index over the rings at starts: about sqrt(n) bands, halved until the entries
--- are at most BAND_LOAD per node (edges as tall as the box make every band list them).
-local function buildBands(starts)
-  local top, bottom, n = huge, -huge, 0
+-- Builds the index over the rings at starts: cells of about INDEX_LOAD nodes, or larger ones
+-- when the edges are long: an edge passes at most (|dx| + |dy|) / size + 2 cells in the cells'
+-- own size, so with L the edges' sum of |dx| + |dy|, cells of at least L / (2 n) keep the
+-- entries near INDEX_ENTRIES = 4 per node.
+local function buildIndex(starts)
+  local x0, y0, x1, y1, n, length = huge, huge, -huge, -huge, 0, 0
   for _, s in ipairs(starts) do
     local k = s
-    repeat top, bottom, n = min(top, nodeY[k]), max(bottom, nodeY[k]), n + 1; k = nextNode[k] until k == s
+    repeat
+      local x, y, q = nodeX[k], nodeY[k], nextNode[k]
+      x0, y0, x1, y1 = min(x0, x), min(y0, y), max(x1, x), max(y1, y)
+      n, length, k = n + 1, length + abs(nodeX[q] - x) + abs(nodeY[q] - y), q
+    until k == s
   end
-  bandTop, bandCount = top, max(floor(sqrt(n)), 1)
-  while true do
-    bandScale = bottom > top and bandCount / (bottom - top) or 0
-    local total = 0
-    for _, s in ipairs(starts) do
-      local k = s
-      repeat
-        local y0, y1 = nodeY[k], nodeY[nextNode[k]]
-        total = total + abs(bandOf(y1) - bandOf(y0)) + 1
-        k = nextNode[k]
-      until k == s
-    end
-    if total <= BAND_LOAD * n or bandCount == 1 then break end
-    bandCount = max(floor(bandCount / 2), 1)
-  end
-  bandHead, bandEntries = scratch(11, bandCount), 0
-  bandNext, bandNode = scratch(12, BAND_LOAD * capacity), scratch(13, BAND_LOAD * capacity)
-  for b = 1, bandCount do bandHead[b] = 0 end
+  -- the outline has area, so the box has width and height
+  indexLeft, indexTop = x0, y0
+  indexSize = max(sqrt((x1 - x0) * (y1 - y0) * INDEX_LOAD / n), length / ((INDEX_ENTRIES - 2) * n))
+  indexScale = 1 / indexSize
+  indexCols = min(floor((x1 - x0) * indexScale) + 1, n)
+  indexRows = min(floor((y1 - y0) * indexScale) + 1, n)
+  indexFine = indexSize > INDEX_FINE * max(abs(x0), abs(x1), abs(y0), abs(y1))
+  local cells = indexCols * indexRows
+  indexHead, indexEntries = scratch(11, cells), 0
+  indexNext, indexNode = scratch(12, INDEX_ENTRIES * capacity), scratch(13, INDEX_ENTRIES * capacity)
+  for c = 1, cells do indexHead[c] = 0 end
   for _, s in ipairs(starts) do
     local k = s
     repeat listEdge(k); k = nextNode[k] until k == s
@@ -225,43 +269,55 @@ end
 -- unless another vertex in the triangle (h, hit, P) is: the one there at the least angle from
 -- the ray (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside). The
 -- holes join from left to right, so no hole yet to join reaches left of h: the joined ring's
--- edges in h's band are all the ray can meet.
+-- edges in h's row of cells are all the ray can meet.
 local function bridgeTarget(h)
   local hx, hy = nodeX[h], nodeY[h]
   local vertex, lo, hi   -- the nearest hit so far: a vertex, or an edge lo -> hi (upwards in y)
-  local e = bandHead[bandOf(hy)]
-  while e > 0 do
-    local k = bandNode[e]
-    e = bandNext[e]
-    if not gone[k] and joined[nodeRing[k]] then
-      local q = nextNode[k]
-      local x, y = nodeX[k], nodeY[k]
-      if y == hy and x <= hx then
-        if x == hx then return copyFacing(k, nextNode[h]) end   -- the hole touches the ring here
-        if lo then
-          if cross(nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi], nodeX[lo], nodeY[lo], x, y) <= 0 then
-            vertex, lo, hi = k, nil, nil
-          end
-        elseif not vertex or x > nodeX[vertex] then
-          vertex = k
-        end
-      end
-      local qy = nodeY[q]
-      if (y < hy and qy > hy) or (y > hy and qy < hy) then
-        local a, b = k, q
-        if y > qy then a, b = q, k end
-        local ax, ay = nodeX[a], nodeY[a]
-        if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy) <= 0 then   -- meets the ray
-          if vertex then
-            if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
-              vertex, lo, hi = nil, a, b
+  local rowFirst = indexRow(hy) * indexCols + 1
+  local cell, stop = rowFirst + indexCol(hx), rowFirst
+  while cell >= stop do
+    local e = indexHead[cell]
+    while e > 0 do
+      local k = indexNode[e]
+      e = indexNext[e]
+      if not gone[k] and joined[nodeRing[k]] then
+        local q = nextNode[k]
+        local x, y = nodeX[k], nodeY[k]
+        if y == hy and x <= hx then
+          if x == hx then return copyFacing(k, nextNode[h]) end   -- the hole touches the ring here
+          if lo then
+            if cross(nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi], nodeX[lo], nodeY[lo], x, y) <= 0 then
+              vertex, lo, hi = k, nil, nil
             end
-          elseif not lo or rightOf(lo, hi, a, b) > 0 then
-            lo, hi = a, b
+          elseif not vertex or x > nodeX[vertex] then
+            vertex = k
+          end
+        end
+        local qy = nodeY[q]
+        if (y < hy and qy > hy) or (y > hy and qy < hy) then
+          local a, b = k, q
+          if y > qy then a, b = q, k end
+          local ax, ay = nodeX[a], nodeY[a]
+          if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy) <= 0 then   -- meets the ray
+            if vertex then
+              if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
+                vertex, lo, hi = nil, a, b
+              end
+            elseif not lo or rightOf(lo, hi, a, b) > 0 then
+              lo, hi = a, b
+            end
           end
         end
       end
     end
+    -- every hit not yet seen lies in a column left of those walked; one left of the nearest
+    -- hit's (its place estimated when on an edge) holds none nearer
+    if indexFine and (vertex or lo) then
+      local x = vertex and nodeX[vertex]
+        or nodeX[lo] + (hy - nodeY[lo]) * (nodeX[hi] - nodeX[lo]) / (nodeY[hi] - nodeY[lo])
+      stop = max(stop, rowFirst + indexCol(x) - 1)
+    end
+    cell = cell - 1
   end
   if vertex then return copyFacing(vertex, h) end
   if not lo then return nil end
@@ -271,22 +327,24 @@ local function bridgeTarget(h)
   local side = nodeY[p] > hy and 1 or -1   -- the side of the ray the triangle lies on
   local lx, ly, ux, uy = nodeX[lo], nodeY[lo], nodeX[hi], nodeY[hi]
   local best = p
-  -- the triangle's nodes lie in the bands from h's to P's; each node is listed in its own
-  -- edge's bands, which hold its place
-  local b0, b1 = bandOf(hy), bandOf(nodeY[p])
-  if b0 > b1 then b0, b1 = b1, b0 end
-  for b = b0, b1 do
-    e = bandHead[b]
-    while e > 0 do
-      local k = bandNode[e]
-      e = bandNext[e]
-      local x, y = nodeX[k], nodeY[k]
-      if not gone[k] and joined[nodeRing[k]] and (y - hy) * side > 0
-        and cross(lx, ly, ux, uy, lx, ly, x, y) <= 0 then
-        local c = cross(hx, hy, nodeX[p], nodeY[p], hx, hy, x, y) * side
-        if c >= 0 then   -- inside the triangle (h, hit, P) or on its sides
-          local t = cross(hx, hy, x, y, hx, hy, nodeX[best], nodeY[best]) * side
-          if t < 0 or (t == 0 and between(hx, hy, x, y, nodeX[best], nodeY[best])) then best = k end
+  -- the triangle's nodes lie in the cells of its box; each node is listed in its own cell
+  local r0, r1 = indexRow(hy), indexRow(nodeY[p])
+  if r0 > r1 then r0, r1 = r1, r0 end
+  local c0, c1 = indexCol(nodeX[p]), indexCol(hx)
+  for r = r0, r1 do
+    for c = r * indexCols + c0 + 1, r * indexCols + c1 + 1 do
+      local e = indexHead[c]
+      while e > 0 do
+        local k = indexNode[e]
+        e = indexNext[e]
+        local x, y = nodeX[k], nodeY[k]
+        if not gone[k] and joined[nodeRing[k]] and (y - hy) * side > 0
+          and cross(lx, ly, ux, uy, lx, ly, x, y) <= 0 then
+          local s = cross(hx, hy, nodeX[p], nodeY[p], hx, hy, x, y) * side
+          if s >= 0 then   -- inside the triangle (h, hit, P) or on its sides
+            local t = cross(hx, hy, x, y, hx, hy, nodeX[best], nodeY[best]) * side
+            if t < 0 or (t == 0 and between(hx, hy, x, y, nodeX[best], nodeY[best])) then best = k end
+          end
         end
       end
     end
@@ -849,7 +907,7 @@ function build(points, n, holes, checkOnly)
     lefts[#lefts + 1] = best
   end
   sort(lefts, leftmostFirst)
-  if #lefts > 0 then buildBands(starts) end
+  if #lefts > 0 then buildIndex(starts) end
   for i = 1, #lefts do
     local m = bridgeTarget(lefts[i])
     if not m then return nil, "a hole is outside the polygon" end
@@ -865,7 +923,7 @@ end
 local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
   listed, shared, reflexSeen, nodeRing, blocker, heldBy = nil, nil, nil, nil, nil, nil
-  twin, joined, bandHead, bandNext, bandNode = nil, nil, nil, nil, nil
+  twin, joined, indexHead, indexNext, indexNode = nil, nil, nil, nil, nil
   sweep.bind(nil, nil, nil, nil, nil, nil, nil, nil)
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
   entryRow, rowDropped, pending = nil, nil, nil
