@@ -1015,9 +1015,90 @@ local function gridPlace(start)
   return false
 end
 
-local gridUsed   -- whether the last check went by the grid (then gridPlace places the holes)
+-- Placing the holes by the nearest crossing. The ray from a hole's vertex v to the left, at a
+-- level just above v's (the crossing rule's half-open levels: an end at v's level counts as
+-- below it), first meets some edge e of another ring; v lies in the region on e's side facing
+-- it, as nothing lies between. When that side is the polygon's (every ring runs with the
+-- polygon's inside on its orient > 0 side: the holes are linked reversed) and e is the
+-- outline's, the hole is inside the outline, and outside every other hole unless one holds
+-- the whole outline (one holding v would hold the outline's edge at e, and with no crossing all
+-- of the outline; see gridPlaceAll). When e is another hole's, v lies where that hole's outside
+-- lies, and the hole is placed as that one is. So a hole reads only the cells from v to the
+-- nearest crossing, where the crossing rule reads half a row or column (the placing was 2.6 of
+-- tiles-120's 15 ms: bench/NOTES.md, session 22). Anything else (no crossing, the other side, v
+-- on another ring's edge, two edges meeting the ray at one point, a chain of holes coming back
+-- to one already on it) leaves the hole to gridPlace, which also names the trouble.
+
+-- Which of two edges, both crossing the level just above y = vy (each given by its lower end
+-- and upper end, an end at vy counting as lower), meets it further right: > 0 when e does, < 0
+-- when f does, 0 when they run together there. They do not cross properly, so the end of one
+-- at the higher of their lower ends, or else at the lower of their upper ends, tested against
+-- the other tells. The plain sign of (u - l) x (p - l) is < 0 for p right of an edge l -> u that
+-- goes up the y axis.
+local function furtherRight(el, eu, fl, fu)
+  local s
+  if nodeY[el] >= nodeY[fl] then s = -orient(fl, fu, el) else s = orient(el, eu, fl) end
+  if s == 0 then
+    if nodeY[eu] <= nodeY[fu] then s = -orient(fl, fu, eu) else s = orient(el, eu, fu) end
+  end
+  return s * turn   -- orient's sign times turn: the plain sign
+end
+
+-- The edge (its node) the ray from node v to the left meets first, with v on its polygon side
+-- (orient > 0); or nil when that is not so or cannot be told here (see above).
+local function nearestLeft(v)
+  local ring, vx, vy = nodeRing[v], nodeX[v], nodeY[v]
+  local rowFirst = gridRow(vy) * gridCols + 1
+  local cell, stop = rowFirst + gridCol(vx), rowFirst
+  local near, nearLow, nearUp = nil, 0, 0
+  -- one loop over the cells' entries, cell after cell (see gridCrossing)
+  local i, last = cellFirst[cell], cellFirst[cell + 1] - 1
+  while true do
+    if i > last then
+      -- every crossing not yet seen lies in a column left of those walked, so further left
+      -- than one a column left of the nearest's (its place estimated: the cells are coarse
+      -- against the rounding, see GRID_FINE)
+      if near then
+        local lx, ly = nodeX[nearLow], nodeY[nearLow]
+        local x = lx + (vy - ly) * (nodeX[nearUp] - lx) / (nodeY[nearUp] - ly)
+        stop = max(stop, rowFirst + gridCol(x) - 1)
+      end
+      cell = cell - 1
+      if cell < stop then break end
+      i, last = cellFirst[cell], cellFirst[cell + 1] - 1
+    else
+      local e = cellEdge[i]
+      i = i + 1
+      if nodeRing[e] ~= ring and boxY0[e] <= vy and boxY1[e] >= vy then
+        local q = nextNode[e]
+        local side = orient(e, q, v)
+        if side == 0 and boxX0[e] <= vx and boxX1[e] >= vx then return nil end   -- v on it
+        local ey = nodeY[e]
+        if (ey > vy) ~= (nodeY[q] > vy) then   -- crosses the level just above v's
+          local low, up = e, q
+          if ey > vy then low, up = q, e end
+          -- left of v: v right of the edge low -> up
+          if orient(low, up, v) * turn < 0 then
+            if not near then
+              near, nearLow, nearUp = e, low, up
+            elseif e ~= near then   -- (an edge through several cells comes once a cell)
+              local s = furtherRight(low, up, nearLow, nearUp)
+              if s == 0 then return nil end
+              if s > 0 then near, nearLow, nearUp = e, low, up end
+            end
+          end
+        end
+      end
+    end
+  end
+  if near and orient(near, nextNode[near], v) > 0 then return near end
+  return nil
+end
+
+local gridUsed   -- whether the last check went by the grid (then gridPlaceAll places the holes)
 M.grid = true    -- false: the sweep always (for the specs that compare the two ways)
 M.lastWay = nil  -- "grid" or "sweep": the way the last check went (for those specs)
+M.lastSlow = nil -- the holes the last check by the grid placed by gridPlace (for the specs)
 
 local function sweepCrossing(starts)
   sortPlaces(starts)
@@ -1129,6 +1210,73 @@ local function holeMisplaced(starts, h)
   return nil
 end
 
+-- Where the holes at starts[2], ... lie, when the grid found no crossing: the message for the
+-- first one (in the holes' order) outside the polygon or inside another hole, else nil. Each
+-- hole is placed by nearestLeft when it can be, through the chain of holes whose polygon side
+-- its ray meets first, up to the outline; a hole that no vertex's ray places, or a chain that
+-- comes back to a hole on it, by gridPlace (then by holeMisplaced). placed[r]: ring r's
+-- verdict, kept for the chains that reach it (false while on the chain being followed). A hole
+-- not placed is placed by gridPlace, which names the trouble. So a hole placed inside the
+-- outline is passed even when another hole holds the whole outline: that one is outside, and
+-- is named when its turn comes (as the sweep names it). gridPlace runs once a hole (its
+-- stamps would hide edges from a second run from the same vertex): told[r] keeps its message,
+-- or true for none.
+local told, placed, chain, indexOf = {}, {}, {}, {}   -- by ring; emptied after each call
+local function slowPlace(starts, i)
+  local r = nodeRing[starts[i]]
+  if told[r] == nil then
+    M.lastSlow = M.lastSlow + 1
+    local message = gridPlace(starts[i])
+    if message == false then message = holeMisplaced(starts, i) end
+    told[r] = message or true
+  end
+  return told[r] ~= true and told[r] or nil
+end
+
+local function placeAll(starts)
+  M.lastSlow = 0
+  for i = 2, #starts do indexOf[nodeRing[starts[i]]] = i end
+  for i = 2, #starts do
+    local r, count, ok = nodeRing[starts[i]], 0, nil
+    while ok == nil do
+      ok = placed[r]
+      if ok == nil then
+        count = count + 1
+        chain[count], placed[r] = r, false
+        -- from the hole's first vertex, or the next ones while a ray cannot tell
+        local s = starts[indexOf[r]]
+        local v, e = s
+        repeat
+          e = nearestLeft(v)
+          v = nextNode[v]
+        until e or v == s
+        if not e then
+          ok = slowPlace(starts, indexOf[r]) == nil
+        elseif nodeRing[e] == 1 then
+          ok = true
+        else
+          r = nodeRing[e]
+        end
+      end
+    end
+    for j = 1, count do placed[chain[j]] = ok end
+    if not ok then
+      local message = slowPlace(starts, i)
+      if message then return message end
+    end
+  end
+  return nil
+end
+
+local function gridPlaceAll(starts)
+  local message = placeAll(starts)
+  for i = 2, #starts do
+    local r = nodeRing[starts[i]]
+    told[r], placed[r], chain[i - 1], indexOf[r] = nil, nil, nil, nil
+  end
+  return message
+end
+
 -- nil when the rings at starts (starts[1] the outline, then the holes with area) are a valid
 -- input, else the message naming the trouble: which rings cross, or a hole outside the polygon
 -- or inside another hole.
@@ -1137,14 +1285,10 @@ local function trouble(starts)
   local ordered = crossing ~= nil   -- the sweep's order held: ringStart is known
   if crossing == nil then crossing = anyCrossing(starts) end
   if crossing then return crossingMessage() end
+  if gridUsed then return gridPlaceAll(starts) end
   for i = 2, #starts do
     local h = nodeRing[starts[i]]   -- hole h - 1
-    if gridUsed then
-      local message = gridPlace(starts[i])
-      if message == false then message = holeMisplaced(starts, i) end
-      if message then return message end
-    end
-    local start = gridUsed and 1 or ordered and ringStart[h] or 0
+    local start = ordered and ringStart[h] or 0
     if start < 0 then
       local g = ringBelow[h] and nodeRing[ringBelow[h]] or 1
       if g == 1 then return ("holes[%d] is outside the polygon"):format(h - 1) end

@@ -1,10 +1,13 @@
 -- The validity check of polygonTriangulate and polygonConvexParts has two ways (polygon/sweep.lua):
--- a grid of cells, whose pairs of edges in one cell are tested and whose rows place the holes by
--- the crossing rule, and the sweep, taken when the grid would be slow (long edges) or too coarse
--- for the coordinates. Both must give every input the same verdict, the oracle's (spec/support:
--- no code shared with the library). Generated cases through both ways, then the hard cases of the
--- grid's hole placement: a hole touching another ring exactly where the crossing rule's ray
--- starts, which once would have taken the touching vertex's side for the hole's.
+-- a grid of cells, whose pairs of edges in one cell are tested and which places each hole by the
+-- nearest crossing to its left (or, when that cannot tell, by the crossing rule along a row or
+-- column), and the sweep, taken when the grid would be slow (long edges) or too coarse for the
+-- coordinates. Both must give every input the same verdict, the oracle's (spec/support: no code
+-- shared with the library). Generated cases through both ways, then the hard cases of the grid's
+-- hole placement: a hole touching another ring exactly where the crossing rule's ray starts,
+-- which once would have taken the touching vertex's side for the hole's; the nearest crossing
+-- behind a long edge listed first, at one point for two edges, or on a chain of holes that comes
+-- back to itself.
 
 local polygon = require "polygon"
 local sweep = require "polygon.sweep"
@@ -12,6 +15,7 @@ local oracle = require "oracle"
 local prng = require "prng"
 local holes = require "holes"
 local shapes = require "shapes"
+local earcut = require "earcut"
 
 local triangulate = polygon.polygonTriangulate
 
@@ -245,6 +249,152 @@ describe("polygonTriangulate's validity check", function()
       end
       for _, tri in ipairs(orders({ 20, 20, 80, 20, 50, 80 })) do
         assert.is_nil((triangulate(OUTLINE, { rect, tri })))
+      end
+    end)
+  end)
+
+  -- The square 0..100 with its top side (y = 100) in `teeth` teeth 1 deep, so that the grid
+  -- takes it with holes of long edges (400 edges in a box of 100: cells of about 5); flipped, the
+  -- same picture upside down, where each ring's nodes run the other way round.
+  local function toothed(teeth, flip)
+    local out = { 0, 0, 100, 0, 100, 100 }
+    for i = 1, teeth do
+      local x = 100 - 100 * i / teeth
+      out[#out + 1], out[#out + 2] = x + 50 / teeth, 99
+      out[#out + 1], out[#out + 2] = x, 100
+    end
+    return flip and flipped(out) or out
+  end
+
+  describe("when a hole is placed by the nearest crossing to its left", function()
+    it("looks past a long shallow edge that its cells list first", function()
+      -- the outline's edge e from (1000, 544.5) to (450, 517) rises 0.05 a unit: at hole 2's
+      -- levels (519.6 to 520.8) it lies in the row of cells 499.4..549.3 (cells of 1,000 /
+      -- sqrt(401) = 49.94) from x = 450 to 1,000, so the cell of hole 2's vertex lists it; it
+      -- meets y = 520 at x = 450 + 3 / 0.05 = 510, in the column 499.4..549.3 where hole 1's
+      -- left side x = 540 also is. Hole 1 lies under e (e is at 517 + 0.05 * 90 = 521.5 at x =
+      -- 540, above hole 1's top 521) and holds hole 2: the ray must read that whole column.
+      local points = { 0, 0, 1000, 0, 1000, 544.5, 450, 517, 450, 1000 }
+      for i = 1, 194 do   -- the top: teeth, so that the cells are small
+        local x = 450 - 450 * i / 195
+        points[#points + 1], points[#points + 2] = x + 450 / 195 / 2, 995
+        points[#points + 1], points[#points + 2] = x, 1000
+      end
+      points[#points + 1], points[#points + 2] = 0, 1000
+      local box = { 540, 515, 950, 515, 950, 521, 540, 521 }
+      for _, tri in ipairs(orders({ 900, 520, 880, 519.6, 885, 520.8 })) do
+        local way, verdict = checkBoth(points, { box, tri }, "roof " .. table.concat(tri, ","))
+        assert.are.equal("inside", verdict)
+        assert.are.equal("grid", way)
+        assert.are.equal("grid", (checkBoth(points, { tri }, "roof alone")))
+      end
+    end)
+
+    it("refuses a hole inside one of two holes back to back, whichever comes first", function()
+      -- holes 1 and 2 share a stretch of x = 50; hole 3 lies inside the right one, so its ray
+      -- meets both edges there at one point: that tells nothing, and the whole rings decide
+      local lefts = { { 10, 10, 50, 10, 50, 90, 10, 90 }, { 10, 30, 50, 30, 50, 90, 10, 90 } }
+      local rights = { { 50, 10, 90, 10, 90, 90, 50, 90 }, { 50, 10, 90, 10, 90, 70, 50, 70 } }
+      for _, flip in ipairs({ false, true }) do
+        local outline = toothed(200, flip)
+        for v = 1, 2 do
+          for _, tri in ipairs(orders({ 60, 40, 70, 50, 60, 60 })) do
+            for _, list in ipairs({ { lefts[v], rights[v], tri }, { rights[v], lefts[v], tri } }) do
+              local way, verdict = checkBoth(outline, list, "back to back " .. v)
+              assert.are.equal("inside", verdict)
+              assert.are.equal("grid", way)
+            end
+          end
+        end
+      end
+    end)
+
+    it("refuses a hole inside another whose side has a vertex at the hole's level", function()
+      -- hole 1's left side x = 10 has a vertex at (10, 40) or (10, 60), at the level of hole
+      -- 2's vertices: the edge below it crosses the level just above, the one above it does not
+      -- (an end at the level counts as below); both ways round (flipped)
+      local inner = { 40, 40, 60, 40, 60, 60, 40, 60 }
+      for _, y in ipairs({ 40, 60 }) do
+        local around = { 10, 10, 90, 10, 90, 90, 10, 90, 10, y }
+        for _, flip in ipairs({ false, true }) do
+          local list = flip and { flipped(around), flipped(inner) } or { around, inner }
+          local way, verdict = checkBoth(toothed(200, flip), list, "vertex at the level " .. y)
+          assert.are.equal("inside", verdict)
+          assert.are.equal("grid", way)
+        end
+      end
+    end)
+
+    it("places holes whose rays meet each other, inside the outline or out of it", function()
+      -- hole G is a C open to the right (its mouth 20..95 x 40..60) with a tooth hanging into
+      -- the mouth's end at (93, 50); hole H, a tongue 30..88 x 45..55, lies in the mouth. H's
+      -- rays meet G's mouth; the ray from the tooth's tip meets H's right side: a chain that
+      -- comes back to H, placed by the whole rings. Inside the outline both are valid; moved
+      -- 200 to the right, both are outside, and the first is named.
+      local g = { 96, 60, 96, 80, 10, 80, 10, 20, 95, 20, 95, 40, 20, 40, 20, 60, 90, 60, 93, 50 }
+      local h = { 30, 45, 88, 45, 88, 55, 30, 55 }
+      local function moved(ring, dx)
+        local out = {}
+        for i = 1, #ring, 2 do out[i], out[i + 1] = ring[i] + dx, ring[i + 1] end
+        return out
+      end
+      for _, flip in ipairs({ false, true }) do
+        local outline = toothed(200, flip)
+        local gf, hf = flip and flipped(g) or g, flip and flipped(h) or h
+        for _, list in ipairs({ { hf, gf }, { gf, hf } }) do
+          local way, verdict = checkBoth(outline, list, "C and tongue")
+          assert.are.equal("valid", verdict)
+          assert.are.equal("grid", way)
+          local out = { moved(list[1], 200), moved(list[2], 200) }
+          way, verdict = checkBoth(outline, out, "C and tongue outside")
+          assert.are.equal("outside", verdict)
+          assert.are.equal("grid", way)
+          assert.are.equal("holes[1] is outside the polygon", select(2, triangulate(outline, out)))
+        end
+      end
+    end)
+
+    it("places a strip's holes each through its neighbour, none by whole rows", function()
+      -- the strip of "when the outline is a wide flat strip": 0..1600 x 0..10 with 40 squares
+      -- 4 wide at x = 20h - 10, in cells of about sqrt(16000 / 802) = 4.5, so a square's sides
+      -- pass two cells: a ray sees one edge twice, which is no tie. Each hole's first ray meets
+      -- its left neighbour's right side (the first hole's, the outline's left side).
+      local points = {}
+      for i = 0, 320 do points[#points + 1], points[#points + 2] = 5 * i, 0 end
+      for i = 320, 0, -1 do points[#points + 1], points[#points + 2] = 5 * i, 10 end
+      local list = {}
+      for h = 1, 40 do
+        local x = 20 * h - 10
+        list[h] = { x, 3, x + 4, 3, x + 4, 7, x, 7 }
+      end
+      local tris, message, way = byWay(true, points, list)
+      assert.truthy(tris, message)
+      assert.are.equal("grid", way)
+      assert.are.equal(0, sweep.lastSlow)
+    end)
+
+    it("places nearly every hole of earcut's fixtures by the nearest crossing", function()
+      -- holes touching each other at vertices by the hundred: a ray that starts on another ring
+      -- tells nothing, the hole's next vertex does (counted once: 0 of self-tangent-4's 272 and
+      -- touching-holes6's 168 holes were left to whole rows, and 10 of water-huge3's 1,443)
+      for _, name in ipairs({ "self-tangent-4", "touching-holes6" }) do
+        local points, list = earcut.load(name)
+        local tris, message, way = byWay(true, points, list)
+        assert.truthy(tris, message)
+        assert.are.equal("grid", way)
+        assert.is_true(sweep.lastSlow <= #list / 20, name .. ": " .. sweep.lastSlow)
+      end
+    end)
+
+    it("names a hole holding the whole outline as the sweep does", function()
+      -- hole 1 lies inside the outline; hole 2 holds all of it, and so is outside the polygon
+      local inner, around = { 40, 40, 60, 40, 60, 60, 40, 60 }, { -50, -50, 150, -50, 150, 150, -50, 150 }
+      local outline = toothed(200, false)
+      for _, grid in ipairs({ true, false }) do
+        local tris, message, way = byWay(grid, outline, { inner, around })
+        assert.is_nil(tris)
+        assert.are.equal(grid and "grid" or "sweep", way)
+        assert.are.equal("holes[2] is outside the polygon", message)
       end
     end)
   end)
