@@ -703,6 +703,8 @@ end
 -- A lap that finds no ear is retried with strict off; returns false when that one finds none
 -- either (the ring is not weakly simple).
 local ringCount, pending, pendingTop   -- clipEars' state, for settle
+local triCount          -- the entries clipEars has written to its tris (# searched for the
+                        -- end of the array made at its full size, at every ear)
 
 -- Drops the pending nodes that lie in line with their neighbours, and those this brings in line.
 local function settle()
@@ -749,8 +751,9 @@ local function clipEars(s, tris)
     local known = reflexSeen[ear] or (held > 0 and not gone[held])
     local turning = not known and orient(a, ear, c) > 0
     if turning and isEar(ear) then
-      local t = #tris
+      local t = triCount
       tris[t + 1], tris[t + 2], tris[t + 3] = a, ear, c
+      triCount = t + 3
       unlink(ear); ringCount = ringCount - 1
       reflexSeen[a], reflexSeen[c], heldBy[a], heldBy[c] = false, false, 0, 0
       -- most clips leave a and c turning: tested here, settle's loop (a trace of its own on
@@ -915,6 +918,7 @@ function build(points, n, holes, checkOnly)
   end
   buildGrid(outer)
   local tris = newArray(3 * nodeCount)
+  triCount = 0
   if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
   return tris
 end
@@ -936,10 +940,12 @@ function M.polygonTriangulate(points, holes)
     points = shapeBehind(points, "polygonTriangulate", "points", 2) or points end      -- (point tables raise)
   local tris, message = triangulate("polygonTriangulate", points, holes)
   if not tris then releaseNodes(); return nil, message end
-  local out = newArray(#tris / 3)
-  for t = 1, #tris, 3 do
+  local count, m = triCount, 0
+  local out = newArray(count / 3)
+  for t = 1, count, 3 do
     local a, b, c = tris[t], tris[t + 1], tris[t + 2]
-    out[#out + 1] = { inX[a], inY[a], inX[b], inY[b], inX[c], inY[c] }
+    m = m + 1
+    out[m] = { inX[a], inY[a], inX[b], inY[b], inX[c], inY[c] }
   end
   releaseNodes()
   return out
@@ -951,13 +957,13 @@ end
 -- edge u -> v waits in a list kept at the lower of u and v (a few corners) until the edge
 -- v -> u comes; a later u -> v takes the place of one waiting. (A list at a vertex, not a hash
 -- table keyed by the pair, which grew by rehashing.)
-local function sharedEdges(tris, node, nextCorner, cornerCount)
+local function sharedEdges(node, nextCorner, cornerCount)
   local joins = newArray(cornerCount)
   local idLimit = 0
   for k = 1, nodeCount do idLimit = max(idLimit, origin[k]) end
   idLimit = idLimit + 1
   local waitingAt, nextWaiting = newArray(idLimit), newArray(cornerCount)
-  for c = 1, #tris do
+  for c = 1, cornerCount do
     local u, v = origin[node[c]], origin[node[nextCorner[c]]]
     local low = min(u, v)
     local before, other = nil, waitingAt[low]
@@ -1012,9 +1018,9 @@ local function mergeParts(joins, node, nextCorner, prevCorner, part, cornerCount
 end
 
 -- The parts as flat arrays of input vertices: each ring of corners still alive (no heir), once.
-local function partPolygons(tris, node, nextCorner, heir, cornerCount)
+local function partPolygons(node, nextCorner, heir, cornerCount)
   local out, seen = {}, newArray(cornerCount)   -- seen: filled out of order, so made at size
-  for c = 1, #tris do
+  for c = 1, cornerCount do
     if not heir[c] and not seen[c] then
       local poly, k = {}, c
       repeat
@@ -1049,18 +1055,18 @@ function M.polygonConvexParts(points, holes)
   local tris, message = triangulate("polygonConvexParts", points, holes)
   if not tris then releaseNodes(); return nil, message end
   -- corners: three per triangle, linked around their part; a part is the triangles joined so far
-  local cornerCount = #tris
+  local cornerCount = triCount
   local node, nextCorner = newArray(cornerCount), newArray(cornerCount)
   local prevCorner, part = newArray(cornerCount), newArray(cornerCount)
-  for c = 1, #tris do
+  for c = 1, cornerCount do
     local first = c - (c - 1) % 3
     node[c], part[c] = tris[c], first   -- part: a corner's union-find link, the first of a triangle
     nextCorner[c] = c % 3 == 0 and first or c + 1
     prevCorner[c] = c == first and first + 2 or c - 1
   end
-  local joins = sharedEdges(tris, node, nextCorner, cornerCount)
+  local joins = sharedEdges(node, nextCorner, cornerCount)
   local heir = mergeParts(joins, node, nextCorner, prevCorner, part, cornerCount)
-  local out = partPolygons(tris, node, nextCorner, heir, cornerCount)
+  local out = partPolygons(node, nextCorner, heir, cornerCount)
   releaseNodes()
   return out
 end
