@@ -678,20 +678,27 @@ local function gridRow(y)
   return row < gridRows and row or gridRows - 1
 end
 
--- The first and last cells (numbers, from 1) that the edge from node k to node q, not level,
--- may pass through in a row: its span in x over the row's band of y, band and span widened
--- against rounding, clamped to the edge's box.
-local function gridSpan(k, q, row)
-  local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
-  local margin = GRID_MARGIN * gridSize
-  local lo = max(min(ay, by), gridTop + row * gridSize - margin)
-  local hi = max(ay, by)   -- the last row holds every place past it (see gridRow)
-  if row < gridRows - 1 then hi = min(hi, gridTop + (row + 1) * gridSize + margin) end
+-- The span in x of the segment from (ax, ay) to (bx, by), not level, over the band of y of row
+-- `row` of square cells of side `size` from y = top (the last of `rows` rows runs on past its
+-- band: the row functions put every place beyond it there), band and span widened by `margin`
+-- against rounding, clamped to the segment's box: its least and greatest x. (For this grid, and
+-- for triangulate.lua's index of the bridges.)
+local function spanInRow(ax, ay, bx, by, top, size, rows, row, margin)
+  local lo = max(min(ay, by), top + row * size - margin)
+  local hi = max(ay, by)
+  if row < rows - 1 then hi = min(hi, top + (row + 1) * size + margin) end
   local slope = (bx - ax) / (by - ay)
   local xa, xb = ax + (lo - ay) * slope, ax + (hi - ay) * slope
+  return max(min(ax, bx), min(xa, xb) - margin), min(max(ax, bx), max(xa, xb) + margin)
+end
+
+-- The first and last cells (numbers, from 1) that the edge from node k to node q, not level,
+-- may pass through in a row.
+local function gridSpan(k, q, row)
+  local x0, x1 = spanInRow(nodeX[k], nodeY[k], nodeX[q], nodeY[q], gridTop, gridSize, gridRows,
+    row, GRID_MARGIN * gridSize)
   local base = row * gridCols + 1
-  return base + gridCol(max(min(ax, bx), min(xa, xb) - margin)),
-    base + gridCol(min(max(ax, bx), max(xa, xb) + margin))
+  return base + gridCol(x0), base + gridCol(x1)
 end
 
 -- Notes that node p lies inside edge f (f's list at p's place, once).
@@ -1029,12 +1036,12 @@ end
 -- on another ring's edge, two edges meeting the ray at one point, a chain of holes coming back
 -- to one already on it) leaves the hole to gridPlace, which also names the trouble.
 
--- Which of two edges, both crossing the level just above y = vy (each given by its lower end
--- and upper end, an end at vy counting as lower), meets it further right: > 0 when e does, < 0
--- when f does, 0 when they run together there. They do not cross properly, so the end of one
--- at the higher of their lower ends, or else at the lower of their upper ends, tested against
--- the other tells. The plain sign of (u - l) x (p - l) is < 0 for p right of an edge l -> u that
--- goes up the y axis.
+-- Which of two edges crossing one level (each given by its lower end and its upper end, by y;
+-- for nearestLeft the level just above y = vy, an end at vy counting as lower) meets it further
+-- right: > 0 when e does, < 0 when f does, 0 when they run together there. They do not cross
+-- properly, so the end of one at the higher of their lower ends, or else at the lower of their
+-- upper ends, tested against the other tells. The plain sign of (u - l) x (p - l) is < 0 for p
+-- right of an edge l -> u that goes up the y axis. (triangulate.lua's bridges use it too.)
 local function furtherRight(el, eu, fl, fu)
   local s
   if nodeY[el] >= nodeY[fl] then s = -orient(fl, fu, el) else s = orient(el, eu, fl) end
@@ -1310,7 +1317,7 @@ function M.ringsTrouble(starts)
   return message
 end
 
-M.anyCrossing = anyCrossing
+M.anyCrossing, M.furtherRight, M.spanInRow = anyCrossing, furtherRight, spanInRow
 M.orient, M.same, M.leftmostFirst, M.newArray, M.scratch = orient, same, leftmostFirst, newArray, scratch
 
 return M

@@ -19,6 +19,7 @@ local validate = object.validate
 local orient, same, leftmostFirst, newArray = sweep.orient, sweep.same, sweep.leftmostFirst, sweep.newArray
 local scratch = sweep.scratch   -- arrays kept between calls (slots 1 to 10 and 34 to 45 are sweep.lua's)
 local anyCrossing, ringsTrouble = sweep.anyCrossing, sweep.ringsTrouble
+local furtherRight, spanInRow = sweep.furtherRight, sweep.spanInRow
 
 local M = {}
 
@@ -145,19 +146,6 @@ local function copyFacing(m, t)
   return found or m
 end
 
--- Which of two edges, each crossing the line y = hy strictly between its ends, meets it further
--- right: 1 when f does, -1 when e does, 0 when they meet it at one point. The edges do not
--- properly cross, so one end of either, tested against the other, tells. e and f are the
--- lower ends' nodes (by y), eh and fh the upper.
-local function rightOf(e, eh, f, fh)
-  local s
-  if nodeY[f] >= nodeY[e] then s = -orient(e, eh, f) else s = orient(f, fh, e) end
-  if s == 0 then
-    if nodeY[fh] <= nodeY[eh] then s = -orient(e, eh, fh) else s = orient(f, fh, eh) end
-  end
-  return s * turn   -- orient's sign times turn is the plain sign of the cross product
-end
-
 -- Whether (x, y), in line with (hx, hy) and (bx, by) on the same side, lies strictly between.
 local function between(hx, hy, x, y, bx, by)
   if x ~= bx then return (hx < x) == (x < bx) and x ~= hx end
@@ -193,22 +181,16 @@ local function indexRow(y)
 end
 
 -- The cells (numbers, from 1) edge k passes in row r, first and last: the columns of its span
--- in x over the row's band of y, band and span widened by INDEX_MARGIN cells and clamped to its
--- box; the columns of its box when it lies in one row (oneRow), or when the cells are too fine
--- for the margin.
+-- in x over the row's band of y, band and span widened by INDEX_MARGIN cells (sweep.spanInRow);
+-- the columns of its box when it lies in one row (oneRow), or when the cells are too fine for
+-- the margin.
 local function indexSpan(k, r, oneRow)
   local q = nextNode[k]
   local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
-  local x0, x1 = min(ax, bx), max(ax, bx)
   local base = r * indexCols + 1
-  if oneRow or not indexFine then return base + indexCol(x0), base + indexCol(x1) end
-  local margin = INDEX_MARGIN * indexSize
-  local lo = max(min(ay, by), indexTop + r * indexSize - margin)
-  local hi = max(ay, by)   -- the last row holds every place past it (see indexRow)
-  if r < indexRows - 1 then hi = min(hi, indexTop + (r + 1) * indexSize + margin) end
-  local slope = (bx - ax) / (by - ay)
-  local xa, xb = ax + (lo - ay) * slope, ax + (hi - ay) * slope
-  return base + indexCol(max(x0, min(xa, xb) - margin)), base + indexCol(min(x1, max(xa, xb) + margin))
+  if oneRow or not indexFine then return base + indexCol(min(ax, bx)), base + indexCol(max(ax, bx)) end
+  local x0, x1 = spanInRow(ax, ay, bx, by, indexTop, indexSize, indexRows, r, INDEX_MARGIN * indexSize)
+  return base + indexCol(x0), base + indexCol(x1)
 end
 
 -- Lists node k in the cells its edge passes through. One flat loop over the cells of all its
@@ -303,7 +285,7 @@ local function bridgeTarget(h)
               if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
                 vertex, lo, hi = nil, a, b
               end
-            elseif not lo or rightOf(lo, hi, a, b) > 0 then
+            elseif not lo or furtherRight(a, b, lo, hi) > 0 then   -- (both cross y = hy)
               lo, hi = a, b
             end
           end
