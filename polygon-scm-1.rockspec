@@ -31,6 +31,7 @@ build = {
     ["polygon.circle"] = "polygon/circle.lua",
     ["polygon.object"] = "polygon/object.lua",
     ["polygon.convex"] = "polygon/convex.lua",
+    ["polygon.nodes"] = "polygon/nodes.lua",
     ["polygon.sweep"] = "polygon/sweep.lua",
     ["polygon.rects"] = "polygon/rects.lua",
     ["polygon.triangulate"] = "polygon/triangulate.lua",

@@ -1,16 +1,18 @@
 -- polygon/sweep.lua: whether the rings of a polygon with holes are a valid input for the
 -- triangulation (no two edges cross, no ring overlaps another, every hole inside the outline and
--- outside the other holes), by a sweep over the node rings that polygon/triangulate.lua builds,
--- and the exact orientation test over those nodes that both files use. Every decision is one of
--- kernel's exact signs.
+-- outside the other holes), by a grid of edges or a sweep over the node rings that
+-- polygon/triangulate.lua builds. Every decision is one of kernel's exact signs (through
+-- polygon/nodes.lua's tests on the nodes).
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
+local nodes = require(_PACKAGE .. ".nodes")
 
 local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 local floor, sort = math.floor, table.sort
-local CROSS_BOUND, crossExact, JIT = kernel.CROSS_BOUND, kernel.crossExact, kernel.JIT
-local cross = kernel.cross
+local JIT, cross = kernel.JIT, kernel.cross
+local scratch, orient, same, leftmostFirst = nodes.scratch, nodes.orient, nodes.same, nodes.leftmostFirst
+local spanInRow, furtherRight, holeMisplaced = nodes.spanInRow, nodes.furtherRight, nodes.holeMisplaced
 
 local M = {}
 
@@ -24,77 +26,18 @@ local capacity          -- the number of nodes the call can make, at most
 local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
 local twin              -- filled by the sweep: twin[k], the next node at node k's place
 
--- An empty table with room for `size` array entries: LuaJIT's table.new, {} elsewhere. The
--- node arrays are filled in order up to tens of thousands of entries; grown one entry at a
--- time, each is copied at every doubling and leaves its old parts as garbage.
-local newArray = function() return {} end
-do
-  local found, tableNew = pcall(require, "table.new")
-  if found then newArray = function(size) return tableNew(size, 0) end end
-end
--- Scratch arrays, kept from one triangulation to the next when it makes at most SCRATCH_NODES
--- nodes: a call on a small outline spent about a tenth of its time making its thirty-odd
--- arrays and collecting them (bench/NOTES.md, session 20). Slot s holds one array at a time,
--- replaced by a larger one when a call needs more; a larger call makes its own, dropped at its
--- end, so what stays is bounded (some 50 arrays of a few thousand entries). A reused array
--- holds the last call's values: every user writes an entry before reading it, or clears it.
-local SCRATCH_NODES = 2048
-local pool, poolSize, pooling = {}, {}, false
-local function scratch(slot, size)
-  if not pooling then return newArray(size) end
-  local a = pool[slot]
-  if a and poolSize[slot] >= size then return a end
-  a = newArray(size)
-  pool[slot], poolSize[slot] = a, size
-  return a
-end
--- Whether the call now starting, of at most `capacity` nodes, takes its arrays from the pool.
-function M.usePool(nodes) pooling = nodes <= SCRATCH_NODES end
-
 -- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
 local sortKey
 local function bySortKey(a, b) return sortKey[a] < sortKey[b] end
-local function leftmostFirst(a, b)
-  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
-end
-
--- A number with the sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the
--- interior side of the directed edge a -> b of a ring wound like the outer one. Only its sign
--- means anything.
-local function orient(a, b, c)
-  local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
-  -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
-  -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
-  -- too complex"), as did branches taken half the time. The determinant is taken about c,
-  -- (a - c) x (b - c), the same number as (b - a) x (c - a): with c at a or at b (edges meeting
-  -- at a vertex, a pinch point's copies: thousands of calls on map data) both products are 0,
-  -- so the filter vouches for the 0 and no branch leaves the common path
-  local l, r = (ax - cx) * (by - cy), (ay - cy) * (bx - cx)
-  local s = l - r
-  local e = CROSS_BOUND * abs(l + r)
-  -- one test of |s|, not one per sign: a branch taken for half the nodes (convex or reflex)
-  -- made side traces that aborted until LuaJIT flushed all its traces
-  if abs(s) < e or s ~= s then   -- also when l and r differ in sign and s is 0: exact, rare
-    s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
-  end
-  return s * turn
-end
-
--- Whether nodes a and b lie at one place. One comparison, not two: with `and`, the second
--- went either way on shared coordinates (tile maps, map data) and grew a side trace in every
--- caller. (A difference of doubles is 0 only for equal ones: subnormals, not flushed to zero.)
-local function same(a, b)
-  return abs(nodeX[a] - nodeX[b]) + abs(nodeY[a] - nodeY[b]) == 0
-end
-
 -- This file's main chunk: triangulate.lua turns LuaJIT's compiler off and on for every function
 -- in it (see there).
 M.chunk = debug.getinfo(1, "f").func
 
--- Binds the node arrays of a triangulation (nil to drop them).
+-- Binds the node arrays of a triangulation (nil to drop them), here and in polygon/nodes.lua.
 function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn = x, y, nextN, prevN, ring, cap, sign
   twin = twins
+  nodes.bind(x, y, nextN, ring, sign)
 end
 
 
@@ -678,20 +621,6 @@ local function gridRow(y)
   return row < gridRows and row or gridRows - 1
 end
 
--- The span in x of the segment from (ax, ay) to (bx, by), not level, over the band of y of row
--- `row` of square cells of side `size` from y = top (the last of `rows` rows runs on past its
--- band: the row functions put every place beyond it there), band and span widened by `margin`
--- against rounding, clamped to the segment's box: its least and greatest x. (For this grid, and
--- for triangulate.lua's index of the bridges.)
-local function spanInRow(ax, ay, bx, by, top, size, rows, row, margin)
-  local lo = max(min(ay, by), top + row * size - margin)
-  local hi = max(ay, by)
-  if row < rows - 1 then hi = min(hi, top + (row + 1) * size + margin) end
-  local slope = (bx - ax) / (by - ay)
-  local xa, xb = ax + (lo - ay) * slope, ax + (hi - ay) * slope
-  return max(min(ax, bx), min(xa, xb) - margin), min(max(ax, bx), max(xa, xb) + margin)
-end
-
 -- The first and last cells (numbers, from 1) that the edge from node k to node q, not level,
 -- may pass through in a row.
 local function gridSpan(k, q, row)
@@ -1036,21 +965,6 @@ end
 -- on another ring's edge, two edges meeting the ray at one point, a chain of holes coming back
 -- to one already on it) leaves the hole to gridPlace, which also names the trouble.
 
--- Which of two edges crossing one level (each given by its lower end and its upper end, by y;
--- for nearestLeft the level just above y = vy, an end at vy counting as lower) meets it further
--- right: > 0 when e does, < 0 when f does, 0 when they run together there. They do not cross
--- properly, so the end of one at the higher of their lower ends, or else at the lower of their
--- upper ends, tested against the other tells. The plain sign of (u - l) x (p - l) is < 0 for p
--- right of an edge l -> u that goes up the y axis. (triangulate.lua's bridges use it too.)
-local function furtherRight(el, eu, fl, fu)
-  local s
-  if nodeY[el] >= nodeY[fl] then s = -orient(fl, fu, el) else s = orient(el, eu, fl) end
-  if s == 0 then
-    if nodeY[eu] <= nodeY[fu] then s = -orient(fl, fu, eu) else s = orient(el, eu, fu) end
-  end
-  return s * turn   -- orient's sign times turn: the plain sign
-end
-
 -- The edge (its node) the ray from node v to the left meets first, with v on its polygon side
 -- (orient > 0); or nil when that is not so or cannot be told here (see above).
 local function nearestLeft(v)
@@ -1173,50 +1087,6 @@ local function anyCrossing(starts)
   return false
 end
 
--- -1, 0 or 1: where (x, y) lies against the ring at node s (outside, on it, strictly inside),
--- by the crossing rule with the exact side test and an exact test for the boundary.
-local function ringSide(s, x, y)
-  local inside = false
-  local k = s
-  repeat
-    local q = nextNode[k]
-    local x1, y1, x2, y2 = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
-    local c = cross(x1, y1, x2, y2, x1, y1, x, y)
-    if c == 0 and min(x1, x2) <= x and x <= max(x1, x2) and min(y1, y2) <= y and y <= max(y1, y2) then
-      return 0
-    end
-    if (y1 > y) ~= (y2 > y) and (y2 > y1) == (c > 0) then inside = not inside end
-    k = q
-  until k == s
-  return inside and 1 or -1
-end
-
--- Where hole h lies, by the crossing rule from its vertices (the rings do not cross: the first
--- vertex off another ring decides), when the sweep could not tell: a message when it is outside
--- the polygon or inside another hole, else nil.
-local function holeMisplaced(starts, h)
-  local k, side = starts[h]
-  repeat
-    side = ringSide(starts[1], nodeX[k], nodeY[k])
-    k = nextNode[k]
-  until side ~= 0 or k == starts[h]
-  local name = nodeRing[starts[h]] - 1
-  if side < 0 then return ("holes[%d] is outside the polygon"):format(name) end
-  for g = 2, #starts do
-    if g ~= h then
-      k = starts[h]
-      repeat
-        side = ringSide(starts[g], nodeX[k], nodeY[k])
-        k = nextNode[k]
-      until side ~= 0 or k == starts[h]
-      if side > 0 then
-        return ("holes[%d] is inside holes[%d]"):format(name, nodeRing[starts[g]] - 1)
-      end
-    end
-  end
-  return nil
-end
-
 -- Where the holes at starts[2], ... lie, when the grid found no crossing: the message for the
 -- first one (in the holes' order) outside the polygon or inside another hole, else nil. Each
 -- hole is placed by nearestLeft when it can be, through the chain of holes whose polygon side
@@ -1317,7 +1187,6 @@ function M.ringsTrouble(starts)
   return message
 end
 
-M.anyCrossing, M.furtherRight, M.spanInRow = anyCrossing, furtherRight, spanInRow
-M.orient, M.same, M.leftmostFirst, M.newArray, M.scratch = orient, same, leftmostFirst, newArray, scratch
+M.anyCrossing = anyCrossing
 
 return M

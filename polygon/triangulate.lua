@@ -6,6 +6,7 @@ local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local check = require(_PACKAGE .. ".check")
 local object = require(_PACKAGE .. ".object")
+local nodes = require(_PACKAGE .. ".nodes")
 local sweep = require(_PACKAGE .. ".sweep")
 local rects = require(_PACKAGE .. ".rects")
 
@@ -16,10 +17,10 @@ local cross, areaSign = kernel.cross, kernel.areaSign
 local checkPoints = check.checkPoints
 local shapeBehind = check.shapeBehind
 local validate = object.validate
-local orient, same, leftmostFirst, newArray = sweep.orient, sweep.same, sweep.leftmostFirst, sweep.newArray
-local scratch = sweep.scratch   -- arrays kept between calls (slots 1 to 10 and 34 to 45 are sweep.lua's)
+local orient, same, leftmostFirst, newArray = nodes.orient, nodes.same, nodes.leftmostFirst, nodes.newArray
+local scratch = nodes.scratch   -- arrays kept between calls (slots 1 to 10 and 34 to 45 are sweep.lua's)
 local anyCrossing, ringsTrouble = sweep.anyCrossing, sweep.ringsTrouble
-local furtherRight, spanInRow = sweep.furtherRight, sweep.spanInRow
+local furtherRight, spanInRow = nodes.furtherRight, nodes.spanInRow
 
 local M = {}
 
@@ -32,7 +33,8 @@ local M = {}
 -- not at all of them. Every decision is an exact sign (orient: cross's filter, then crossExact);
 -- coordinates are only ever copied.
 -- The nodes live in arrays indexed by node number, set up by one call and dropped at its end;
--- polygon/sweep.lua reads the same arrays (bound at the start of the call, see sweep.bind).
+-- polygon/sweep.lua and polygon/nodes.lua read the same arrays (bound at the start of the call,
+-- see sweep.bind).
 
 local capacity          -- the number of nodes a call can make, at most: the arrays' size
 
@@ -181,7 +183,7 @@ local function indexRow(y)
 end
 
 -- The cells (numbers, from 1) edge k passes in row r, first and last: the columns of its span
--- in x over the row's band of y, band and span widened by INDEX_MARGIN cells (sweep.spanInRow);
+-- in x over the row's band of y, band and span widened by INDEX_MARGIN cells (nodes.spanInRow);
 -- the columns of its box when it lies in one row (oneRow), or when the cells are too fine for
 -- the margin.
 local function indexSpan(k, r, oneRow)
@@ -763,10 +765,11 @@ end
 -- LuaJIT: compiled only once it pays. Compiling the ear clipping and the sweep costs some 10 to
 -- 200 ms of traces (they compile to 700 to 1,500 of them), several times what the interpreter
 -- takes for one triangulation of a few thousand vertices (rain: 28 ms interpreted, 115 ms on a
--- first compiled call, 3 ms once compiled), and a level loads its outlines once. So this file's
--- and sweep.lua's functions start interpreted (jit.off), and are compiled (jit.on) once the
--- triangulations have spent INTERPRETED_BUDGET seconds of CPU time in the interpreter: the
--- ski-rental rule, never more than about twice the better of the two choices made in hindsight.
+-- first compiled call, 3 ms once compiled), and a level loads its outlines once. So the
+-- functions of this file, sweep.lua and nodes.lua start interpreted (jit.off), and are compiled
+-- (jit.on) once the triangulations have spent INTERPRETED_BUDGET seconds of CPU time in the
+-- interpreter: the ski-rental rule, never more than about twice the better of the two choices
+-- made in hindsight.
 -- The room for compiled code is raised at the first triangulation: on outlines with a thousand
 -- holes the traces need 1.2 MB, past LuaJIT 2.1's defaults (1,000 traces, 512 KB), and a full
 -- area makes LuaJIT throw away every trace, the game's too, and compile again, each call: 5 to
@@ -783,6 +786,7 @@ local chunk = JIT and debug.getinfo(1, "f").func
 if JIT then
   jit.off(chunk, true)
   jit.off(sweep.chunk, true)
+  jit.off(nodes.chunk, true)
 end
 
 local roomMade = not JIT
@@ -798,6 +802,7 @@ local function charge(t0)
   compiled = true
   jit.on(chunk, true)
   jit.on(sweep.chunk, true)
+  jit.on(nodes.chunk, true)
 end
 
 local build
@@ -845,7 +850,7 @@ function build(points, n, holes, checkOnly)
   turn = turn < 0 and -1 or 1
   capacity = n / 2
   for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
-  sweep.usePool(capacity)
+  nodes.usePool(capacity)
   nodeX, nodeY = scratch(23, capacity), scratch(24, capacity)
   inX, inY = scratch(25, capacity), scratch(26, capacity)
   origin, nextNode = scratch(27, capacity), scratch(28, capacity)

@@ -1,0 +1,169 @@
+-- polygon/nodes.lua: the node arrays of a triangulation and the exact tests on them, shared by
+-- polygon/triangulate.lua (ear clipping, bridges) and polygon/sweep.lua (the validity check):
+-- the scratch arrays kept between calls, the orientation of three nodes, two nodes at one
+-- place, the order of two edges along a level, an edge's span in a row of cells, and where a
+-- point lies against a ring. Every decision is one of kernel's exact signs.
+
+local _PACKAGE = (...):match("^(.+)%.[^%.]+")
+local kernel = require(_PACKAGE .. ".kernel")
+
+local abs, min, max = math.abs, math.min, math.max
+local CROSS_BOUND, crossExact, cross = kernel.CROSS_BOUND, kernel.crossExact, kernel.cross
+
+local M = {}
+
+-- The node arrays of the triangulation under way, bound by polygon/triangulate.lua at the start
+-- of each call (see M.bind) and dropped at its end: upvalues, as in the files that use them.
+local nodeX, nodeY      -- coordinates as doubles, for the predicates
+local nextNode
+local nodeRing          -- the ring a node was made for: 1 the outline, h + 1 hole h
+local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
+
+-- Binds the node arrays of a triangulation (nil to drop them).
+function M.bind(x, y, nextN, ring, sign)
+  nodeX, nodeY, nextNode, nodeRing, turn = x, y, nextN, ring, sign
+end
+
+-- An empty table with room for `size` array entries: LuaJIT's table.new, {} elsewhere. The
+-- node arrays are filled in order up to tens of thousands of entries; grown one entry at a
+-- time, each is copied at every doubling and leaves its old parts as garbage.
+local newArray = function() return {} end
+do
+  local found, tableNew = pcall(require, "table.new")
+  if found then newArray = function(size) return tableNew(size, 0) end end
+end
+-- Scratch arrays, kept from one triangulation to the next when it makes at most SCRATCH_NODES
+-- nodes: a call on a small outline spent about a tenth of its time making its thirty-odd
+-- arrays and collecting them (bench/NOTES.md, session 20). Slot s holds one array at a time,
+-- replaced by a larger one when a call needs more; a larger call makes its own, dropped at its
+-- end, so what stays is bounded (some 50 arrays of a few thousand entries). A reused array
+-- holds the last call's values: every user writes an entry before reading it, or clears it.
+local SCRATCH_NODES = 2048
+local pool, poolSize, pooling = {}, {}, false
+local function scratch(slot, size)
+  if not pooling then return newArray(size) end
+  local a = pool[slot]
+  if a and poolSize[slot] >= size then return a end
+  a = newArray(size)
+  pool[slot], poolSize[slot] = a, size
+  return a
+end
+-- Whether the call now starting, of at most `capacity` nodes, takes its arrays from the pool.
+function M.usePool(nodes) pooling = nodes <= SCRATCH_NODES end
+
+-- Nodes in order of x, then y (for table.sort).
+local function leftmostFirst(a, b)
+  return nodeX[a] < nodeX[b] or (nodeX[a] == nodeX[b] and nodeY[a] < nodeY[b])
+end
+
+-- A number with the sign of (b - a) x (c - a) for nodes, times turn: > 0 when c lies on the
+-- interior side of the directed edge a -> b of a ring wound like the outer one. Only its sign
+-- means anything.
+local function orient(a, b, c)
+  local ax, ay, bx, by, cx, cy = nodeX[a], nodeY[a], nodeX[b], nodeY[b], nodeX[c], nodeY[c]
+  -- cross's filter written out, with crossExact only when it cannot vouch for the sign: the call
+  -- with eight arguments made LuaJIT abort its side traces over and over ("register coalescing
+  -- too complex"), as did branches taken half the time. The determinant is taken about c,
+  -- (a - c) x (b - c), the same number as (b - a) x (c - a): with c at a or at b (edges meeting
+  -- at a vertex, a pinch point's copies: thousands of calls on map data) both products are 0,
+  -- so the filter vouches for the 0 and no branch leaves the common path
+  local l, r = (ax - cx) * (by - cy), (ay - cy) * (bx - cx)
+  local s = l - r
+  local e = CROSS_BOUND * abs(l + r)
+  -- one test of |s|, not one per sign: a branch taken for half the nodes (convex or reflex)
+  -- made side traces that aborted until LuaJIT flushed all its traces
+  if abs(s) < e or s ~= s then   -- also when l and r differ in sign and s is 0: exact, rare
+    s = crossExact(ax, ay, bx, by, ax, ay, cx, cy)
+  end
+  return s * turn
+end
+
+-- Whether nodes a and b lie at one place. One comparison, not two: with `and`, the second
+-- went either way on shared coordinates (tile maps, map data) and grew a side trace in every
+-- caller. (A difference of doubles is 0 only for equal ones: subnormals, not flushed to zero.)
+local function same(a, b)
+  return abs(nodeX[a] - nodeX[b]) + abs(nodeY[a] - nodeY[b]) == 0
+end
+
+-- The span in x of the segment from (ax, ay) to (bx, by), not level, over the band of y of row
+-- `row` of square cells of side `size` from y = top (the last of `rows` rows runs on past its
+-- band: the row functions put every place beyond it there), band and span widened by `margin`
+-- against rounding, clamped to the segment's box: its least and greatest x. (For sweep.lua's
+-- grid of edges and triangulate.lua's index of the bridges.)
+local function spanInRow(ax, ay, bx, by, top, size, rows, row, margin)
+  local lo = max(min(ay, by), top + row * size - margin)
+  local hi = max(ay, by)
+  if row < rows - 1 then hi = min(hi, top + (row + 1) * size + margin) end
+  local slope = (bx - ax) / (by - ay)
+  local xa, xb = ax + (lo - ay) * slope, ax + (hi - ay) * slope
+  return max(min(ax, bx), min(xa, xb) - margin), min(max(ax, bx), max(xa, xb) + margin)
+end
+
+-- Which of two edges crossing one level (each given by its lower end and its upper end, by y;
+-- for nearestLeft the level just above y = vy, an end at vy counting as lower) meets it further
+-- right: > 0 when e does, < 0 when f does, 0 when they run together there. They do not cross
+-- properly, so the end of one at the higher of their lower ends, or else at the lower of their
+-- upper ends, tested against the other tells. The plain sign of (u - l) x (p - l) is < 0 for p
+-- right of an edge l -> u that goes up the y axis. (For sweep.lua's placing of the holes and
+-- triangulate.lua's bridges.)
+local function furtherRight(el, eu, fl, fu)
+  local s
+  if nodeY[el] >= nodeY[fl] then s = -orient(fl, fu, el) else s = orient(el, eu, fl) end
+  if s == 0 then
+    if nodeY[eu] <= nodeY[fu] then s = -orient(fl, fu, eu) else s = orient(el, eu, fu) end
+  end
+  return s * turn   -- orient's sign times turn: the plain sign
+end
+
+-- -1, 0 or 1: where (x, y) lies against the ring at node s (outside, on it, strictly inside),
+-- by the crossing rule with the exact side test and an exact test for the boundary.
+local function ringSide(s, x, y)
+  local inside = false
+  local k = s
+  repeat
+    local q = nextNode[k]
+    local x1, y1, x2, y2 = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+    local c = cross(x1, y1, x2, y2, x1, y1, x, y)
+    if c == 0 and min(x1, x2) <= x and x <= max(x1, x2) and min(y1, y2) <= y and y <= max(y1, y2) then
+      return 0
+    end
+    if (y1 > y) ~= (y2 > y) and (y2 > y1) == (c > 0) then inside = not inside end
+    k = q
+  until k == s
+  return inside and 1 or -1
+end
+
+-- Where hole h lies, by the crossing rule from its vertices (the rings do not cross: the first
+-- vertex off another ring decides), when the sweep could not tell: a message when it is outside
+-- the polygon or inside another hole, else nil.
+local function holeMisplaced(starts, h)
+  local k, side = starts[h]
+  repeat
+    side = ringSide(starts[1], nodeX[k], nodeY[k])
+    k = nextNode[k]
+  until side ~= 0 or k == starts[h]
+  local name = nodeRing[starts[h]] - 1
+  if side < 0 then return ("holes[%d] is outside the polygon"):format(name) end
+  for g = 2, #starts do
+    if g ~= h then
+      k = starts[h]
+      repeat
+        side = ringSide(starts[g], nodeX[k], nodeY[k])
+        k = nextNode[k]
+      until side ~= 0 or k == starts[h]
+      if side > 0 then
+        return ("holes[%d] is inside holes[%d]"):format(name, nodeRing[starts[g]] - 1)
+      end
+    end
+  end
+  return nil
+end
+
+-- This file's main chunk: triangulate.lua turns LuaJIT's compiler off and on for every function
+-- in it (see there).
+M.chunk = debug.getinfo(1, "f").func
+
+M.newArray, M.scratch, M.leftmostFirst, M.orient, M.same = newArray, scratch, leftmostFirst, orient, same
+M.spanInRow, M.furtherRight, M.ringSide, M.holeMisplaced = spanInRow, furtherRight, ringSide, holeMisplaced
+
+return M
