@@ -100,12 +100,12 @@ local function spanInRow(ax, ay, bx, by, top, size, rows, row, margin)
 end
 
 -- Which of two edges crossing one level (each given by its lower end and its upper end, by y;
--- for nearestLeft the level just above y = vy, an end at vy counting as lower) meets it further
--- right: > 0 when e does, < 0 when f does, 0 when they run together there. They do not cross
--- properly, so the end of one at the higher of their lower ends, or else at the lower of their
--- upper ends, tested against the other tells. The plain sign of (u - l) x (p - l) is < 0 for p
--- right of an edge l -> u that goes up the y axis. (For sweep.lua's placing of the holes and
--- triangulate.lua's bridges.)
+-- for sweep.lua's nearestLeft, the level just above y = vy, an end at vy counting as lower)
+-- meets it further right: > 0 when e does, < 0 when f does, 0 when they run together there.
+-- They do not cross properly, so the end of one at the higher of their lower ends, or else at
+-- the lower of their upper ends, tested against the other tells. The plain sign of
+-- (u - l) x (p - l) is < 0 for p right of an edge l -> u that goes up the y axis. (For the
+-- placing of the holes and triangulate.lua's bridges.)
 local function furtherRight(el, eu, fl, fu)
   local s
   if nodeY[el] >= nodeY[fl] then s = -orient(fl, fu, el) else s = orient(el, eu, fl) end
@@ -134,8 +134,8 @@ local function ringSide(s, x, y)
 end
 
 -- Where hole h lies, by the crossing rule from its vertices (the rings do not cross: the first
--- vertex off another ring decides), when the sweep could not tell: a message when it is outside
--- the polygon or inside another hole, else nil.
+-- vertex off another ring decides), when the sweep or the grid's rays could not tell: a message
+-- when it is outside the polygon or inside another hole, else nil.
 local function holeMisplaced(starts, h)
   local k, side = starts[h]
   repeat
