@@ -171,16 +171,17 @@ local INDEX_FINE = 2 ^ -30  -- cells narrower than this times the largest coordi
 local indexHead, indexNext, indexNode, indexEntries
 local indexLeft, indexTop, indexScale, indexSize, indexCols, indexRows, indexFine
 
--- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so an
--- edge's box bounds the cells of every point of it.
-local function indexCol(x)
-  local c = floor((x - indexLeft) * indexScale)
-  return c < indexCols and c or indexCols - 1
+-- The cell, from 0, of coordinate v along an axis of `count` cells from `from`, `scale` cells a
+-- unit: monotone in v (the scaling rounds monotonically), so a box's corners bound the cells of
+-- every point inside it. The last cell holds every place past it. (For this index and the ear
+-- test's grid.)
+local function cellAlong(v, from, scale, count)
+  local c = floor((v - from) * scale)
+  return c < count and c or count - 1
 end
-local function indexRow(y)
-  local r = floor((y - indexTop) * indexScale)
-  return r < indexRows and r or indexRows - 1
-end
+
+local function indexCol(x) return cellAlong(x, indexLeft, indexScale, indexCols) end
+local function indexRow(y) return cellAlong(y, indexTop, indexScale, indexRows) end
 
 -- The cells (numbers, from 1) edge k passes in row r, first and last: the columns of its span
 -- in x over the row's band of y, band and span widened by INDEX_MARGIN cells (nodes.spanInRow);
@@ -374,16 +375,9 @@ local listStale         -- a node dropped from the grid may have turned reflex
 local spanMargin        -- twice SPAN_MARGIN cells (nearTriangle compares doubled widths), or
                         -- huge when the grid is not fine
 
--- The column or row of a coordinate: monotone in it (the scaling rounds monotonically), so a
--- box's corners bound the cells of every point inside it.
-local function colOf(x)
-  local col = floor((x - gridLeft) * gridScale)
-  return col < gridCols and col or gridCols - 1
-end
-local function rowOf(y)
-  local row = floor((y - gridTop) * gridScale)
-  return row < gridRows and row or gridRows - 1
-end
+-- The column or row of a coordinate (see cellAlong).
+local function colOf(x) return cellAlong(x, gridLeft, gridScale, gridCols) end
+local function rowOf(y) return cellAlong(y, gridTop, gridScale, gridRows) end
 
 -- Files the nodes of the ring at s that may block an ear in their cells (the strictly convex
 -- ones are left out from the start, see keepListed), and marks the nodes sharing a place. The
