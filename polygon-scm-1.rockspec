@@ -32,6 +32,7 @@ build = {
     ["polygon.object"] = "polygon/object.lua",
     ["polygon.convex"] = "polygon/convex.lua",
     ["polygon.nodes"] = "polygon/nodes.lua",
+    ["polygon.order"] = "polygon/order.lua",
     ["polygon.sweep"] = "polygon/sweep.lua",
     ["polygon.rects"] = "polygon/rects.lua",
     ["polygon.triangulate"] = "polygon/triangulate.lua",

@@ -7,6 +7,7 @@
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local nodes = require(_PACKAGE .. ".nodes")
+local lineOrder = require(_PACKAGE .. ".order")
 
 local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 local floor, sort = math.floor, table.sort
@@ -77,8 +78,9 @@ end
 -- Edge k runs from node k to nextNode[k]; sweepLeft[k] and sweepRight[k] are its ends in (x, y)
 -- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
 -- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces);
--- the order along the line is a sorted array, searched by halving. (A skip list, which spares
--- the array's shifts, made LuaJIT grow traces until its machine-code area ran out.)
+-- the order along the line is polygon/order.lua's: blocks of a sorted array, searched by
+-- halving, each edge linked to its neighbours. (A skip list made LuaJIT grow traces until its
+-- machine-code area ran out; one sorted array moved half the order for every edge.)
 local sweepLeft, sweepRight
 local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
 local placeOrder, placeCount   -- the nodes in (x, y) order (see sortPlaces), and their count
@@ -93,6 +95,7 @@ local function edgeOrder(s, t)
   if side == 0 then side = orient(a, b, sweepRight[s]) end
   return side * turn * flip
 end
+lineOrder.compare(edgeOrder)
 
 local BUCKET_RUN = 24   -- a bucket holding more nodes than this is sorted by table.sort
                         -- (many vertices on one vertical line), fewer by insertion
@@ -239,18 +242,18 @@ local function sweepEvents(starts)
   return events, e
 end
 
-local status, lastPlace   -- the edges in order along the line; where the last event's edge was
-local slot              -- on LuaJIT, slot[k]: where edge k is in status
+local upEdge, downEdge   -- the edges along the line (polygon/order.lua): each one's neighbours
+local lastUp, lastDown   -- the edges above and below the last event: the edge that came in and
+                         -- the one below it, or the two that an edge leaving left next to each other
 local touchedAt         -- touchedAt[r]: the edges whose inside holds the place of rank r, or nil
 
 -- Notes the edges next to place `from` of the order, going `step` (-1 or 1), that hold node p:
 -- a run of edges through p's place, each ending there or holding it inside (noted in
 -- touchedAt, for placesCross). An edge holding p inside lies next to an edge ending at p, or
 -- next to another edge through p, when an edge ending at p comes in or leaves.
-local function noteTouches(p, from, step)
+local function noteTouches(p, from, links)
   local px, py = nodeX[p], nodeY[p]
-  local j = from + step
-  local f = status[j]
+  local f = links[from]
   while f do
     local q = nextNode[f]
     if orient(f, q, p) ~= 0 or px < min(nodeX[f], nodeX[q]) or px > max(nodeX[f], nodeX[q])
@@ -265,8 +268,7 @@ local function noteTouches(p, from, step)
       for g = 1, #list do known = known or list[g] == f end
       if not known then list[#list + 1] = f end
     end
-    j = j + step
-    f = status[j]
+    f = links[f]
   end
 end
 
@@ -277,18 +279,17 @@ end
 -- for it (as for an edge taking another's place); an edge leaving is found by identity. Spares
 -- most searches of a noisy circle, whose order holds hundreds of edges.
 local function besideLast(s, coming)
-  local t = status[lastPlace]
-  if coming then
-    if not t or rank[sweepLeft[t]] ~= rank[sweepLeft[s]] then return 0 end
-    if edgeOrder(s, t) > 0 then
-      local above = status[lastPlace + 1]
-      return (not above or edgeOrder(s, above) <= 0) and lastPlace + 1 or 0
-    end
-    local below = status[lastPlace - 1]
-    return (not below or edgeOrder(s, below) > 0) and lastPlace or 0
+  local t = lastUp
+  if not coming then return s == t or s == lastDown end
+  if not t or rank[sweepLeft[t]] ~= rank[sweepLeft[s]] then return nil end
+  if edgeOrder(s, t) > 0 then
+    local above = upEdge[t]
+    if not above or edgeOrder(s, above) <= 0 then return lineOrder.beside(t, true) end
+    return nil
   end
-  if t == s then return lastPlace end
-  return status[lastPlace - 1] == s and lastPlace - 1 or 0
+  local below = downEdge[t]
+  if not below or edgeOrder(s, below) > 0 then return lineOrder.beside(t, false) end
+  return nil
 end
 
 -- Where each ring lies, read off the order at its leftmost place: the edge just below the
@@ -328,10 +329,10 @@ end
 
 -- Notes where edge s, now at place `at` of the order, lies: above the edge below it, and below
 -- the edge above it (which may start at its ring's leftmost place, where s comes in too).
-local function noteRings(s, at)
-  local above = status[at + 1]
-  noteBelow(s, status[at - 1], above)
-  if above and rank[sweepLeft[above]] == rank[sweepLeft[s]] then noteBelow(above, s, status[at + 2]) end
+local function noteRings(s)
+  local above = upEdge[s]
+  noteBelow(s, downEdge[s], above)
+  if above and rank[sweepLeft[above]] == rank[sweepLeft[s]] then noteBelow(above, s, upEdge[above]) end
 end
 
 -- true when two edges of the rings at `starts` properly cross, false when none do, nil when the
@@ -343,98 +344,50 @@ local function sweep(starts)
     local k = placeOrder[i]
     leftRank[nodeRing[k]] = rank[k]
   end
-  -- the order is status[bottom + 1 .. bottom + m]. On LuaJIT an edge coming in or leaving
-  -- shifts the shorter side, so bottom moves, by one per event at most: starting it half the
-  -- events up keeps it in the array. (A vertical line meets some 650 edges of a noisy circle
-  -- of 10,000 vertices: the shorter side moves 200 entries a vertex where one side moved 440.)
-  local m, bottom = 0, JIT and eventCount or 0
-  status = scratch(9, 2 * eventCount + 2)
-  slot = JIT and scratch(10, capacity)
-  for j = 1, 2 * eventCount + 2 do status[j] = nil end   -- a reused array: empty past the order
-  lastPlace = bottom + 1
+  upEdge, downEdge = lineOrder.reset(eventCount, capacity)
+  lastUp, lastDown = nil, nil
   local i = 1
   while i <= eventCount do
     local e = events[i]
     local s = e > 0 and e or -e
-    local lo = besideLast(s, e > 0)
-    if lo == 0 and JIT and e < 0 then
-      -- an edge leaving: its place, kept as the order shifts, when the edges beside it lie
-      -- below and above it (else the search, which may find the order inconsistent). The
-      -- search took some 6 halvings for most edges leaving a noisy circle
-      lo = slot[s]
-      local below, above = status[lo - 1], status[lo + 1]
-      if (below and edgeOrder(s, below) < 0) or (above and edgeOrder(s, above) > 0) then lo = 0 end
-    end
-    if lo == 0 then   -- the first place whose edge does not lie below s
-      local hi
-      lo, hi = bottom + 1, bottom + m + 1
-      while lo < hi do
-        local mid = (lo + hi - (lo + hi) % 2) / 2
-        if edgeOrder(s, status[mid]) > 0 then lo = mid + 1 else hi = mid end
-      end
-    end
     if e > 0 then
-      if not JIT then   -- on PUC Lua table.insert's C loop is faster than a loop in Lua
-        table.insert(status, lo, s)
-      elseif lo - bottom - 1 < bottom + m + 1 - lo then   -- fewer entries below: shift those down
-        for j = bottom + 1, lo - 1 do
-          local f = status[j]
-          status[j - 1], slot[f] = f, j - 1
-        end
-        bottom, lo = bottom - 1, lo - 1
-        status[lo], slot[s] = s, lo
-      else
-        for j = bottom + m, lo, -1 do
-          local f = status[j]
-          status[j + 1], slot[f] = f, j + 1
-        end
-        status[lo], slot[s] = s, lo
-      end
-      m = m + 1
-      lastPlace = lo
-      noteTouches(sweepLeft[s], lo, -1)
-      noteTouches(sweepLeft[s], lo, 1)
-      noteRings(s, lo)
-      local below, above = status[lo - 1], status[lo + 1]
+      local b, at = besideLast(s, true)
+      if not b then b, at = lineOrder.find(s) end
+      lineOrder.insert(b, at, s)
+      local below, above = downEdge[s], upEdge[s]
+      lastUp, lastDown = s, below
+      noteTouches(sweepLeft[s], s, downEdge)
+      noteTouches(sweepLeft[s], s, upEdge)
+      noteRings(s)
       if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
       if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
     else
-      while lo <= bottom + m and status[lo] ~= s and edgeOrder(s, status[lo]) == 0 do lo = lo + 1 end
-      if status[lo] ~= s then return nil end
-      lastPlace = lo
-      noteTouches(sweepRight[s], lo, -1)
-      noteTouches(sweepRight[s], lo, 1)
-      local below, above = status[lo - 1], status[lo + 1]
+      local below, above = downEdge[s], upEdge[s]
+      -- an edge leaving, found by identity: right beside the last event, or when the edges
+      -- beside it lie below and above it (else the search, which may find the order
+      -- inconsistent)
+      if not besideLast(s, false)
+        and ((below and edgeOrder(s, below) < 0) or (above and edgeOrder(s, above) > 0)) then
+        local f = lineOrder.edgeAt(lineOrder.find(s))   -- the first edge not below s
+        while f and f ~= s and edgeOrder(s, f) == 0 do f = upEdge[f] end
+        if f ~= s then return nil end
+      end
+      noteTouches(sweepRight[s], s, downEdge)
+      noteTouches(sweepRight[s], s, upEdge)
       -- an edge coming in where s leaves (a vertex along the outline) most often takes its
-      -- place: two tests vouch for it, and the list is not shifted twice
+      -- place: two tests vouch for it, and the order is not moved twice
       local t = events[i + 1]
       if t and t > 0 and rank[sweepLeft[t]] == rank[sweepRight[s]]
         and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
-        status[lo] = t
-        if JIT then slot[t] = lo end
-        noteRings(t, lo)
+        lineOrder.replace(s, t)
+        lastUp, lastDown = t, below
+        noteRings(t)
         i = i + 1
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
         if above and properlyCross(t, nextNode[t], above, nextNode[above]) then return true end
       else
-        if not JIT then   -- as for table.insert above (on LuaJIT the loop is faster)
-          table.remove(status, lo)
-        elseif lo - bottom - 1 < bottom + m - lo then   -- the entries below s move up
-          for j = lo, bottom + 2, -1 do
-            local f = status[j - 1]
-            status[j], slot[f] = f, j
-          end
-          status[bottom + 1] = nil
-          bottom = bottom + 1
-          lastPlace = lo + 1   -- as when the entries above move down: the two ends are at
-        else                   -- lastPlace - 1 and lastPlace
-          for j = lo, bottom + m - 1 do
-            local f = status[j + 1]
-            status[j], slot[f] = f, j
-          end
-          status[bottom + m] = nil
-        end
-        m = m - 1
+        lineOrder.remove(s)
+        lastUp, lastDown = above, below
         if below and above and properlyCross(below, nextNode[below], above, nextNode[above]) then
           return true
         end
@@ -1043,7 +996,9 @@ local function sweepCrossing(starts)
     twin[placeOrder[last]] = placeOrder[first]
     i = last + 1
   end
-  sweepLeft, sweepRight, rank, status, placeOrder, touchedAt, slot = nil, nil, nil, nil, nil, nil, nil
+  sweepLeft, sweepRight, rank, upEdge, placeOrder, touchedAt, downEdge = nil, nil, nil, nil, nil, nil, nil
+  lastUp, lastDown = nil, nil
+  lineOrder.release()
   return crossing
 end
 

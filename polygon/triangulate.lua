@@ -8,6 +8,7 @@ local check = require(_PACKAGE .. ".check")
 local object = require(_PACKAGE .. ".object")
 local nodes = require(_PACKAGE .. ".nodes")
 local sweep = require(_PACKAGE .. ".sweep")
+local order = require(_PACKAGE .. ".order")
 local rects = require(_PACKAGE .. ".rects")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
@@ -781,6 +782,7 @@ if JIT then
   jit.off(chunk, true)
   jit.off(sweep.chunk, true)
   jit.off(nodes.chunk, true)
+  jit.off(order.chunk, true)
 end
 
 local roomMade = not JIT
@@ -797,6 +799,7 @@ local function charge(t0)
   jit.on(chunk, true)
   jit.on(sweep.chunk, true)
   jit.on(nodes.chunk, true)
+  jit.on(order.chunk, true)
 end
 
 local build
