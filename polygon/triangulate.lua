@@ -12,14 +12,15 @@ local order = require(_PACKAGE .. ".order")
 local rects = require(_PACKAGE .. ".rects")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
-local floor, sort = math.floor, table.sort
+local floor = math.floor
 local JIT = kernel.JIT
 local cross, areaSign = kernel.cross, kernel.areaSign
 local checkPoints = check.checkPoints
 local shapeBehind = check.shapeBehind
 local validate = object.validate
-local orient, same, leftmostFirst, newArray = nodes.orient, nodes.same, nodes.leftmostFirst, nodes.newArray
-local scratch = nodes.scratch   -- arrays kept between calls (slots 1 to 10 and 34 to 45 are sweep.lua's)
+local orient, same, newArray = nodes.orient, nodes.same, nodes.newArray
+local scratch = nodes.scratch   -- arrays kept between calls (slots 1 to 10, 34 to 45 and 50 to
+                                -- 57 are sweep.lua's and order.lua's)
 local anyCrossing, ringsTrouble = sweep.anyCrossing, sweep.ringsTrouble
 local furtherRight, spanInRow = nodes.furtherRight, nodes.spanInRow
 
@@ -884,18 +885,9 @@ function build(points, n, holes, checkOnly)
   if trouble then return nil, trouble end
   if checkOnly then return true end
   -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
-  local lefts = {}
-  for h = 2, #starts do
-    local best, k = starts[h], starts[h]
-    repeat
-      if nodeX[k] < nodeX[best] or (nodeX[k] == nodeX[best] and nodeY[k] < nodeY[best]) then best = k end
-      k = nextNode[k]
-    until k == starts[h]
-    lefts[#lefts + 1] = best
-  end
-  sort(lefts, leftmostFirst)
-  if #lefts > 0 then buildIndex(starts) end
-  for i = 1, #lefts do
+  local lefts, leftCount = sweep.holeLefts()
+  if leftCount > 0 then buildIndex(starts) end
+  for i = 1, leftCount do
     local m = bridgeTarget(lefts[i])
     if not m then return nil, "a hole is outside the polygon" end
     bridge(m, lefts[i])
