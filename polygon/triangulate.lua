@@ -678,8 +678,9 @@ end
 
 -- Clips ears from the ring at s until it is gone, appending each triangle's three nodes to
 -- tris. No node in line with its neighbours is kept (a straight run, a repeated vertex, the tip
--- of a spike): each is dropped without a triangle, at the start and whenever a clip or a drop
--- brings one about, so the ring never holds a zero-width spike for an ear to reach across.
+-- of a spike): each is dropped without a triangle, at the start (dropInLine) and whenever a clip
+-- or a drop brings one about, so the ring never holds a zero-width spike for an ear to reach
+-- across.
 -- A lap that finds no ear is retried with strict off; returns false when that one finds none
 -- either (the ring is not weakly simple).
 local ringCount, pending, pendingTop   -- clipEars' state, for settle
@@ -710,15 +711,22 @@ local function settle()
   pendingTop = 0
 end
 
-local function clipEars(s, tris)
-  strict = true
+-- Drops the nodes of the ring at s that lie in line with their neighbours, before the grid is
+-- built (a tile map's outline has a third of its nodes along straight runs, which the grid
+-- would list only for settle to drop them again), and returns a node left.
+local function dropInLine(s)
   ringCount, pending = 0, scratch(49, capacity + capacity)   -- settle may push two a drop
   local k = s
   repeat ringCount = ringCount + 1; pending[ringCount] = k; k = nextNode[k] until k == s
   pendingTop = ringCount
   settle()
+  while gone[s] do s = nextNode[s] end
+  return s
+end
+
+local function clipEars(s, tris)
+  strict = true
   local ear = s
-  while gone[ear] do ear = nextNode[ear] end
   local stop = ear
   while ringCount > 2 do
     local a, c = prevNode[ear], nextNode[ear]
@@ -892,10 +900,11 @@ function build(points, n, holes, checkOnly)
     if not m then return nil, "a hole is outside the polygon" end
     bridge(m, lefts[i])
   end
-  buildGrid(outer)
+  local first = dropInLine(outer)
+  if ringCount > 2 then buildGrid(first) end   -- (a ring with area keeps three nodes at least)
   local tris = newArray(3 * nodeCount)
   triCount = 0
-  if not clipEars(outer, tris) then return nil, "edges overlap or cross" end
+  if not clipEars(first, tris) then return nil, "edges overlap or cross" end
   return tris
 end
 
