@@ -346,6 +346,10 @@ local function sweep(starts)
   end
   upEdge, downEdge = lineOrder.reset(eventCount, capacity)
   lastUp, lastDown = nil, nil
+  -- the place of the last event, its edge, and whether that edge left: an edge at the same
+  -- place next to it has the same edges through the place beside it, noted already (most
+  -- vertices of a spiky outline start two edges or end two)
+  local walkRank, walkEdge, walkGone = 0, nil, false
   local i = 1
   while i <= eventCount do
     local e = events[i]
@@ -356,8 +360,12 @@ local function sweep(starts)
       lineOrder.insert(b, at, s)
       local below, above = downEdge[s], upEdge[s]
       lastUp, lastDown = s, below
-      noteTouches(sweepLeft[s], s, downEdge)
-      noteTouches(sweepLeft[s], s, upEdge)
+      local p = sweepLeft[s]
+      if rank[p] ~= walkRank or walkGone or (below ~= walkEdge and above ~= walkEdge) then
+        noteTouches(p, s, downEdge)
+        noteTouches(p, s, upEdge)
+      end
+      walkRank, walkEdge, walkGone = rank[p], s, false
       noteRings(s)
       if below and properlyCross(s, nextNode[s], below, nextNode[below]) then return true end
       if above and properlyCross(s, nextNode[s], above, nextNode[above]) then return true end
@@ -372,8 +380,12 @@ local function sweep(starts)
         while f and f ~= s and edgeOrder(s, f) == 0 do f = upEdge[f] end
         if f ~= s then return nil end
       end
-      noteTouches(sweepRight[s], s, downEdge)
-      noteTouches(sweepRight[s], s, upEdge)
+      local p = sweepRight[s]
+      if rank[p] ~= walkRank or not walkGone or (s ~= lastUp and s ~= lastDown) then
+        noteTouches(p, s, downEdge)
+        noteTouches(p, s, upEdge)
+      end
+      walkRank, walkEdge, walkGone = rank[p], s, true
       -- an edge coming in where s leaves (a vertex along the outline) most often takes its
       -- place: two tests vouch for it, and the order is not moved twice
       local t = events[i + 1]
@@ -381,6 +393,7 @@ local function sweep(starts)
         and (not below or edgeOrder(t, below) > 0) and (not above or edgeOrder(t, above) <= 0) then
         lineOrder.replace(s, t)
         lastUp, lastDown = t, below
+        walkEdge, walkGone = t, false
         noteRings(t)
         i = i + 1
         if below and properlyCross(t, nextNode[t], below, nextNode[below]) then return true end
