@@ -163,7 +163,7 @@ for _, case in ipairs(CASES) do
     ef = tonumber(run(("EARCUT=%s node bench/earcut-holes.js %s %s"):format(earcutFile, dir, label))[3])
   end
   local jit, puc = cells.luajit or {}, cells["lua5.4"] or {}
-  local function ms(v) return v and ("%.3f"):format(v) or "-" end
+  local function ms(v) return v and ("%.4g"):format(v) or "-" end   -- 4 digits: tiles-8 takes 0.004
   local function ratio(a, b) return a and b and b > 0 and ("%.1fx"):format(a / b) or "-" end
   print(("%-19s %6d %5d | %9s %9s %6s | %9s %9s %6s | %9s %9s"):format(label, n, #holes,
     ms(jit[1]), ms(ew), ratio(jit[1], ew), ms(jit[2]), ms(ef), ratio(jit[2], ef), ms(puc[1]), ms(puc[2])))

@@ -48,7 +48,7 @@ function M.compare(f)
   return old
 end
 
--- Starts an empty order for at most `edges` edges among `capacity` nodes. Returns the arrays
+-- Starts an empty order for `edges` edges among `capacity` nodes. Returns the arrays
 -- of each edge's neighbours above and below, which the sweep reads (set while it is in the
 -- order).
 function M.reset(edges, capacity)

@@ -344,7 +344,7 @@ local function sweep(starts)
     local k = placeOrder[i]
     leftRank[nodeRing[k]] = rank[k]
   end
-  upEdge, downEdge = lineOrder.reset(eventCount, capacity)
+  upEdge, downEdge = lineOrder.reset(eventCount / 2, capacity)   -- an edge comes in and leaves
   lastUp, lastDown = nil, nil
   -- the place of the last event, its edge, and whether that edge left: an edge at the same
   -- place next to it has the same edges through the place beside it, noted already (most
@@ -1009,7 +1009,9 @@ local function sweepCrossing(starts)
   -- bridges to find a pinch point's nodes without walking the ring; and each hole's first node
   -- in (x, y) order, the one the bridges join (a sort of the holes by it took 5% of a tile
   -- map's call)
-  local seen = scratch(56, capacity)
+  local rings = 0
+  for r = 1, #starts do rings = max(rings, nodeRing[starts[r]]) end
+  local seen = scratch(56, rings)
   for r = 1, #starts do seen[nodeRing[starts[r]]] = false end
   leftCount = 0
   holeLefts = scratch(57, #starts)
