@@ -24,9 +24,6 @@ local CASES = JIT and 300 or 600
 local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
   ["Lua 5.4"] = 4 })[_VERSION] or 5
 
--- The words a refusal of each verdict must hold.
-local NAMED = { cross = "cross", outside = "outside", inside = "inside" }
-
 -- polygonTriangulate by one way: the triangles or nil, the message, and the way taken.
 local function byWay(grid, points, list)
   sweep.grid = grid
@@ -44,14 +41,11 @@ local function checkBoth(points, list, where)
   assert(sweepWay == nil or sweepWay == "sweep", where)
   assert((gridTris == nil) == (sweepTris == nil), ("%s: grid %s, sweep %s"):format(where,
     tostring(gridMessage or "accepts"), tostring(sweepMessage or "accepts")))
-  if verdict == "valid" then
-    assert(gridTris, where .. " refused: " .. tostring(gridMessage))
-    local ok, why = oracle.checkCover(points, list, gridTris)
-    assert(ok, where .. ": " .. tostring(why))
-  elseif NAMED[verdict] then
-    assert(not gridTris, where .. " accepted")
-    assert(gridMessage:find(NAMED[verdict]), where .. ": " .. gridMessage)
-    assert(sweepMessage:find(NAMED[verdict]), where .. ": " .. sweepMessage)
+  local ok, why = oracle.agrees(points, list, verdict, gridTris, gridMessage)
+  assert(ok, where .. ": " .. tostring(why))
+  if not gridTris then   -- the sweep's refusal names the trouble too
+    ok, why = oracle.agrees(points, list, verdict, sweepTris, sweepMessage)
+    assert(ok, where .. ", the sweep: " .. tostring(why))
   end
   return way, verdict
 end

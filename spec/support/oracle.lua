@@ -1165,4 +1165,26 @@ function oracle.regionCrossing(points, holes)
   return undecided and "unknown" or "valid"
 end
 
+-- The words a refusal of each of regionCrossing's verdicts must hold.
+oracle.NAMED = { cross = "cross", outside = "outside", inside = "inside" }
+
+--- Whether a triangulation's answer agrees with regionCrossing's verdict on points and holes:
+-- pieces covering the region exactly when valid (checkCover), a refusal whose message holds the
+-- verdict's word when not, anything when undecided.
+-- @param verdict regionCrossing's verdict
+-- @param pieces the pieces, or nil for a refusal
+-- @param message the refusal's message
+-- @return true, or false and what failed
+function oracle.agrees(points, holes, verdict, pieces, message)
+  local word = oracle.NAMED[verdict]
+  if verdict == "valid" then
+    if not pieces then return false, "refused: " .. tostring(message) end
+    return oracle.checkCover(points, holes, pieces)
+  elseif word then
+    if pieces then return false, "accepted" end
+    if not tostring(message):find(word) then return false, "refused with " .. tostring(message) end
+  end
+  return true
+end
+
 return oracle
