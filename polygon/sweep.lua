@@ -247,9 +247,9 @@ local lastUp, lastDown   -- the edges above and below the last event: the edge t
                          -- the one below it, or the two that an edge leaving left next to each other
 local touchedAt         -- touchedAt[r]: the edges whose inside holds the place of rank r, or nil
 
--- Notes the edges next to place `from` of the order, going `step` (-1 or 1), that hold node p:
--- a run of edges through p's place, each ending there or holding it inside (noted in
--- touchedAt, for placesCross). An edge holding p inside lies next to an edge ending at p, or
+-- Notes the edges next to edge `from` in the order, going along `links` (upEdge or downEdge),
+-- that hold node p: a run of edges through p's place, each ending there or holding it inside
+-- (noted in touchedAt, for placesCross). An edge holding p inside lies next to an edge ending at p, or
 -- next to another edge through p, when an edge ending at p comes in or leaves.
 local function noteTouches(p, from, links)
   local px, py = nodeX[p], nodeY[p]
@@ -272,7 +272,8 @@ local function noteTouches(p, from, links)
   end
 end
 
--- Where edge s goes or is, when next to the last event's edge, or 0: most vertices of an
+-- For an edge s coming in next to the last event's edge, its block and index in the order (else
+-- nil); for an edge s leaving, whether it lies next to the last event: most vertices of an
 -- outline that are not passed by an edge coming in where another leaves (see sweep) start two
 -- edges or end two, one event after the other, next to each other along the line. An edge
 -- coming in goes beside the edge that came in last from the same vertex when two tests vouch
@@ -374,14 +375,14 @@ local function sweep(starts)
       -- an edge leaving, found by identity: right beside the last event, or when the edges
       -- beside it lie below and above it (else the search, which may find the order
       -- inconsistent)
-      if not besideLast(s, false)
-        and ((below and edgeOrder(s, below) < 0) or (above and edgeOrder(s, above) > 0)) then
+      local beside = besideLast(s, false)
+      if not beside and ((below and edgeOrder(s, below) < 0) or (above and edgeOrder(s, above) > 0)) then
         local f = lineOrder.edgeAt(lineOrder.find(s))   -- the first edge not below s
         while f and f ~= s and edgeOrder(s, f) == 0 do f = upEdge[f] end
         if f ~= s then return nil end
       end
       local p = sweepRight[s]
-      if rank[p] ~= walkRank or not walkGone or (s ~= lastUp and s ~= lastDown) then
+      if rank[p] ~= walkRank or not walkGone or not beside then
         noteTouches(p, s, downEdge)
         noteTouches(p, s, upEdge)
       end
