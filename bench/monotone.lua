@@ -5,10 +5,11 @@
 --
 -- An outline in general position (no vertical edge, no three vertices in line: the noisy
 -- circles' random radii) is cut into x-monotone pieces by diagonals, sweeping in x, each
--- vertex's edge below it known, then each piece is triangulated with a stack. The edge below a vertex is what the check's
--- sweep (polygon/sweep.lua) finds as it goes; here it is found by brute force, untimed, so the
--- time is the work a triangulation in the check's own sweep would add to it. Float orientation
--- only (a degenerate triple raises): fit for the measurement, not for the library.
+-- vertex's edge below it known, then each piece is triangulated with a stack. The edge below a
+-- vertex is what the check's sweep (polygon/sweep.lua) finds as it goes; here it is found by
+-- brute force, untimed, so the time is the work a triangulation in the check's own sweep would
+-- add to it. Float orientation only (a degenerate triple raises): fit for the measurement, not
+-- for the library.
 package.path = "./?.lua;./spec/support/?.lua;" .. package.path
 local prng = require "prng"
 local shapes = require "shapes"
