@@ -31,6 +31,7 @@ build = {
     ["polygon.circle"] = "polygon/circle.lua",
     ["polygon.object"] = "polygon/object.lua",
     ["polygon.convex"] = "polygon/convex.lua",
+    ["polygon.monotone"] = "polygon/monotone.lua",
     ["polygon.nodes"] = "polygon/nodes.lua",
     ["polygon.order"] = "polygon/order.lua",
     ["polygon.sweep"] = "polygon/sweep.lua",

@@ -26,6 +26,7 @@ local nodeRing          -- the ring a node was made for: 1 the outline, h + 1 ho
 local capacity          -- the number of nodes the call can make, at most
 local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
 local twin              -- filled by the sweep: twin[k], the next node at node k's place
+local plain, plainOrder, plainCount, plainRank, plainBelow   -- see M.plainSweep
 
 -- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
 local sortKey
@@ -38,6 +39,7 @@ M.chunk = debug.getinfo(1, "f").func
 function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn = x, y, nextN, prevN, ring, cap, sign
   twin = twins
+  plain, plainOrder, plainCount, plainRank, plainBelow = false, nil, nil, nil, nil
   nodes.bind(x, y, nextN, ring, sign)
 end
 
@@ -242,6 +244,8 @@ local function sweepEvents(starts)
   return events, e
 end
 
+local belowOf           -- belowOf[v]: the edge right below node v as the sweep passed it (not
+                        -- one of v's own), or 0: for polygon/monotone.lua
 local upEdge, downEdge   -- the edges along the line (polygon/order.lua): each one's neighbours
 local lastUp, lastDown   -- the edges above and below the last event: the edge that came in and
                          -- the one below it, or the two that an edge leaving left next to each other
@@ -347,6 +351,8 @@ local function sweep(starts)
   end
   upEdge, downEdge = lineOrder.reset(eventCount / 2, capacity)   -- an edge comes in and leaves
   lastUp, lastDown = nil, nil
+  belowOf = scratch(71, capacity)
+  for i = 1, placeCount do belowOf[placeOrder[i]] = 0 end
   -- the place of the last event, its edge, and whether that edge left: an edge at the same
   -- place next to it has the same edges through the place beside it, noted already (most
   -- vertices of a spiky outline start two edges or end two)
@@ -362,6 +368,7 @@ local function sweep(starts)
       local below, above = downEdge[s], upEdge[s]
       lastUp, lastDown = s, below
       local p = sweepLeft[s]
+      if below and sweepLeft[below] ~= p then belowOf[p] = below end
       if rank[p] ~= walkRank or walkGone or (below ~= walkEdge and above ~= walkEdge) then
         noteTouches(p, s, downEdge)
         noteTouches(p, s, upEdge)
@@ -382,6 +389,7 @@ local function sweep(starts)
         if f ~= s then return nil end
       end
       local p = sweepRight[s]
+      if below and sweepRight[below] ~= p then belowOf[p] = below end
       if rank[p] ~= walkRank or not walkGone or not beside then
         noteTouches(p, s, downEdge)
         noteTouches(p, s, upEdge)
@@ -994,7 +1002,16 @@ local holeLefts, leftCount   -- each hole's first node in (x, y) order, and thei
 -- found them: an array and a count.
 function M.holeLefts() return holeLefts, leftCount end
 
+-- After a check that found the rings valid: when its sweep went through and found every place
+-- holding one node, inside no edge, the nodes in the sweep's order, their count, each node's
+-- rank in it and the edge right below each node (see belowOf); else nil.
+function M.plainSweep()
+  if not plain then return nil end
+  return plainOrder, plainCount, plainRank, plainBelow
+end
+
 local function sweepCrossing(starts)
+  plain = false
   sortPlaces(starts)
   touchedAt = {}
   local crossing
@@ -1006,6 +1023,11 @@ local function sweepCrossing(starts)
     crossing = sweep(starts)
   end
   if crossing == false and placesCross() then crossing = true end
+  -- the sweep went through, and every place holds one node, inside no edge: what
+  -- polygon/monotone.lua takes (see M.plainSweep)
+  plain = not gridUsed and crossing == false and next(touchedAt) == nil
+    and rank[placeOrder[placeCount]] == placeCount
+  plainOrder, plainCount, plainRank, plainBelow = placeOrder, placeCount, rank, belowOf
   -- the nodes at one place, linked in a circle (twin[k]: the next; k alone: itself), for the
   -- bridges to find a pinch point's nodes without walking the ring; and each hole's first node
   -- in (x, y) order, the one the bridges join (a sort of the holes by it took 5% of a tile
@@ -1033,6 +1055,7 @@ local function sweepCrossing(starts)
     i = last + 1
   end
   sweepLeft, sweepRight, rank, upEdge, placeOrder, touchedAt, downEdge = nil, nil, nil, nil, nil, nil, nil
+  belowOf = nil
   lastUp, lastDown = nil, nil
   lineOrder.release()
   return crossing

@@ -9,6 +9,7 @@ local object = require(_PACKAGE .. ".object")
 local nodes = require(_PACKAGE .. ".nodes")
 local sweep = require(_PACKAGE .. ".sweep")
 local order = require(_PACKAGE .. ".order")
+local monotone = require(_PACKAGE .. ".monotone")
 local rects = require(_PACKAGE .. ".rects")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
@@ -792,6 +793,7 @@ if JIT then
   jit.off(sweep.chunk, true)
   jit.off(nodes.chunk, true)
   jit.off(order.chunk, true)
+  jit.off(monotone.chunk, true)
 end
 
 local roomMade = not JIT
@@ -809,6 +811,7 @@ local function charge(t0)
   jit.on(sweep.chunk, true)
   jit.on(nodes.chunk, true)
   jit.on(order.chunk, true)
+  jit.on(monotone.chunk, true)
 end
 
 local build
@@ -865,6 +868,7 @@ function build(points, n, holes, checkOnly)
   listed = nil
   nodeRing, twin, joined = scratch(31, capacity), scratch(32, capacity), { true }
   sweep.bind(nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn, twin)
+  monotone.bind(nodeX, nodeY, nextNode, prevNode, turn, capacity)
   local outer = linkRing(points, n, 1, false, 1)
   if flat then
     if anyCrossing({ outer }) then return nil, "edges cross" end
@@ -892,6 +896,13 @@ function build(points, n, holes, checkOnly)
   local trouble = ringsTrouble(starts)
   if trouble then return nil, trouble end
   if checkOnly then return true end
+  -- an outline alone that the sweep found plain: by monotone pieces (see polygon/monotone.lua)
+  local placeOrder, placeCount, placeRank, below = sweep.plainSweep()
+  if placeOrder and #starts == 1 then
+    local tris = newArray(3 * nodeCount)
+    local written = monotone.triangulate(outer, placeCount, tris, placeOrder, placeCount, placeRank, below)
+    if written then triCount = written; return tris end
+  end
   -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
   local lefts, leftCount = sweep.holeLefts()
   if leftCount > 0 then buildIndex(starts) end
@@ -914,6 +925,7 @@ local function releaseNodes()
   listed, shared, reflexSeen, nodeRing, blocker, heldBy = nil, nil, nil, nil, nil, nil
   twin, joined, indexHead, indexNext, indexNode = nil, nil, nil, nil, nil
   sweep.bind(nil, nil, nil, nil, nil, nil, nil, nil)
+  monotone.bind(nil, nil, nil, nil, nil, nil)
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil
   entryRow, rowDropped, pending = nil, nil, nil
 end
