@@ -95,10 +95,15 @@ local function decompose(first)
   return true
 end
 
--- Each vertex's neighbours: its ring's two, then its diagonals' far ends, sorted by angle at the
--- vertices with diagonals. used[h]: half-edge h (a vertex to a diagonal's far end) walked;
--- ringUsed[k]: the ring's edge from k walked.
-local adjStart, adjCount, adj, used, ringUsed
+-- The diagonals' ends' neighbours: each such vertex's ring neighbours and its diagonals' far
+-- ends, sorted by angle, in adj from adjStart[v] (adjCount[v] of them); lists[1 .. listCount]
+-- the vertices with a list. A vertex without one (listed[v] ~= stamp) has its ring's two
+-- neighbours alone, and a piece walking through it goes on along the ring. ringUsed[k] == stamp:
+-- the ring's edge from k walked; used[h]: the half-edge from a listed vertex to adj[h] walked.
+-- (Stamps, not cleared marks: a call touches the lists of its diagonals' ends alone.)
+local adjStart, adjCount, adj, used, ringUsed, listed, lists, listCount
+local diagsAt, seenAt   -- diagonals at a vertex, and the stamp of the call that counted them
+local stamp = 0
 
 -- Whether the direction from v to a comes before the one to b counterclockwise from +x (in the
 -- coordinates' own frame: y up): by half-plane, then by the exact sign of their cross product.
@@ -110,54 +115,69 @@ local function before(v, a, b)
   return orient(v, a, b) * turn > 0
 end
 
-local function link(first)
-  local k, at = first, 1
-  repeat adjCount[k] = 2; k = nextNode[k] until k == first
-  for i = 1, diagCount do
-    adjCount[diagA[i]], adjCount[diagB[i]] = adjCount[diagA[i]] + 1, adjCount[diagB[i]] + 1
+-- Gives diagonal end v its list on first sight (its ring's two neighbours), then adds w.
+local at
+local function listEnd(v, w)
+  if listed[v] ~= stamp then
+    listed[v], adjStart[v], adjCount[v] = stamp, at, 2
+    adj[at], adj[at + 1] = nextNode[v], prevNode[v]
+    at = at + 2 + diagsAt[v]
+    listCount = listCount + 1
+    lists[listCount] = v
   end
-  k = first
-  repeat
-    local c = adjCount[k]
-    adjStart[k], adj[at], adj[at + 1], ringUsed[k] = at, nextNode[k], prevNode[k], false
-    adjCount[k] = 2   -- filled again below
-    at = at + c
-    k = nextNode[k]
-  until k == first
-  for i = 1, diagCount do
+  local c = adjCount[v]
+  adj[adjStart[v] + c], adjCount[v] = w, c + 1
+end
+
+local function link()
+  for i = 1, diagCount do   -- the diagonals at each end (diagsAt: counted from first sight)
     local a, b = diagA[i], diagB[i]
-    adj[adjStart[a] + adjCount[a]], adj[adjStart[b] + adjCount[b]] = b, a
-    adjCount[a], adjCount[b] = adjCount[a] + 1, adjCount[b] + 1
+    diagsAt[a] = seenAt[a] == stamp and diagsAt[a] + 1 or 1
+    diagsAt[b] = seenAt[b] == stamp and diagsAt[b] + 1 or 1
+    seenAt[a], seenAt[b] = stamp, stamp
+  end
+  at, listCount = 1, 0
+  for i = 1, diagCount do
+    listEnd(diagA[i], diagB[i])
+    listEnd(diagB[i], diagA[i])
   end
   for j = 1, at - 1 do used[j] = false end
-  k = first
-  repeat   -- the neighbours of the diagonals' ends in order (insertion: a few entries)
-    local s, c = adjStart[k], adjCount[k]
-    if c > 2 then
-      for j = s + 1, s + c - 1 do
-        local a, g = adj[j], j - 1
-        while g >= s and before(k, a, adj[g]) do adj[g + 1] = adj[g]; g = g - 1 end
-        adj[g + 1] = a
-      end
+  for i = 1, listCount do   -- each list in order (insertion: a few entries)
+    local v = lists[i]
+    local s, c = adjStart[v], adjCount[v]
+    for j = s + 1, s + c - 1 do
+      local a, g = adj[j], j - 1
+      while g >= s and before(v, a, adj[g]) do adj[g + 1] = adj[g]; g = g - 1 end
+      adj[g + 1] = a
     end
-    k = nextNode[k]
-  until k == first
-end
-
--- Where w's neighbour u is listed.
-local function slotOf(w, u)
-  local s = adjStart[w]
-  for j = s, s + adjCount[w] - 1 do
-    if adj[j] == u then return j end
   end
 end
 
--- The next vertex of a piece, at w coming from u: the neighbour next to u on the inside's side
--- (clockwise of u when the ring turns counterclockwise, y up).
+-- Where listed vertex w's neighbour u is.
+local function slotOf(w, u)
+  local j = adjStart[w]
+  while adj[j] ~= u do j = j + 1 end
+  return j
+end
+
+-- Marks the half-edge from u to w walked.
+local function mark(u, w)
+  if w == nextNode[u] then ringUsed[u] = stamp else used[slotOf(u, w)] = true end
+end
+
+-- The next vertex of a piece at w, coming from u, with the half-edge to it marked: along the
+-- ring when w has no list, else the neighbour next to u on the inside's side (clockwise of u
+-- when the ring turns counterclockwise, y up).
 local function turnAt(w, u)
-  local s, c = adjStart[w], adjCount[w]
-  if c == 2 then return adj[s] == u and adj[s + 1] or adj[s] end
-  return adj[s + (slotOf(w, u) - s - turn) % c]
+  if listed[w] ~= stamp then
+    ringUsed[w] = stamp
+    return nextNode[w]
+  end
+  local s = adjStart[w]
+  local h = s + (slotOf(w, u) - s - turn) % adjCount[w]
+  local z = adj[h]
+  if z == nextNode[w] then ringUsed[w] = stamp else used[h] = true end
+  return z
 end
 
 local tris, triCount
@@ -177,14 +197,15 @@ end
 -- far as the chain turns towards the inside). false when a triangle comes out flat.
 local pieceLimit        -- more vertices than the ring and the diagonals hold: a walk gone wrong
 local function triangulatePiece(u, w)
-  local m, a, b = 0, u, w
-  repeat
+  mark(u, w)
+  piece[1] = u
+  local m, a, b = 1, u, w
+  while b ~= u do
     m = m + 1
     if m > pieceLimit then return false end
-    piece[m] = a
-    if b == nextNode[a] then ringUsed[a] = true else used[slotOf(a, b)] = true end
+    piece[m] = b
     a, b = b, turnAt(b, a)
-  until a == u and b == w
+  end
   if m == 3 then return emit(piece[1], piece[2], piece[3]) end
   local left, right = 1, 1
   for i = 2, m do
@@ -239,20 +260,21 @@ function M.triangulate(first, count, out, order, orderCount, ranks, below)
   diagA, diagB = scratch(60, count), scratch(61, count)
   local ok = decompose(first)
   if ok then
-    adjStart, adjCount = scratch(62, capacity), scratch(63, capacity)
+    stamp = stamp + 1
     local halfEdges = count + 2 * diagCount
     pieceLimit = halfEdges
-    adj, used, ringUsed = scratch(64, halfEdges), scratch(65, halfEdges), scratch(66, capacity)
+    adjStart, adjCount, listed = scratch(62, capacity), scratch(63, capacity), scratch(72, capacity)
+    diagsAt, seenAt, lists = scratch(73, capacity), scratch(74, capacity), scratch(75, 2 * diagCount)
+    adj, used, ringUsed = scratch(64, 6 * diagCount), scratch(65, 6 * diagCount), scratch(66, capacity)
     piece, merged, chain = scratch(67, halfEdges), scratch(68, halfEdges), scratch(69, capacity)
     stack = scratch(70, halfEdges)
-    link(first)
+    link()
     tris, triCount = out, 0
-    local k = first
-    repeat
-      if not ringUsed[k] then ok = triangulatePiece(k, nextNode[k]) and ok end
-      k = nextNode[k]
-    until k == first
-    for i = 1, diagCount do   -- a piece of diagonals alone
+    for i = 1, placeCount do
+      local k = placeOrder[i]
+      if ringUsed[k] ~= stamp then ok = triangulatePiece(k, nextNode[k]) and ok end
+    end
+    for i = 1, triCount < 3 * (count - 2) and diagCount or 0 do   -- a piece of diagonals alone
       local a, b = diagA[i], diagB[i]
       if not used[slotOf(a, b)] then ok = triangulatePiece(a, b) and ok end
       if not used[slotOf(b, a)] then ok = triangulatePiece(b, a) and ok end
@@ -261,6 +283,7 @@ function M.triangulate(first, count, out, order, orderCount, ranks, below)
   end
   rank, placeOrder, belowOf, kind, helper, diagA, diagB = nil, nil, nil, nil, nil, nil, nil
   adjStart, adjCount, adj, used, ringUsed, tris = nil, nil, nil, nil, nil, nil
+  listed, diagsAt, seenAt, lists = nil, nil, nil, nil
   piece, merged, chain, stack = nil, nil, nil, nil
   if not ok then M.declined = M.declined + 1; return nil end
   M.taken = M.taken + 1

@@ -43,13 +43,10 @@ function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   nodes.bind(x, y, nextN, ring, sign)
 end
 
-
 -- The ring node k was made for: 1 the outline, h + 1 hole h.
 local crossedA, crossedB   -- nodes of the two edges found crossing (or meeting wrongly), for
                            -- the message naming their rings
-local function ringOf(k)
-  return nodeRing[k]
-end
+local function ringOf(k) return nodeRing[k] end
 
 -- The message for two rings found crossing or meeting wrongly (crossedA, crossedB).
 local function crossingMessage()
@@ -1002,16 +999,14 @@ local holeLefts, leftCount   -- each hole's first node in (x, y) order, and thei
 -- found them: an array and a count.
 function M.holeLefts() return holeLefts, leftCount end
 
--- After a check that found the rings valid: when its sweep went through and found every place
--- holding one node, inside no edge, the nodes in the sweep's order, their count, each node's
--- rank in it and the edge right below each node (see belowOf); else nil.
+-- After a check whose sweep went through and found each node at a place of its own, inside no
+-- edge: the nodes in the sweep's order, their count, their ranks and belowOf; else nil.
 function M.plainSweep()
   if not plain then return nil end
   return plainOrder, plainCount, plainRank, plainBelow
 end
 
 local function sweepCrossing(starts)
-  plain = false
   sortPlaces(starts)
   touchedAt = {}
   local crossing
@@ -1023,8 +1018,7 @@ local function sweepCrossing(starts)
     crossing = sweep(starts)
   end
   if crossing == false and placesCross() then crossing = true end
-  -- the sweep went through, and every place holds one node, inside no edge: what
-  -- polygon/monotone.lua takes (see M.plainSweep)
+  -- for polygon/monotone.lua (see M.plainSweep)
   plain = not gridUsed and crossing == false and next(touchedAt) == nil
     and rank[placeOrder[placeCount]] == placeCount
   plainOrder, plainCount, plainRank, plainBelow = placeOrder, placeCount, rank, belowOf
@@ -1055,8 +1049,7 @@ local function sweepCrossing(starts)
     i = last + 1
   end
   sweepLeft, sweepRight, rank, upEdge, placeOrder, touchedAt, downEdge = nil, nil, nil, nil, nil, nil, nil
-  belowOf = nil
-  lastUp, lastDown = nil, nil
+  lastUp, lastDown, belowOf = nil, nil, nil
   lineOrder.release()
   return crossing
 end
