@@ -41,6 +41,18 @@ local function triangleSet(tris)
   return table.concat(set, " | ")
 end
 
+-- The triangles of an outline the pieces take (checked: no refusal, one call taken, every
+-- triangle wound like the outline, whose shoelace is > 0 in these cases), as triangleSet.
+local function piecesOf(points)
+  local tris, message, taken = bySweep(polygon.polygonTriangulate, points)
+  assert.is_nil(message)
+  assert.are.equal(1, taken)
+  for _, t in ipairs(tris) do
+    assert.is_true((t[3] - t[1]) * (t[6] - t[2]) - (t[4] - t[2]) * (t[5] - t[1]) > 0)
+  end
+  return triangleSet(tris)
+end
+
 -- A star-shaped outline of random vertices on a small grid, in the order of their angles around
 -- the origin (one vertex a direction): simple, with many vertices at one x, vertical edges, and
 -- vertices in line with their neighbours on some.
@@ -80,26 +92,16 @@ describe("polygonTriangulate by monotone pieces", function()
       -- triangles: (0,5),(10,0),(6,5): (10-0)*(5-5) - (0-5)*(6-0) = 30, area 15; and
       -- (0,5),(6,5),(10,10): 6*5 - 0*10 = 30, area 15. The outline: shoelace -50 + 50 + 10 + 50
       -- = 60, area 30 = 15 + 15.
-      local points = { 0,5, 10,0, 6,5, 10,10 }
-      local tris, message, taken = bySweep(polygon.polygonTriangulate, points)
-      assert.is_nil(message)
-      assert.are.equal(1, taken)
-      assert.are.equal("0,5 10,0 6,5 | 0,5 10,10 6,5", triangleSet(tris))
-      for _, t in ipairs(tris) do   -- each wound like the outline (shoelace > 0 here)
-        assert.is_true((t[3] - t[1]) * (t[6] - t[2]) - (t[4] - t[2]) * (t[5] - t[1]) > 0)
-      end
+      assert.are.equal("0,5 10,0 6,5 | 0,5 10,10 6,5", piecesOf({ 0,5, 10,0, 6,5, 10,10 }))
     end)
 
     it("joins an arrow pointing right at its merge vertex", function()
       -- sweep order: (0,0), (0,10), (4,5), (10,5). (4,5) has both neighbours earlier and is
       -- reflex: a merge vertex, helper of the edge below it, (0,0)-(10,5); the next vertex met,
       -- (10,5), joins it. Triangles (0,10),(4,5),(10,5): (4-0)*(5-10) - (5-10)*(10-0) = -20 +
-      -- 50 = 30, area 15, and (0,0),(10,5),(4,5): 10*5 - 5*4 = 30, area 15; the outline 30.
-      local points = { 10,5, 0,10, 4,5, 0,0 }
-      local tris, message, taken = bySweep(polygon.polygonTriangulate, points)
-      assert.is_nil(message)
-      assert.are.equal(1, taken)
-      assert.are.equal("0,0 10,5 4,5 | 0,10 10,5 4,5", triangleSet(tris))
+      -- 50 = 30, area 15, and (0,0),(10,5),(4,5): 10*5 - 5*4 = 30, area 15; the outline: shoelace
+      -- 100 - 40 + 0 + 0 = 60, area 30.
+      assert.are.equal("0,0 10,5 4,5 | 0,10 10,5 4,5", piecesOf({ 10,5, 0,10, 4,5, 0,0 }))
     end)
 
     it("triangulates a square with a vertical edge either way round", function()
