@@ -97,13 +97,11 @@ end
 
 -- The diagonals' ends' neighbours: each such vertex's ring neighbours and its diagonals' far
 -- ends, sorted by angle, in adj from adjStart[v] (adjCount[v] of them); lists[1 .. listCount]
--- the vertices with a list. A vertex without one (listed[v] ~= stamp) has its ring's two
--- neighbours alone, and a piece walking through it goes on along the ring. ringUsed[k] == stamp:
+-- the vertices with a list. A vertex without one (not listed[v]) has its ring's two
+-- neighbours alone, and a piece walking through it goes on along the ring. ringUsed[k]:
 -- the ring's edge from k walked; used[h]: the half-edge from a listed vertex to adj[h] walked.
--- (Stamps, not cleared marks: a call touches the lists of its diagonals' ends alone.)
 local adjStart, adjCount, adj, used, ringUsed, listed, lists, listCount
-local diagsAt, seenAt   -- diagonals at a vertex, and the stamp of the call that counted them
-local stamp = 0
+local diagsAt          -- diagonals at a vertex
 
 -- Whether the direction from v to a comes before the one to b counterclockwise from +x (in the
 -- coordinates' own frame: y up): by half-plane, then by the exact sign of their cross product.
@@ -118,8 +116,8 @@ end
 -- Gives diagonal end v its list on first sight (its ring's two neighbours), then adds w.
 local at
 local function listEnd(v, w)
-  if listed[v] ~= stamp then
-    listed[v], adjStart[v], adjCount[v] = stamp, at, 2
+  if not listed[v] then
+    listed[v], adjStart[v], adjCount[v] = true, at, 2
     adj[at], adj[at + 1] = nextNode[v], prevNode[v]
     at = at + 2 + diagsAt[v]
     listCount = listCount + 1
@@ -130,11 +128,14 @@ local function listEnd(v, w)
 end
 
 local function link()
-  for i = 1, diagCount do   -- the diagonals at each end (diagsAt: counted from first sight)
+  for i = 1, placeCount do
+    local k = placeOrder[i]
+    listed[k], ringUsed[k] = false, false
+  end
+  for i = 1, diagCount do diagsAt[diagA[i]], diagsAt[diagB[i]] = 0, 0 end
+  for i = 1, diagCount do   -- the diagonals at each end
     local a, b = diagA[i], diagB[i]
-    diagsAt[a] = seenAt[a] == stamp and diagsAt[a] + 1 or 1
-    diagsAt[b] = seenAt[b] == stamp and diagsAt[b] + 1 or 1
-    seenAt[a], seenAt[b] = stamp, stamp
+    diagsAt[a], diagsAt[b] = diagsAt[a] + 1, diagsAt[b] + 1
   end
   at, listCount = 1, 0
   for i = 1, diagCount do
@@ -162,21 +163,21 @@ end
 
 -- Marks the half-edge from u to w walked.
 local function mark(u, w)
-  if w == nextNode[u] then ringUsed[u] = stamp else used[slotOf(u, w)] = true end
+  if w == nextNode[u] then ringUsed[u] = true else used[slotOf(u, w)] = true end
 end
 
 -- The next vertex of a piece at w, coming from u, with the half-edge to it marked: along the
 -- ring when w has no list, else the neighbour next to u on the inside's side (clockwise of u
 -- when the ring turns counterclockwise, y up).
 local function turnAt(w, u)
-  if listed[w] ~= stamp then
-    ringUsed[w] = stamp
+  if not listed[w] then
+    ringUsed[w] = true
     return nextNode[w]
   end
   local s = adjStart[w]
   local h = s + (slotOf(w, u) - s - turn) % adjCount[w]
   local z = adj[h]
-  if z == nextNode[w] then ringUsed[w] = stamp else used[h] = true end
+  if z == nextNode[w] then ringUsed[w] = true else used[h] = true end
   return z
 end
 
@@ -256,23 +257,24 @@ end
 -- in line with its neighbours; then ear clipping). order: the sweep's (sweep.plainOrder).
 function M.triangulate(first, count, out, order, orderCount, ranks, below)
   rank, placeOrder, placeCount, belowOf = ranks, order, orderCount, below
-  kind, helper = scratch(58, capacity), scratch(59, capacity)
-  diagA, diagB = scratch(60, count), scratch(61, count)
+  -- the arrays of ear clipping's grid and bridges, which a call taking this way never builds
+  -- (only the sweep's results are read here): kept between calls, they are not kept twice
+  kind, helper = scratch(14, capacity), scratch(15, capacity)
+  diagA, diagB = scratch(16, count), scratch(17, count)
   local ok = decompose(first)
   if ok then
-    stamp = stamp + 1
     local halfEdges = count + 2 * diagCount
     pieceLimit = halfEdges
-    adjStart, adjCount, listed = scratch(62, capacity), scratch(63, capacity), scratch(72, capacity)
-    diagsAt, seenAt, lists = scratch(73, capacity), scratch(74, capacity), scratch(75, 2 * diagCount)
-    adj, used, ringUsed = scratch(64, 6 * diagCount), scratch(65, 6 * diagCount), scratch(66, capacity)
-    piece, merged, chain = scratch(67, halfEdges), scratch(68, halfEdges), scratch(69, capacity)
-    stack = scratch(70, halfEdges)
+    adjStart, adjCount, listed = scratch(18, capacity), scratch(19, capacity), scratch(49, capacity)
+    diagsAt, lists = scratch(11, capacity), scratch(12, 2 * diagCount)
+    adj, used, ringUsed = scratch(20, 6 * diagCount), scratch(21, 6 * diagCount), scratch(22, capacity)
+    piece, merged, chain = scratch(33, halfEdges), scratch(46, halfEdges), scratch(47, capacity)
+    stack = scratch(48, halfEdges)
     link()
     tris, triCount = out, 0
     for i = 1, placeCount do
       local k = placeOrder[i]
-      if ringUsed[k] ~= stamp then ok = triangulatePiece(k, nextNode[k]) and ok end
+      if not ringUsed[k] then ok = triangulatePiece(k, nextNode[k]) and ok end
     end
     for i = 1, triCount < 3 * (count - 2) and diagCount or 0 do   -- a piece of diagonals alone
       local a, b = diagA[i], diagB[i]
@@ -283,7 +285,7 @@ function M.triangulate(first, count, out, order, orderCount, ranks, below)
   end
   rank, placeOrder, belowOf, kind, helper, diagA, diagB = nil, nil, nil, nil, nil, nil, nil
   adjStart, adjCount, adj, used, ringUsed, tris = nil, nil, nil, nil, nil, nil
-  listed, diagsAt, seenAt, lists = nil, nil, nil, nil
+  listed, diagsAt, lists = nil, nil, nil
   piece, merged, chain, stack = nil, nil, nil, nil
   if not ok then M.declined = M.declined + 1; return nil end
   M.taken = M.taken + 1
