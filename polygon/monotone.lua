@@ -4,8 +4,8 @@
 -- diagonals cut the outline into pieces monotone in the sweep's order (the helper rule), and each
 -- piece is triangulated with a stack. Linear after the sweep, where ear clipping's tests grow with
 -- the outline's spikes: a noisy circle of 10,000 vertices spent 5.4 ms in the ear test's grid and
--- its ears, 2.4 ms here (bench/NOTES.md, session 24). Every decision is an exact sign (orient) or
--- a comparison of the sweep's ranks.
+-- its ears, about 2.4 ms here (bench/NOTES.md, session 24). Every decision is an exact sign
+-- (orient), a comparison of the sweep's ranks or of two coordinates.
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local nodes = require(_PACKAGE .. ".nodes")
@@ -254,7 +254,8 @@ end
 
 -- Triangulates the ring at node `first`, of `count` nodes, into out (three nodes a triangle,
 -- each wound like the ring): the entries written, or nil when this way does not apply (a vertex
--- in line with its neighbours; then ear clipping). order: the sweep's (sweep.plainOrder).
+-- in line with its neighbours; then ear clipping). order, orderCount, ranks, below: what
+-- sweep.plainSweep returned for that ring.
 function M.triangulate(first, count, out, order, orderCount, ranks, below)
   rank, placeOrder, placeCount, belowOf = ranks, order, orderCount, below
   -- the arrays of ear clipping's grid and bridges, which a call taking this way never builds
