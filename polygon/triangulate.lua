@@ -22,7 +22,7 @@ local validate = object.validate
 local orient, same, newArray = nodes.orient, nodes.same, nodes.newArray
 local scratch = nodes.scratch   -- arrays kept between calls (slots 1 to 10, 34 to 45, 50 to 57
                                 -- and 71 are sweep.lua's and order.lua's; monotone.lua borrows
-                                -- 11 to 22, 33 and 46 to 49, never in a call that clips ears)
+                                -- 11 to 22, 33 and 46 to 49 before the bridges and the ears)
 local anyCrossing, ringsTrouble = sweep.anyCrossing, sweep.ringsTrouble
 local furtherRight, spanInRow = nodes.furtherRight, nodes.spanInRow
 
