@@ -48,9 +48,9 @@ end
 -- it, is the last vertex met with e right below it (at first e's own left end). A split vertex
 -- joins its helper; a merge vertex is joined by the next vertex met in its gap. false when a
 -- vertex lies in line with its neighbours or an edge below is missing (then ear clipping).
-local function decompose(first)
-  local k = first
-  repeat   -- the kinds, before the sweep reads any
+local function decompose()
+  for i = 1, placeCount do   -- the kinds, before the sweep reads any
+    local k = placeOrder[i]
     local p, q = prevNode[k], nextNode[k]
     local s = orient(p, k, q)
     if s == 0 then return false end
@@ -59,8 +59,7 @@ local function decompose(first)
     elseif r > rank[p] and r > rank[q] then kind[k] = s > 0 and END or MERGE
     elseif insideUp(rank[p] < r and p or k) then kind[k] = INSIDE_UP
     else kind[k] = INSIDE_DOWN end
-    k = q
-  until k == first
+  end
   diagCount = 0
   for i = 1, placeCount do
     local v = placeOrder[i]
@@ -252,17 +251,17 @@ local function triangulatePiece(u, w)
   return not flat
 end
 
--- Triangulates the ring at node `first`, of `count` nodes, into out (three nodes a triangle,
--- each wound like the ring): the entries written, or nil when this way does not apply (a vertex
--- in line with its neighbours; then ear clipping). order, orderCount, ranks, below: what
--- sweep.plainSweep returned for that ring.
-function M.triangulate(first, count, out, order, orderCount, ranks, below)
-  rank, placeOrder, placeCount, belowOf = ranks, order, orderCount, below
+-- Triangulates the ring whose nodes, count of them, sweep.plainSweep returned (order, count,
+-- ranks, below) into out (three nodes a triangle, each wound like the ring): the entries
+-- written, or nil when this way does not apply (a vertex in line with its neighbours; then ear
+-- clipping).
+function M.triangulate(out, order, count, ranks, below)
+  rank, placeOrder, placeCount, belowOf = ranks, order, count, below
   -- the arrays of ear clipping's grid and bridges, which a call taking this way never builds
   -- (only the sweep's results are read here): kept between calls, they are not kept twice
   kind, helper = scratch(14, capacity), scratch(15, capacity)
   diagA, diagB = scratch(16, count), scratch(17, count)
-  local ok = decompose(first)
+  local ok = decompose()
   if ok then
     local halfEdges = count + 2 * diagCount
     pieceLimit = halfEdges

@@ -901,7 +901,7 @@ function build(points, n, holes, checkOnly)
   local placeOrder, placeCount, placeRank, below = sweep.plainSweep()
   if placeOrder and #starts == 1 then
     local tris = newArray(3 * nodeCount)
-    local written = monotone.triangulate(outer, placeCount, tris, placeOrder, placeCount, placeRank, below)
+    local written = monotone.triangulate(tris, placeOrder, placeCount, placeRank, below)
     if written then triCount = written; return tris end
   end
   -- join the holes from left to right, each at its leftmost vertex (ties: the topmost)
