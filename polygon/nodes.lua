@@ -35,21 +35,28 @@ end
 -- Scratch arrays, kept from one triangulation to the next when it makes at most SCRATCH_NODES
 -- nodes: a call on a small outline spent about a tenth of its time making its thirty-odd
 -- arrays and collecting them (bench/NOTES.md, session 20). Slot s holds one array at a time,
--- replaced by a larger one when a call needs more; a larger call makes its own, dropped at its
--- end, so what stays is bounded (some 50 arrays of a few thousand entries). A reused array
--- holds the last call's values: every user writes an entry before reading it, or clears it.
+-- replaced by a larger one when a call needs more, so what stays is bounded (some 50 arrays of a
+-- few thousand entries). A larger call's arrays are held weakly (bigPool): the next large call
+-- takes them unless the collector has run since, which frees them, so a level's load keeps no
+-- megabytes while a tool that triangulates a large map again and again does not make its
+-- fifty-odd arrays each time (a tenth of tiles-120's time, bench/NOTES.md, session 25). A reused
+-- array holds the last call's values: every user writes an entry before reading it, or clears it.
 local SCRATCH_NODES = 2048
-local pool, poolSize, pooling = {}, {}, false
+local pool, poolSize = {}, {}
+local smallPool, smallSize = pool, poolSize
+local bigPool, bigSize = setmetatable({}, { __mode = "v" }), {}
 local function scratch(slot, size)
-  if not pooling then return newArray(size) end
   local a = pool[slot]
   if a and poolSize[slot] >= size then return a end
   a = newArray(size)
   pool[slot], poolSize[slot] = a, size
   return a
 end
--- Whether the call now starting, of at most `capacity` nodes, takes its arrays from the pool.
-function M.usePool(nodes) pooling = nodes <= SCRATCH_NODES end
+-- Chooses the arrays for the call now starting, of at most `capacity` nodes.
+function M.usePool(nodes)
+  if nodes <= SCRATCH_NODES then pool, poolSize = smallPool, smallSize
+  else pool, poolSize = bigPool, bigSize end
+end
 
 -- Nodes in order of x, then y (for table.sort).
 local function leftmostFirst(a, b)
