@@ -12,7 +12,7 @@ local lineOrder = require(_PACKAGE .. ".order")
 local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 local floor, sort = math.floor, table.sort
 local JIT, cross = kernel.JIT, kernel.cross
-local scratch, orient, same, leftmostFirst = nodes.scratch, nodes.orient, nodes.same, nodes.leftmostFirst
+local scratch, orient, same, sortPlaces = nodes.scratch, nodes.orient, nodes.same, nodes.sortPlaces
 local spanInRow, furtherRight, holeMisplaced = nodes.spanInRow, nodes.furtherRight, nodes.holeMisplaced
 
 local M = {}
@@ -76,13 +76,13 @@ end
 -- it, so each edge is tested only against its neighbours when it comes in and when it leaves.
 -- Edge k runs from node k to nextNode[k]; sweepLeft[k] and sweepRight[k] are its ends in (x, y)
 -- order. An event is k (edge k comes in at its left end) or -k (it leaves at its right end).
--- The vertices are sorted by place in expected linear time (buckets by x, see sortPlaces);
+-- The vertices are sorted by place in expected linear time (buckets by x, nodes.sortPlaces);
 -- the order along the line is polygon/order.lua's: blocks of a sorted array, searched by
 -- halving, each edge linked to its neighbours. (A skip list made LuaJIT grow traces until its
 -- machine-code area ran out; one sorted array moved half the order for every edge.)
 local sweepLeft, sweepRight
 local rank                  -- rank[k]: node k's place in (x, y) order (1 for the first place)
-local placeOrder, placeCount   -- the nodes in (x, y) order (see sortPlaces), and their count
+local placeOrder, placeCount   -- the nodes in (x, y) order (nodes.sortPlaces), and their count
 
 -- > 0 when edge s lies above edge t where the line meets both (in y-up terms), < 0 below, 0 for
 -- edges in line: the later left end tested against the other edge, then its right end.
@@ -95,117 +95,6 @@ local function edgeOrder(s, t)
   return side * turn * flip
 end
 lineOrder.compare(edgeOrder)
-
-local BUCKET_RUN = 24   -- a bucket holding more nodes than this is sorted by table.sort
-                        -- (many vertices on one vertical line), fewer by insertion
-
--- Whether the nodes order[lo..hi] all lie on one vertical line.
-local function sameX(order, lo, hi)
-  local x = nodeX[order[lo]]
-  for i = lo + 1, hi do
-    if nodeX[order[i]] ~= x then return false end
-  end
-  return true
-end
-
--- Sorts order[lo..hi], nodes on one vertical line, by y: counted into as many buckets as nodes,
--- each then sorted by insertion; false, leaving them as they were, when a bucket is crowded. A
--- crowded bucket by x is most often such a line (a tile map's column of corners: tiles-120 has
--- 63 nodes a line), where table.sort with a Lua comparison took a fifth of the check.
-local function sortByY(order, lo, hi)
-  local y0, y1 = huge, -huge
-  for i = lo, hi do y0, y1 = min(y0, nodeY[order[i]]), max(y1, nodeY[order[i]]) end
-  if y1 == y0 then return true end   -- one place
-  local count = hi - lo + 1
-  local scale = count / (y1 - y0)
-  local start, run = scratch(44, count + 1), scratch(45, count)
-  for b = 1, count + 1 do start[b] = 0 end
-  local most = 0
-  for i = lo, hi do
-    local b = min(floor((nodeY[order[i]] - y0) * scale), count - 1) + 1
-    start[b] = start[b] + 1
-    most = max(most, start[b])
-  end
-  if most > BUCKET_RUN then return false end   -- crowded again: table.sort (see sortPlaces)
-  local at = 1
-  for b = 1, count + 1 do start[b], at = at, at + start[b] end
-  for i = lo, hi do
-    local k = order[i]
-    local b = min(floor((nodeY[k] - y0) * scale), count - 1) + 1
-    run[start[b]], start[b] = k, start[b] + 1
-  end
-  for i = 1, count do   -- each bucket's run by insertion: the buckets are in order
-    local k, j = run[i], i - 1
-    while j >= 1 and nodeY[run[j]] > nodeY[k] do run[j + 1] = run[j]; j = j - 1 end
-    run[j + 1] = k
-  end
-  for i = 1, count do order[lo + i - 1] = run[i] end
-  return true
-end
-
--- The nodes of the rings at `starts` in (x, y) order, and their count: counted into as many
--- buckets as nodes by x (the bucket is monotone in x), then each bucket sorted. Sets rank.
-local function sortPlaces(starts)
-  local x0, x1, count = huge, -huge, 0
-  for _, s in ipairs(starts) do
-    local k = s
-    repeat
-      x0, x1, count = min(x0, nodeX[k]), max(x1, nodeX[k]), count + 1
-      k = nextNode[k]
-    until k == s
-  end
-  local scale = count / (x1 - x0)   -- x1 > x0: the outer ring has area
-  local bucketOf, first = scratch(1, capacity), scratch(2, count + 1)
-  for b = 1, count + 1 do first[b] = 0 end
-  for _, s in ipairs(starts) do
-    local k = s
-    repeat
-      local b = min(floor((nodeX[k] - x0) * scale), count - 1) + 1
-      bucketOf[k] = b
-      first[b] = first[b] + 1
-      k = nextNode[k]
-    until k == s
-  end
-  local at = 1   -- first[b]: where bucket b starts in the order; then where its next node goes
-  for b = 1, count + 1 do first[b], at = at, at + first[b] end
-  local order, fill = scratch(3, count), scratch(4, count)
-  for b = 1, count do fill[b] = first[b] end
-  for _, s in ipairs(starts) do
-    local k = s
-    repeat
-      local b = bucketOf[k]
-      order[fill[b]] = k
-      fill[b] = fill[b] + 1
-      k = nextNode[k]
-    until k == s
-  end
-  for b = 1, count do
-    local lo, hi = first[b], first[b + 1] - 1
-    if hi - lo >= BUCKET_RUN then
-      if not (sameX(order, lo, hi) and sortByY(order, lo, hi)) then
-        local run = {}
-        for i = lo, hi do run[i - lo + 1] = order[i] end
-        sort(run, leftmostFirst)
-        for i = lo, hi do order[i] = run[i - lo + 1] end
-      end
-    else
-      for i = lo + 1, hi do
-        local k, j = order[i], i - 1
-        while j >= lo and leftmostFirst(k, order[j]) do order[j + 1] = order[j]; j = j - 1 end
-        order[j + 1] = k
-      end
-    end
-  end
-  rank = scratch(5, capacity)
-  local place = 0
-  for i = 1, count do
-    local k = order[i]
-    if i == 1 or not same(k, order[i - 1]) then place = place + 1 end
-    rank[k] = place
-  end
-  placeOrder, placeCount = order, count
-  return order, count
-end
 
 -- The events in order: by place, and at one place every edge leaving before any coming in.
 local function sweepEvents(starts)
@@ -566,13 +455,11 @@ end
 -- against the cells (a noisy circle's spikes) overlap by the dozen in every cell they cross,
 -- where the sweep's order stays cheap: past GRID_REACH, GRID_BUDGET or GRID_PAIRS the grid is
 -- given up for the sweep, and so it is when the cells are too small for the coordinates.
-local GRID_LOAD = 1        -- edges a cell, about (with 2 the check took rain 917 us, eberly-6
-                           -- 418, water2 522, against 646, 332, 443 now: bench/NOTES.md)
+local GRID_LOAD = 1        -- edges a cell, about (2 was slower on map data: bench/NOTES.md)
 local GRID_BUDGET = 6      -- cell entries an edge, on average, at most
 local GRID_PAIRS = 48      -- pairs of edges sharing a cell, an edge, on average, at most
-local GRID_REACH = 2       -- an edge's |dx| + |dy| in cells, on average, at most (the edges of
-                           -- a noisy circle of 1,000 vertices reach 3.9 cells, 10,000 12:
-                           -- their boxes overlap by the dozen, where the sweep's order is cheap)
+local GRID_REACH = 2       -- an edge's |dx| + |dy| in cells, on average, at most (a noisy
+                           -- circle's reach 4 to 12: boxes overlapping by the dozen)
 local GRID_FINE = 2^-24    -- a cell's side against the largest coordinate's magnitude, at least:
                            -- the rows' spans in x below then err by far less than GRID_MARGIN
 local GRID_MARGIN = 0.25   -- cells: the spans' widening against rounding
@@ -651,12 +538,9 @@ local function pairCross(e, f)
 end
 
 -- Files edge k (to node q) in the cells it passes through, its entries after entry n: the
--- entries' count then, or nil past the budget. One loop over the cells of all the edge's rows,
--- not a loop per row, with few live values (the arrays are upvalues, the coordinates read
--- again by gridSpan), and only for the edges that pass more than two cells or more than one
--- row (see fileEdges): on LuaJIT the side traces of loops within the loop over all edges
--- aborted ("register coalescing too complex") hundreds of times on water2, and the call ran 5
--- to 30 times slower.
+-- entries' count then, or nil past the budget. One loop over the cells of all the edge's rows
+-- with few live values, and only for the edges that pass more than two cells or more than one
+-- row (see fileEdges): nested loops' side traces aborted on LuaJIT (bench/NOTES.md).
 local entryCell, entryEdge, entryBudget
 local function fileLong(k, q, n)
   local row, lastRow = gridRow(boxY0[k]), gridRow(boxY1[k])
@@ -680,9 +564,7 @@ end
 -- Notes the box of edge k (to node q) and files it when it lies in one cell or in two side
 -- by side: the entries' count then, or -1 - n for an edge left to fileLong. An edge in one cell
 -- takes two entries too, the second in the spare cell past the grid (junkCell), which no loop
--- reads: on LuaJIT the branch between one and two went both ways, and its side trace aborted
--- ("register coalescing too complex") until the exit was left to the interpreter, which then
--- ran a fifth of the calls' filing.
+-- reads: a branch between one and two made a side trace that LuaJIT could not compile.
 local junkCell
 local function fileShort(k, q, n)
   local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
@@ -777,10 +659,8 @@ end
 -- Of several crossings, the one named is the first by its rings (the outline's own first,
 -- then by the lower ring, then the higher): the cells' order says nothing a user could use.
 -- One loop over the pairs of all cells, cell after cell (entries i and j of the cell ending at
--- entry `last`), with few values live and the boxes read again for each pair: a loop per cell
--- and per entry, a few turns each, ran on LuaJIT as many small traces entered and left at every
--- cell (8 us of tiles-8's 36), and the exact tests' side traces, started with more values
--- live, aborted hundreds of times on tile maps.
+-- entry `last`), with few values live and the boxes read again for each pair: nested loops ran
+-- on LuaJIT as many small traces entered and left at every cell.
 local function gridCrossing()
   if not fileEdges() then return nil end
   foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
@@ -809,6 +689,39 @@ local function gridCrossing()
       if c > cells then break end
       i, last = cellFirst[c], cellFirst[c + 1] - 1
       j = i + 1
+    end
+  end
+  crossedA, crossedB = foundA, foundB
+  return foundA ~= nil
+end
+
+-- The same answer for an outline alone of few edges (PAIRS_ALL): every pair of edges whose
+-- boxes meet gets the exact tests, with no cells to file them in. One loop over the pairs,
+-- as in gridCrossing. (On a star of 8 to 96 vertices a call took a fifth less time than by
+-- the grid on LuaJIT, at 128 a seventh more; on PUC Lua the pairs cost more: bench/NOTES.md.)
+local PAIRS_ALL = JIT and 96 or 24
+local function pairsCrossing()
+  boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
+  boxY0, boxY1 = scratch(38, capacity), scratch(39, capacity)
+  for i = 1, placeCount do
+    local k = placeOrder[i]
+    local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[nextNode[k]], nodeY[nextNode[k]]
+    boxX0[k], boxX1[k], boxY0[k], boxY1[k] = min(ax, bx), max(ax, bx), min(ay, by), max(ay, by)
+  end
+  foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
+  local i, j = 1, 2
+  while true do
+    if j <= placeCount then
+      local e, f = placeOrder[i], placeOrder[j]
+      if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
+        and pairCross(e, f) then
+        noteCrossing(e, f)
+      end
+      j = j + 1
+    elseif i + 2 <= placeCount then
+      i, j = i + 1, i + 2
+    else
+      break
     end
   end
   crossedA, crossedB = foundA, foundB
@@ -932,10 +845,10 @@ end
 -- the whole outline (one holding v would hold the outline's edge at e, and with no crossing all
 -- of the outline; see gridPlaceAll). When e is another hole's, v lies where that hole's outside
 -- lies, and the hole is placed as that one is. So a hole reads only the cells from v to the
--- nearest crossing, where the crossing rule reads half a row or column (the placing was 2.6 of
--- tiles-120's 15 ms: bench/NOTES.md, session 22). Anything else (no crossing, the other side, v
--- on another ring's edge, two edges meeting the ray at one point, a chain of holes coming back
--- to one already on it) leaves the hole to gridPlace, which also names the trouble.
+-- nearest crossing, where the crossing rule reads half a row or column. Anything else (no
+-- crossing, the other side, v on another ring's edge, two edges meeting the ray at one point, a
+-- chain of holes coming back to one already on it) leaves the hole to gridPlace, which also
+-- names the trouble.
 
 -- The edge (its node) the ray from node v to the left meets first, with v on its polygon side
 -- (orient > 0); or nil when that is not so or cannot be told here (see above).
@@ -990,7 +903,7 @@ end
 
 local gridUsed   -- whether the last check went by the grid (then gridPlaceAll places the holes)
 M.grid = true    -- false: the sweep always (for the specs that compare the two ways)
-M.lastWay = nil  -- "grid" or "sweep": the way the last check went (for those specs)
+M.lastWay = nil  -- "pairs", "grid" or "sweep": the way the last check went (for those specs)
 M.lastSlow = nil -- the holes the last check by the grid placed by gridPlace (for the specs)
 
 local holeLefts, leftCount   -- each hole's first node in (x, y) order, and their count
@@ -1007,12 +920,13 @@ function M.plainSweep()
 end
 
 local function sweepCrossing(starts)
-  sortPlaces(starts)
+  placeOrder, placeCount, rank = sortPlaces(starts, capacity)
   touchedAt = {}
   local crossing
-  if M.grid then crossing = gridCrossing() end
-  gridUsed = crossing ~= nil
-  M.lastWay = gridUsed and "grid" or "sweep"
+  local allPairs = M.grid and #starts == 1 and placeCount <= PAIRS_ALL
+  if allPairs then crossing = pairsCrossing() elseif M.grid then crossing = gridCrossing() end
+  gridUsed = crossing ~= nil   -- (the pairs too: no sweep, and no holes to place)
+  M.lastWay = allPairs and "pairs" or gridUsed and "grid" or "sweep"
   if crossing == nil then
     touchedAt = {}   -- the sweep notes them again
     crossing = sweep(starts)

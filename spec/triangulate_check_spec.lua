@@ -27,6 +27,7 @@ local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
 -- polygonTriangulate by one way: the triangles or nil, the message, and the way taken.
 local function byWay(grid, points, list)
   sweep.grid = grid
+  sweep.lastWay = nil   -- a call refused before the check (zero area) leaves it nil
   local tris, message = triangulate(points, list)
   local way = sweep.lastWay
   sweep.grid = true
@@ -68,6 +69,107 @@ describe("polygonTriangulate's validity check", function()
     end)
   end)
 
+  describe("when an outline alone has few edges (every pair tested, no cells)", function()
+    -- star-shaped outlines of 3 to 22 points of a small integer grid sorted by angle about the
+    -- origin (vertical edges, vertices in line with their neighbours, edges through a vertex),
+    -- half of them with two vertices swapped (then most cross), some far from the origin or
+    -- scaled to thousandths
+    local angle = rawget(math, "atan2") or math.atan   -- math.atan takes (y, x) from Lua 5.3
+    local function smallOutline(seed)
+      local rng = prng.new(seed)
+      local size, wanted = 2 + seed % 9, rng:int(3, 22)
+      local pts, seen = {}, {}
+      for _ = 1, wanted do
+        local x, y = rng:int(-size, size), rng:int(-size, size)
+        if not seen[x * 1000 + y] and (x ~= 0 or y ~= 0) then
+          seen[x * 1000 + y] = true
+          pts[#pts + 1] = { x, y, angle(y, x) }
+        end
+      end
+      table.sort(pts, function(a, b) return a[3] < b[3] end)
+      if seed % 2 == 1 and #pts >= 4 then
+        local i = rng:int(1, #pts - 1)
+        pts[i], pts[i + 1] = pts[i + 1], pts[i]
+      end
+      local scale, offset = seed % 5 == 0 and 1e-3 or 1, seed % 7 == 0 and 2 ^ 40 or 0
+      local points = {}
+      for _, p in ipairs(pts) do
+        points[#points + 1], points[#points + 2] = p[1] * scale + offset, p[2] * scale - offset
+      end
+      return points
+    end
+
+    it("gives random small outlines the oracle's verdict, the sweep's too", function()
+      local ways, verdicts, first = {}, {}, 530000 + INDEX * 1000
+      for seed = first, first + 2 * CASES - 1 do
+        local points = smallOutline(seed)
+        if #points >= 6 then
+          local way, verdict = checkBoth(points, {}, "seed " .. seed)
+          ways[way or "none"] = (ways[way or "none"] or 0) + 1
+          verdicts[verdict] = (verdicts[verdict] or 0) + 1
+        end
+      end
+      -- every outline of 3 to 22 vertices that reaches the check goes by the pairs
+      assert.are.equal(nil, ways.grid)
+      assert.are.equal(nil, ways.sweep)
+      assert.is_true(ways.pairs > CASES, tostring(ways.pairs))
+      assert.is_true(verdicts.valid > CASES / 4 and verdicts.cross > CASES / 4,
+        ("valid %s, cross %s"):format(tostring(verdicts.valid), tostring(verdicts.cross)))
+    end)
+
+    it("gives scribbles (random vertices on a 5 by 5 grid) the oracle's verdict", function()
+      -- 4 to 9 vertices of 0..4 by 0..4 in random order: crossings, edges along one another,
+      -- vertices on edges and repeated, zero areas; the boxes of level and upright edges meet
+      -- at their sides only
+      local ways, first = {}, 540000 + INDEX * 10000
+      for seed = first, first + 4 * CASES - 1 do
+        local rng = prng.new(seed)
+        local points = {}
+        for i = 1, 2 * rng:int(4, 9) do points[i] = rng:int(0, 4) end
+        local way = checkBoth(points, {}, "seed " .. seed)
+        ways[way or "none"] = (ways[way or "none"] or 0) + 1
+      end
+      assert.is_true(ways.pairs > CASES, tostring(ways.pairs))
+      -- found by mutants of the pairs' loop: the last pair, and boxes meeting at a side
+      for _, points in ipairs({ { 1,1, 2,2, 1,0, 0,4, 4,3 }, { 2,1, 1,2, 3,1, 0,0, 0,2, 2,3, 4,0 },
+          { 3,3, 0,3, 4,4, 3,1, 1,0, 3,1, 3,0 }, { 0,2, 4,2, 1,3, 2,2, 1,1, 3,2 } }) do
+        local way, verdict = checkBoth(points, {}, table.concat(points, ","))
+        assert.are.equal("pairs", way)
+        assert.are.equal("cross", verdict)
+      end
+    end)
+
+    it("takes the pairs where the cells would be too small (2^60), and answers as the oracle", function()
+      -- the doubles near 2^60 lie u = 2^8 apart. A U (its notch from x = 16u to 48u, 48u deep),
+      -- then a pentagon whose vertex (32u, 80u) lies past its top edge at y = 64u: crossing
+      local big, u = 2 ^ 60, 2 ^ 8
+      local function at(list)
+        local out = {}
+        for i, v in ipairs(list) do out[i] = big + v * u end
+        return out
+      end
+      local shape = at({ 0,0, 16,0, 16,48, 48,48, 48,0, 64,0, 64,64, 0,64 })
+      assert.are.equal("pairs", (checkBoth(shape, {}, "U at 2^60")))
+      local crossed = at({ 0,0, 64,0, 32,80, 64,64, 0,64 })
+      local way, verdict = checkBoth(crossed, {}, "crossed at 2^60")
+      assert.are.equal("pairs", way)
+      assert.are.equal("cross", verdict)
+    end)
+
+    it("tells touching at a vertex, a vertex inside an edge and an edge folded back", function()
+      -- two squares meeting at (10, 10), one ring: valid (a pinch point)
+      local pinch = { 0,0, 10,0, 10,10, 20,10, 20,20, 10,20, 10,10, 0,10 }
+      local way, verdict = checkBoth(pinch, {}, "pinch")
+      assert.are.equal("pairs", way)
+      assert.are.equal("valid", verdict)
+      -- the notch's tip (10, 0) on the bottom edge from (0, 0) to (20, 0): touching inside an
+      -- edge, which the oracle's verdict decides
+      checkBoth({ 0,0, 20,0, 20,20, 15,20, 10,0, 5,20, 0,20 }, {}, "tip on an edge")
+      -- a spike out and back along one line: (30, 10) -> (40, 10) -> (30, 10)... as a fold
+      checkBoth({ 0,0, 20,0, 20,10, 40,10, 20,10, 20,20, 0,20 }, {}, "fold")
+    end)
+  end)
+
   describe("when the edges are long against the rings' box", function()
     it("takes the sweep for a noisy circle (spikes by the hundred) and answers as the oracle", function()
       -- 1,000 vertices at radii 600 to 1,400: an edge reaches 2.8 cells on average
@@ -79,11 +181,14 @@ describe("polygonTriangulate's validity check", function()
 
   describe("when the coordinates are too large for cells of the rings' size", function()
     it("takes the sweep at 2^60 and answers as the oracle", function()
-      local big = 2 ^ 60
-      local points = { big, big, big + 64, big, big + 64, big + 64, big, big + 64 }
-      local list = { { big + 16, big + 16, big + 16, big + 32, big + 32, big + 32 } }
+      -- the doubles near 2^60 lie 2^8 apart: a square of side 64 * 2^8 with a hole in it,
+      -- cells of about that side, far below 2^-24 of the coordinates
+      local big, u = 2 ^ 60, 2 ^ 8
+      local points = { big, big, big + 64 * u, big, big + 64 * u, big + 64 * u, big, big + 64 * u }
+      local list = { { big + 16 * u, big + 16 * u, big + 16 * u, big + 32 * u, big + 32 * u, big + 32 * u } }
+      assert.is_true(big + 16 * u > big)
       assert.are.equal("sweep", (checkBoth(points, list, "2^60")))
-      list[1][1] = big - 16   -- now the hole crosses the outline
+      list[1][1] = big - 16 * u   -- now the hole crosses the outline
       assert.are.equal("sweep", (checkBoth(points, list, "2^60 crossing")))
     end)
   end)
