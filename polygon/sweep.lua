@@ -696,29 +696,32 @@ local function gridCrossing()
 end
 
 -- The same answer for an outline alone of few edges (PAIRS_ALL): every pair of edges whose
--- boxes meet gets the exact tests, with no cells to file them in. One loop over the pairs,
--- as in gridCrossing. (On a star of 8 to 96 vertices a call took a fifth less time than by
--- the grid on LuaJIT, at 128 a seventh more; on PUC Lua the pairs cost more: bench/NOTES.md.)
-local PAIRS_ALL = JIT and 96 or 24
-local function pairsCrossing()
+-- boxes meet gets the exact tests, with no cells to file them in; the boxes by position along
+-- the ring (edges[i]'s at i), read in order. One loop over the pairs, as in gridCrossing. (A star
+-- of 8 to 64 vertices took a fifth less time a call than by the grid on LuaJIT, of 96 as long;
+-- on PUC Lua the pairs cost more: bench/NOTES.md, session 25.)
+local PAIRS_ALL = JIT and 80 or 24
+local function pairsCrossing(start)
   boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
   boxY0, boxY1 = scratch(38, capacity), scratch(39, capacity)
-  for i = 1, placeCount do
-    local k = placeOrder[i]
-    local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[nextNode[k]], nodeY[nextNode[k]]
-    boxX0[k], boxX1[k], boxY0[k], boxY1[k] = min(ax, bx), max(ax, bx), min(ay, by), max(ay, by)
-  end
+  local edges, n, k = scratch(43, capacity), 0, start
+  repeat   -- by position along the ring: the boxes of edges[i] at i
+    local q = nextNode[k]
+    local ax, ay, bx, by = nodeX[k], nodeY[k], nodeX[q], nodeY[q]
+    n = n + 1
+    edges[n], boxX0[n], boxX1[n], boxY0[n], boxY1[n] = k, min(ax, bx), max(ax, bx), min(ay, by), max(ay, by)
+    k = q
+  until k == start
   foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
   local i, j = 1, 2
   while true do
-    if j <= placeCount then
-      local e, f = placeOrder[i], placeOrder[j]
-      if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
-        and pairCross(e, f) then
-        noteCrossing(e, f)
+    if j <= n then
+      if max(boxX0[j] - boxX1[i], boxX0[i] - boxX1[j], boxY0[j] - boxY1[i], boxY0[i] - boxY1[j]) <= 0
+        and pairCross(edges[i], edges[j]) then
+        noteCrossing(edges[i], edges[j])
       end
       j = j + 1
-    elseif i + 2 <= placeCount then
+    elseif i + 2 <= n then
       i, j = i + 1, i + 2
     else
       break
@@ -924,7 +927,7 @@ local function sweepCrossing(starts)
   touchedAt = {}
   local crossing
   local allPairs = M.grid and #starts == 1 and placeCount <= PAIRS_ALL
-  if allPairs then crossing = pairsCrossing() elseif M.grid then crossing = gridCrossing() end
+  if allPairs then crossing = pairsCrossing(starts[1]) elseif M.grid then crossing = gridCrossing() end
   gridUsed = crossing ~= nil   -- (the pairs too: no sweep, and no holes to place)
   M.lastWay = allPairs and "pairs" or gridUsed and "grid" or "sweep"
   if crossing == nil then
