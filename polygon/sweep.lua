@@ -1,7 +1,7 @@
 -- polygon/sweep.lua: whether the rings of a polygon with holes are a valid input for the
 -- triangulation (no two edges cross, no ring overlaps another, every hole inside the outline and
--- outside the other holes), by a grid of edges or a sweep over the node rings that
--- polygon/triangulate.lua builds. Every decision is one of kernel's exact signs (through
+-- outside the other holes), pair by pair (a small outline alone), by a grid of edges or by a
+-- sweep over the node rings that polygon/triangulate.lua builds. Every decision is one of kernel's exact signs (through
 -- polygon/nodes.lua's tests on the nodes).
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
@@ -697,9 +697,8 @@ end
 
 -- The same answer for an outline alone of few edges (PAIRS_ALL): every pair of edges whose
 -- boxes meet gets the exact tests, with no cells to file them in; the boxes by position along
--- the ring (edges[i]'s at i), read in order. One loop over the pairs, as in gridCrossing. (A star
--- of 8 to 64 vertices took a fifth less time a call than by the grid on LuaJIT, of 96 as long;
--- on PUC Lua the pairs cost more: bench/NOTES.md, session 25.)
+-- the ring (edges[i]'s at i), read in order. One loop over the pairs, as in gridCrossing. (Past
+-- these sizes the pairs cost more than the cells: bench/NOTES.md, session 25.)
 local PAIRS_ALL = JIT and 80 or 24
 local function pairsCrossing(start)
   boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
