@@ -1,8 +1,8 @@
 -- polygon/sweep.lua: whether the rings of a polygon with holes are a valid input for the
 -- triangulation (no two edges cross, no ring overlaps another, every hole inside the outline and
 -- outside the other holes), pair by pair (a small outline alone), by a grid of edges or by a
--- sweep over the node rings that polygon/triangulate.lua builds. Every decision is one of kernel's exact signs (through
--- polygon/nodes.lua's tests on the nodes).
+-- sweep over the node rings that polygon/triangulate.lua builds. Every decision is one of
+-- kernel's exact signs (through polygon/nodes.lua's tests on the nodes).
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
