@@ -168,8 +168,6 @@ local function holeMisplaced(starts, h)
   return nil
 end
 
--- This file's main chunk: triangulate.lua turns LuaJIT's compiler off and on for every function
--- in it (see there).
 local BUCKET_RUN = 24   -- a bucket holding more nodes than this is sorted by table.sort
                         -- (many vertices on one vertical line), fewer by insertion
 
@@ -282,6 +280,8 @@ local function sortPlaces(starts, capacity)
   return order, count, rank
 end
 
+-- This file's main chunk: triangulate.lua turns LuaJIT's compiler off and on for every function
+-- in it (see there).
 M.chunk = debug.getinfo(1, "f").func
 
 M.newArray, M.scratch, M.orient, M.same = newArray, scratch, orient, same

@@ -465,7 +465,8 @@ local GRID_FINE = 2^-24    -- a cell's side against the largest coordinate's mag
 local GRID_MARGIN = 0.25   -- cells: the spans' widening against rounding
 local gridLeft, gridTop, gridScale, gridSize, gridCols, gridRows
 local cellFirst, cellEdge  -- cellEdge[cellFirst[c] .. cellFirst[c + 1] - 1]: the edges in cell c
-local boxX0, boxX1, boxY0, boxY1   -- boxX0[k] .. boxY1[k]: edge k's box
+local boxX0, boxX1, boxY0, boxY1   -- boxX0[k] .. boxY1[k]: edge k's box (pairsCrossing's: by
+                                   -- position along the ring)
 local stamp                -- stamp[k]: the node whose ray last looked at edge k (see gridPlace)
 
 -- (On LuaJIT min, not a branch: see fileShort. On PUC Lua the branch, cheaper than a call.)
