@@ -699,8 +699,8 @@ end
 -- The same answer for an outline alone of few edges (PAIRS_ALL): every pair of edges whose
 -- boxes meet gets the exact tests, with no cells to file them in; the boxes by position along
 -- the ring (edges[i]'s at i), read in order. One loop over the pairs, as in gridCrossing. (Past
--- these sizes the pairs cost more than the cells: bench/NOTES.md, session 25.)
-local PAIRS_ALL = JIT and 80 or 24
+-- these sizes the pairs can cost more than the cells: bench/NOTES.md, session 25.)
+local PAIRS_ALL = JIT and 48 or 24
 local function pairsCrossing(start)
   boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
   boxY0, boxY1 = scratch(38, capacity), scratch(39, capacity)
