@@ -130,7 +130,8 @@ describe("polygonTriangulate's validity check", function()
         ways[way or "none"] = (ways[way or "none"] or 0) + 1
       end
       assert.is_true(ways.pairs > CASES, tostring(ways.pairs))
-      -- found by mutants of the pairs' loop: the last pair, and boxes meeting at a side
+      -- cases that mutants of the pairs' loop got wrong (its first form, in the place order,
+      -- without its last pair; boxes meeting at a side taken as apart)
       for _, points in ipairs({ { 1,1, 2,2, 1,0, 0,4, 4,3 }, { 2,1, 1,2, 3,1, 0,0, 0,2, 2,3, 4,0 },
           { 3,3, 0,3, 4,4, 3,1, 1,0, 3,1, 3,0 }, { 0,2, 4,2, 1,3, 2,2, 1,1, 3,2 } }) do
         local way, verdict = checkBoth(points, {}, table.concat(points, ","))
