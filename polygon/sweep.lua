@@ -27,6 +27,7 @@ local capacity          -- the number of nodes the call can make, at most
 local turn              -- the sign of the outer ring's area: > 0 clockwise on screen
 local twin              -- filled by the sweep: twin[k], the next node at node k's place
 local plain, plainOrder, plainCount, plainRank, plainBelow   -- see M.plainSweep
+local keptFirst, keptEdge   -- the last check's cells, when it went by the grid: see M.edgeCells
 
 -- Sort orders, made once: a function made per call would keep LuaJIT from compiling its caller.
 local sortKey
@@ -40,6 +41,7 @@ function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, turn = x, y, nextN, prevN, ring, cap, sign
   twin = twins
   plain, plainOrder, plainCount, plainRank, plainBelow = false, nil, nil, nil, nil
+  keptFirst, keptEdge = nil, nil
   nodes.bind(x, y, nextN, ring, sign)
 end
 
@@ -581,15 +583,21 @@ end
 
 -- Files every edge in the cells it passes through: true when done, false when the cells are
 -- too small for the coordinates, or the entries or the pairs they make pass their budgets
--- (then the sweep).
-local function fileEdges()
+-- (then the sweep). The edges are read ring after ring, in the nodes' order: read in the
+-- places' x order, the node arrays were met at random, and a 120 by 120 tile map's filing
+-- took a fifth longer (bench/NOTES.md, session 26).
+local function fileEdges(starts)
   local x0, x1 = nodeX[placeOrder[1]], nodeX[placeOrder[placeCount]]
   local y0, y1, reach = huge, -huge, 0
-  for i = 1, placeCount do
-    local k = placeOrder[i]
-    local y, q = nodeY[k], nextNode[k]
-    y0, y1 = min(y0, y), max(y1, y)
-    reach = reach + abs(nodeX[q] - nodeX[k]) + abs(nodeY[q] - y)
+  for r = 1, #starts do
+    local s = starts[r]
+    local k = s
+    repeat
+      local y, q = nodeY[k], nextNode[k]
+      y0, y1 = min(y0, y), max(y1, y)
+      reach = reach + abs(nodeX[q] - nodeX[k]) + abs(nodeY[q] - y)
+      k = q
+    until k == s
   end
   -- the outer ring has area: its box has width and height
   gridSize = sqrt((x1 - x0) * (y1 - y0) * GRID_LOAD / placeCount)
@@ -609,10 +617,15 @@ local function fileEdges()
   boxY0, boxY1 = scratch(38, capacity), scratch(39, capacity)
   stamp = scratch(40, capacity)
   local n, long, longEdges = 0, 0, scratch(43, capacity)
-  for i = 1, placeCount do   -- the short edges; the others listed
-    local k = placeOrder[i]
-    n = fileShort(k, nextNode[k], n)
-    if n < 0 then n, long = -1 - n, long + 1; longEdges[long] = k end
+  for r = 1, #starts do   -- the short edges; the others listed
+    local s = starts[r]
+    local k = s
+    repeat
+      local q = nextNode[k]
+      n = fileShort(k, q, n)
+      if n < 0 then n, long = -1 - n, long + 1; longEdges[long] = k end
+      k = q
+    until k == s
   end
   for j = 1, long do
     local k = longEdges[j]
@@ -662,8 +675,9 @@ end
 -- One loop over the pairs of all cells, cell after cell (entries i and j of the cell ending at
 -- entry `last`), with few values live and the boxes read again for each pair: nested loops ran
 -- on LuaJIT as many small traces entered and left at every cell.
-local function gridCrossing()
-  if not fileEdges() then return nil end
+local function gridCrossing(starts)
+  if not fileEdges(starts) then return nil end
+  keptFirst, keptEdge = cellFirst, cellEdge
   foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
   local cells = gridCols * gridRows
   local c, i, j, last = 0, 0, 1, 0
@@ -915,6 +929,17 @@ local holeLefts, leftCount   -- each hole's first node in (x, y) order, and thei
 -- found them: an array and a count.
 function M.holeLefts() return holeLefts, leftCount end
 
+-- The last check's cells, when it went by the grid (else nil): the edges (their first nodes) in
+-- cell c at cellEdge[cellFirst[c] .. cellFirst[c + 1] - 1], cell c = row * columns + column + 1;
+-- then the grid's left, top, scale (cells a unit), cell side, columns and rows. Every edge lies
+-- in the cells of the points it passes through, within a quarter cell (GRID_MARGIN), and a
+-- point's cell is the floor of its offset times the scale, clamped to the last column and row.
+-- For triangulate.lua's bridges, which search these cells rather than build their own.
+function M.edgeCells()
+  if not keptFirst then return nil end
+  return keptFirst, keptEdge, gridLeft, gridTop, gridScale, gridSize, gridCols, gridRows
+end
+
 -- After a check whose sweep went through and found each node at a place of its own, inside no
 -- edge: the nodes in the sweep's order, their count, their ranks and belowOf; else nil.
 function M.plainSweep()
@@ -927,7 +952,7 @@ local function sweepCrossing(starts)
   touchedAt = {}
   local crossing
   local allPairs = M.grid and #starts == 1 and placeCount <= PAIRS_ALL
-  if allPairs then crossing = pairsCrossing(starts[1]) elseif M.grid then crossing = gridCrossing() end
+  if allPairs then crossing = pairsCrossing(starts[1]) elseif M.grid then crossing = gridCrossing(starts) end
   gridUsed = crossing ~= nil   -- (the pairs too: no sweep, and no holes to place)
   M.lastWay = allPairs and "pairs" or gridUsed and "grid" or "sweep"
   if crossing == nil then

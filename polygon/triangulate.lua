@@ -134,22 +134,49 @@ local function wedgeHolds(k, u, t, w)
   return orient(k, u, w) > 0 or orient(k, w, t) > 0
 end
 
+-- Whether node t lies in line with nodes k and e, on e's side of k (not at k's place).
+local function along(k, e, t)
+  if orient(k, e, t) ~= 0 or same(k, t) then return false end
+  local kx = nodeX[k]
+  if nodeX[e] ~= kx then return (nodeX[e] > kx) == (nodeX[t] > kx) end
+  return (nodeY[e] > nodeY[k]) == (nodeY[t] > nodeY[k])
+end
+
 -- Among the nodes of the joined ring at the place of node m, the one to bridge from towards
 -- node t: its sector holds the direction, and where several do (a pinch point where joined
 -- rings pass through one place, their sectors nested), the one whose outgoing edge comes last
 -- before the direction, turning towards the inside: the bridge then goes into the gap between
 -- that edge and the next ring's. The place's nodes come from the sweep (twin), those of holes
--- yet to join left out.
+-- yet to join left out. The answer must not depend on which node of the place the search met
+-- first (the cells' order decides that), so two kinds of node wait for the others:
+-- - a spike, whose neighbours lie one way from it (a bridge's end at a place with other nodes):
+--   its sector is all or nothing, and sectorHolds takes it for all; it is the answer only when
+--   no other node's sector holds the direction (the tip of a slit, all of whose sector is
+--   inside);
+-- - where no sector holds the direction strictly, it runs along an edge from the place (a
+--   hole's vertex inside the outline's edge, its ray along that edge): the node whose edge it
+--   runs along holds it in its sector's closure, and the bridge goes there.
 local function copyFacing(m, t)
-  local k, found = m, nil
+  local k, found, spike = m, nil, nil
   repeat
-    if not gone[k] and joined[nodeRing[k]] and sectorHolds(k, t)
-      and (not found or wedgeHolds(k, nextNode[found], t, nextNode[k])) then
-      found = k
+    if not gone[k] and joined[nodeRing[k]] and sectorHolds(k, t) then
+      if along(k, prevNode[k], nextNode[k]) then
+        spike = spike or k
+      elseif not found or wedgeHolds(k, nextNode[found], t, nextNode[k]) then
+        found = k
+      end
     end
     k = twin[k]
   until k == m
-  return found or m
+  if found then return found end
+  repeat
+    if not gone[k] and joined[nodeRing[k]] and not along(k, prevNode[k], nextNode[k])
+      and (along(k, nextNode[k], t) or along(k, prevNode[k], t)) then
+      return k
+    end
+    k = twin[k]
+  until k == m
+  return spike or m
 end
 
 -- Whether (x, y), in line with (hx, hy) and (bx, by) on the same side, lies strictly between.
@@ -165,7 +192,9 @@ end
 -- to end, which on a long flat strip with a thousand holes, or water-huge3's 1,443, was most of
 -- the call (bench/NOTES.md, session 22). A node is listed again when its edge changes (at a
 -- bridge); an entry whose node is gone, not yet joined, or whose edge no longer passes the
--- cell, is passed over. Entries are singly linked from their cell's head.
+-- cell, is passed over. A cell's entries are those the validity check filed there when it went
+-- by its grid (sweep.edgeCells: the index takes that grid's cells, and building its own was a
+-- tenth of a small tile map's call), then those listed here, singly linked from the cell's head.
 local INDEX_LOAD = 2        -- nodes per cell, about, when the cells are made
 local INDEX_ENTRIES = 4     -- entries per node at most; larger cells when the edges pass more
 local INDEX_MARGIN = 0.25   -- cells: an edge's span in a row, widened against rounding
@@ -173,6 +202,8 @@ local INDEX_FINE = 2 ^ -30  -- cells narrower than this times the largest coordi
                             -- by their boxes, and rays walk their whole row (rounding could
                             -- pass a margin of a quarter cell)
 local indexHead, indexNext, indexNode, indexEntries
+local filedFirst, filedNode   -- the check's entries: cell c's at filedNode[filedFirst[c] ..
+                              -- filedFirst[c + 1] - 1] (none when the index lists them all)
 local indexLeft, indexTop, indexScale, indexSize, indexCols, indexRows, indexFine
 
 -- The cell, from 0, of coordinate v along an axis of `count` cells from `from`, `scale` cells a
@@ -227,6 +258,17 @@ end
 -- own size, so with L the edges' sum of |dx| + |dy|, cells of at least L / (2 n) keep the
 -- entries near INDEX_ENTRIES = 4 per node.
 local function buildIndex(starts)
+  local first, filed, left, top, scale, size, cols, rows = sweep.edgeCells()
+  if first then
+    filedFirst, filedNode = first, filed
+    indexLeft, indexTop, indexScale, indexSize, indexCols, indexRows = left, top, scale, size, cols, rows
+    indexFine = true   -- (the check gives its grid up when the cells are too fine)
+    local cells = cols * rows
+    indexHead, indexEntries = scratch(11, cells), 0
+    indexNext, indexNode = scratch(12, 3 * #starts), scratch(13, 3 * #starts)
+    for c = 1, cells do indexHead[c] = 0 end
+    return
+  end
   local x0, y0, x1, y1, n, length = huge, huge, -huge, -huge, 0, 0
   for _, s in ipairs(starts) do
     local k = s
@@ -246,7 +288,9 @@ local function buildIndex(starts)
   local cells = indexCols * indexRows
   indexHead, indexEntries = scratch(11, cells), 0
   indexNext, indexNode = scratch(12, INDEX_ENTRIES * capacity), scratch(13, INDEX_ENTRIES * capacity)
-  for c = 1, cells do indexHead[c] = 0 end
+  filedFirst, filedNode = scratch(58, cells + 1), nil
+  for c = 1, cells do indexHead[c], filedFirst[c] = 0, 1 end
+  filedFirst[cells + 1] = 1
   for _, s in ipairs(starts) do
     local k = s
     repeat listEdge(k); k = nextNode[k] until k == s
@@ -265,10 +309,11 @@ local function bridgeTarget(h)
   local rowFirst = indexRow(hy) * indexCols + 1
   local cell, stop = rowFirst + indexCol(hx), rowFirst
   while cell >= stop do
-    local e = indexHead[cell]
-    while e > 0 do
-      local k = indexNode[e]
-      e = indexNext[e]
+    -- the cell's filed entries, then its listed ones
+    local i, last, e = filedFirst[cell], filedFirst[cell + 1] - 1, indexHead[cell]
+    while i <= last or e > 0 do
+      local k
+      if i <= last then k, i = filedNode[i], i + 1 else k, e = indexNode[e], indexNext[e] end
       if not gone[k] and joined[nodeRing[k]] then
         local q = nextNode[k]
         local x, y = nodeX[k], nodeY[k]
@@ -322,10 +367,10 @@ local function bridgeTarget(h)
   local c0, c1 = indexCol(nodeX[p]), indexCol(hx)
   for r = r0, r1 do
     for c = r * indexCols + c0 + 1, r * indexCols + c1 + 1 do
-      local e = indexHead[c]
-      while e > 0 do
-        local k = indexNode[e]
-        e = indexNext[e]
+      local i, last, e = filedFirst[c], filedFirst[c + 1] - 1, indexHead[c]
+      while i <= last or e > 0 do
+        local k
+        if i <= last then k, i = filedNode[i], i + 1 else k, e = indexNode[e], indexNext[e] end
         local x, y = nodeX[k], nodeY[k]
         if not gone[k] and joined[nodeRing[k]] and (y - hy) * side > 0
           and cross(lx, ly, ux, uy, lx, ly, x, y) <= 0 then
@@ -925,6 +970,7 @@ local function releaseNodes()
   nodeX, nodeY, inX, inY, origin, nextNode, prevNode, gone = nil, nil, nil, nil, nil, nil, nil, nil
   listed, shared, reflexSeen, nodeRing, blocker, heldBy = nil, nil, nil, nil, nil, nil
   twin, joined, indexHead, indexNext, indexNode = nil, nil, nil, nil, nil
+  filedFirst, filedNode = nil, nil
   sweep.bind(nil, nil, nil, nil, nil, nil, nil, nil)
   monotone.bind(nil, nil, nil, nil, nil, nil)
   cellStart, entryX, entryY, entryNode, entryOf = nil, nil, nil, nil, nil

@@ -77,6 +77,60 @@ describe("polygonTriangulate and polygonConvexParts with holes", function()
     end)
   end)
 
+  -- A hole touching the outline inside an edge: its leftmost vertex on the top edge casts its
+  -- ray along that edge to the corner, where holes further left have joined already, each
+  -- leaving a copy of the corner behind. Which of the corner's nodes the bridge leaves from once
+  -- depended on the order the bridges' search met them in: read from the check's cells, that
+  -- order changed and valid input was refused ("edges overlap or cross"; earcut's water4 too).
+  -- Both ways of the check (the grid, whose cells the bridges reuse, and the sweep, after which
+  -- they build their own) must give the oracle's answer.
+  describe("when a hole touches the outline inside an edge", function()
+    local sweep = require "polygon.sweep"
+
+    local function bothWays(points, list, where)
+      local verdict = oracle.regionCrossing(points, list)
+      for _, grid in ipairs({ true, false }) do
+        sweep.grid = grid
+        local tris, message = triangulate(points, list)
+        local parts, partsMessage = convexParts(points, list)
+        sweep.grid = true
+        local how = ("%s, %s, grid %s: %s"):format(where, verdict, tostring(grid), describeCase(points, list))
+        if verdict == "valid" then
+          assert(tris, how .. " refused: " .. tostring(message))
+          local ok, why = oracle.checkCover(points, list, tris)
+          assert(ok, how .. " triangles: " .. tostring(why))
+          assert(parts, how .. " parts refused: " .. tostring(partsMessage))
+          ok, why = oracle.checkCover(points, list, parts, true)
+          assert(ok, how .. " parts: " .. tostring(why))
+        elseif verdict ~= "unknown" then
+          assert(tris == nil and parts == nil, how .. " accepted")
+        end
+      end
+      return verdict
+    end
+
+    it("covers a square whose corner two holes have joined", function()
+      -- holes 1 and 2 join the corner (0, 0); hole 3's vertex (700, 0) lies on the top edge.
+      -- The outer boundary passes 8 vertex places (4 corners, hole 3's 3 vertices and (700, 0)
+      -- again), the two holes inside 3 each: 8 + 6 + 2 * 2 - 2 = 16 triangles
+      local points = { 0, 0, 1000, 0, 1000, 1000, 0, 1000 }
+      local list = { { 480, 480, 520, 480, 500, 520 }, { 590, 300, 630, 290, 610, 330 },
+        { 700, 0, 800, 50, 750, 80 } }
+      assert.are.equal("valid", bothWays(points, list, "the square"))
+      assert.are.equal(16, #triangulate(points, list))
+    end)
+
+    it("covers random rectangles with holes on their edges", function()
+      local seen = {}
+      for seed = 1, JIT and 300 or 600 do
+        local points, list = holes.onEdge(prng.new(INDEX * 1000 + seed))
+        local verdict = bothWays(points, list, "seed " .. seed)
+        seen[verdict] = (seen[verdict] or 0) + 1
+      end
+      assert.is_true((seen.valid or 0) > 150, tostring(seen.valid))
+    end)
+  end)
+
   -- Large tile maps pinch at many tile corners, where a hole meets the outline or another hole:
   -- two bridges or ear cuts can meet along one diagonal there both ways, the case that once left
   -- an edge behind and refused a valid map ("edges overlap or cross"; seed 27, 89 holes, was one).

@@ -82,4 +82,42 @@ function holes.case(rng)
   return points, list, name
 end
 
+--- A rectangle with small holes inside and one or two holes with a vertex on one of its edges
+-- (the hole touches the outline there, inside an edge). Such a hole's leftmost vertex on the
+-- top or bottom edge casts its ray along that edge, to the corner, where the holes further left
+-- have often joined already: the case whose answer once depended on the order the corner's
+-- nodes were met in. Every coordinate is an integer, so the touching vertex lies on the edge
+-- exactly.
+function holes.onEdge(rng)
+  local w, h = 4 * rng:int(50, 300), 4 * rng:int(50, 300)
+  local x0, y0 = 0, 0
+  if rng:int(1, 3) == 1 then x0, y0 = 2 ^ 20, -2 ^ 20 end
+  local points = { x0, y0, x0 + w, y0, x0 + w, y0 + h, x0, y0 + h }
+  local list = {}
+  for i = 1, rng:int(0, 5) do
+    list[i] = smallHole(rng, x0 + w / 8, y0 + h / 8, x0 + w - w / 8, y0 + h - h / 8, rng:int(3, 12))
+  end
+  for _ = 1, rng:int(1, 2) do
+    -- a vertex at a quarter, half or three quarters of an edge, and two more inside
+    local side, t, s = rng:int(1, 4), rng:int(1, 3), 2 * rng:int(2, 15)
+    local hole
+    if side == 1 then       -- top: the vertex leftmost
+      local x = x0 + t * w / 4
+      hole = { x, y0, x + s, y0 + s / 2, x + s / 2, y0 + s }
+    elseif side == 2 then   -- bottom
+      local x = x0 + t * w / 4
+      hole = { x, y0 + h, x + s / 2, y0 + h - s, x + s, y0 + h - s / 2 }
+    elseif side == 3 then   -- left
+      local y = y0 + t * h / 4
+      hole = { x0, y, x0 + s, y - s / 2, x0 + s, y + s / 2 }
+    else                    -- right
+      local y = y0 + t * h / 4
+      hole = { x0 + w, y, x0 + w - s, y + s / 2, x0 + w - s, y - s / 2 }
+    end
+    if rng:int(1, 2) == 1 then hole = shapes.reverse(hole) end
+    list[#list + 1] = hole
+  end
+  return points, list
+end
+
 return holes
