@@ -540,26 +540,34 @@ local function pairCross(e, f)
   return false
 end
 
--- Files edge k (to node q) in the cells it passes through, its entries after entry n: the
--- entries' count then, or nil past the budget. One loop over the cells of all the edge's rows
--- with few live values, and only for the edges that pass more than two cells or more than one
--- row (see fileEdges): nested loops' side traces aborted on LuaJIT (bench/NOTES.md).
+-- Files the edges listed in longEdges[1 .. long], those that pass more than two cells or more
+-- than one row (see fileShort), in the cells they pass through, their entries after entry n:
+-- the entries' count then, or nil past the budget. One loop over the cells of all their rows,
+-- edge after edge, with few live values: nested loops' side traces aborted on LuaJIT
+-- (bench/NOTES.md), and a loop per edge, a few cells long, was compiled late, while the row
+-- and column helpers it called from the interpreter had their own traces abort until LuaJIT
+-- blacklisted them, and with them every loop that calls them (one process in ten filed a noisy
+-- 100-gon in 13 us instead of 5; bench/NOTES.md, session 26).
 local entryCell, entryEdge, entryBudget
-local function fileLong(k, q, n)
-  local row, lastRow = gridRow(boxY0[k]), gridRow(boxY1[k])
-  local c, last = row * gridCols + gridCol(boxX0[k]) + 1, row * gridCols + gridCol(boxX1[k]) + 1
-  if row < lastRow then c, last = gridSpan(k, q, row) end   -- rows apart: see gridSpan
+local function fileLong(longEdges, long, n)
+  local j, k, q, row, lastRow, c, last = 0, 0, 0, 0, 0, 1, 0
   while true do
-    if c > last then
-      row = row + 1
-      if row > lastRow then return n end
-      c, last = gridSpan(k, q, row)
-    elseif n >= entryBudget then
-      return nil
-    else
+    if c <= last then
+      if n >= entryBudget then return nil end
       n = n + 1
       entryCell[n], entryEdge[n] = c, k
       c = c + 1
+    elseif row < lastRow then   -- the edge's next row
+      row = row + 1
+      c, last = gridSpan(k, q, row)
+    else                        -- the next edge
+      j = j + 1
+      if j > long then return n end
+      k = longEdges[j]
+      q = nextNode[k]
+      row, lastRow = gridRow(boxY0[k]), gridRow(boxY1[k])
+      c, last = row * gridCols + gridCol(boxX0[k]) + 1, row * gridCols + gridCol(boxX1[k]) + 1
+      if row < lastRow then c, last = gridSpan(k, q, row) end   -- rows apart: see gridSpan
     end
   end
 end
@@ -627,11 +635,8 @@ local function fileEdges(starts)
       k = q
     until k == s
   end
-  for j = 1, long do
-    local k = longEdges[j]
-    n = fileLong(k, nextNode[k], n)
-    if not n then return false end
-  end
+  n = fileLong(longEdges, long, n)
+  if not n then return false end
   -- the entries sorted by cell (counted, then placed)
   local cells = gridCols * gridRows
   cellFirst = scratch(41, cells + 2)
