@@ -677,38 +677,32 @@ end
 -- true when two edges cross properly, false when none do, nil when the grid was given up.
 -- Of several crossings, the one named is the first by its rings (the outline's own first,
 -- then by the lower ring, then the higher): the cells' order says nothing a user could use.
--- One loop over the pairs of all cells, cell after cell (entries i and j of the cell ending at
--- entry `last`), with few values live and the boxes read again for each pair: nested loops ran
--- on LuaJIT as many small traces entered and left at every cell.
+-- The pairs of each cell by nested loops. (One flat loop over all the pairs, with a branch for
+-- the next entry and the next cell, left LuaJIT's root trace on whichever path the loop was
+-- on when it got hot: in one process in four or five a cell's or an entry's change, and then
+-- every pair's test ran through a side trace: eberly-6's call 0.97 ms, not 0.80. The nested
+-- loops measured no slower on tile maps, of a pair or two a cell: bench/NOTES.md, session 26.)
 local function gridCrossing(starts)
   if not fileEdges(starts) then return nil end
   keptFirst, keptEdge = cellFirst, cellEdge
   foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
   local cells = gridCols * gridRows
-  local c, i, j, last = 0, 0, 1, 0
-  while true do
-    if j <= last then
-      local e, f = cellEdge[i], cellEdge[j]
-      -- the boxes overlap: on LuaJIT one test of one number (its differences are exact in
-      -- sign), on PUC Lua the comparisons, most often only the first (no call of max)
-      if JIT then
-        if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
-          and pairCross(e, f) then
+  for c = 1, cells do
+    local last = cellFirst[c + 1] - 1
+    for i = cellFirst[c], last - 1 do
+      local e = cellEdge[i]
+      for j = i + 1, last do
+        local f = cellEdge[j]
+        if JIT then
+          if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
+            and pairCross(e, f) then
+            noteCrossing(e, f)
+          end
+        elseif boxX0[f] <= boxX1[e] and boxX0[e] <= boxX1[f] and boxY0[f] <= boxY1[e]
+          and boxY0[e] <= boxY1[f] and pairCross(e, f) then
           noteCrossing(e, f)
         end
-      elseif boxX0[f] <= boxX1[e] and boxX0[e] <= boxX1[f] and boxY0[f] <= boxY1[e]
-        and boxY0[e] <= boxY1[f] and pairCross(e, f) then
-        noteCrossing(e, f)
       end
-      j = j + 1
-    elseif i + 1 < last then   -- the cell's next entry, with those after it
-      i = i + 1
-      j = i + 1
-    else                       -- the next cell
-      c = c + 1
-      if c > cells then break end
-      i, last = cellFirst[c], cellFirst[c + 1] - 1
-      j = i + 1
     end
   end
   crossedA, crossedB = foundA, foundB
@@ -717,8 +711,9 @@ end
 
 -- The same answer for an outline alone of few edges (PAIRS_ALL): every pair of edges whose
 -- boxes meet gets the exact tests, with no cells to file them in; the boxes by position along
--- the ring (edges[i]'s at i), read in order. One loop over the pairs, as in gridCrossing. (Past
--- these sizes the pairs can cost more than the cells: bench/NOTES.md, session 25.)
+-- the ring (edges[i]'s at i), read in order. One loop over the pairs: nested loops here ran
+-- every size at twice the time in one process in ten. (Past these sizes the pairs can cost
+-- more than the cells: bench/NOTES.md, session 25.)
 local PAIRS_ALL = JIT and 48 or 24
 local function pairsCrossing(start)
   boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
