@@ -693,6 +693,8 @@ local function gridCrossing(starts)
       local e = cellEdge[i]
       for j = i + 1, last do
         local f = cellEdge[j]
+        -- the boxes overlap: on LuaJIT one test of one number (its differences are exact in
+        -- sign), on PUC Lua the comparisons, most often only the first (no call of max)
         if JIT then
           if max(boxX0[f] - boxX1[e], boxX0[e] - boxX1[f], boxY0[f] - boxY1[e], boxY0[e] - boxY1[f]) <= 0
             and pairCross(e, f) then

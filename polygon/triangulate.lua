@@ -134,9 +134,9 @@ local function wedgeHolds(k, u, t, w)
   return orient(k, u, w) > 0 or orient(k, w, t) > 0
 end
 
--- Whether node t lies in line with nodes k and e, on e's side of k (not at k's place).
+-- Whether node t lies in line with nodes k and e, on e's side of k (neither at k's place).
 local function along(k, e, t)
-  if orient(k, e, t) ~= 0 or same(k, t) then return false end
+  if orient(k, e, t) ~= 0 or same(k, t) or same(k, e) then return false end
   local kx = nodeX[k]
   if nodeX[e] ~= kx then return (nodeX[e] > kx) == (nodeX[t] > kx) end
   return (nodeY[e] > nodeY[k]) == (nodeY[t] > nodeY[k])
