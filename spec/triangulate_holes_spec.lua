@@ -42,6 +42,16 @@ local function describeCase(points, list)
   return "{" .. table.concat(points, ",") .. "}, {" .. table.concat(parts, ",") .. "}"
 end
 
+-- Asserts that a valid case's triangles and parts cover it exactly (oracle.checkCover).
+local function assertCovered(points, list, tris, message, parts, partsMessage, where)
+  assert(tris, where .. " refused: " .. tostring(message))
+  local ok, why = oracle.checkCover(points, list, tris)
+  assert(ok, where .. " triangles: " .. tostring(why))
+  assert(parts, where .. " parts refused: " .. tostring(partsMessage))
+  ok, why = oracle.checkCover(points, list, parts, true)
+  assert(ok, where .. " parts: " .. tostring(why))
+end
+
 describe("polygonTriangulate and polygonConvexParts with holes", function()
   describe("when given random outlines with random holes", function()
     it("cover every valid one exactly and refuse every invalid one, naming the trouble", function()
@@ -56,12 +66,7 @@ describe("polygonTriangulate and polygonConvexParts with holes", function()
         local parts, partsMessage = convexParts(points, list)
         local where = ("seed %d (%s, %s): %s"):format(seed, kind, verdict, describeCase(points, list))
         if verdict == "valid" or (verdict == "unknown" and tris) then
-          assert(tris, where .. " refused: " .. tostring(message))
-          local ok, why = oracle.checkCover(points, list, tris)
-          assert(ok, where .. " triangles: " .. tostring(why))
-          assert(parts, where .. " parts refused: " .. tostring(partsMessage))
-          ok, why = oracle.checkCover(points, list, parts, true)
-          assert(ok, where .. " parts: " .. tostring(why))
+          assertCovered(points, list, tris, message, parts, partsMessage, where)
         elseif verdict ~= "unknown" then
           assert(tris == nil and parts == nil, where .. " accepted")
           assert(message == partsMessage, where)
@@ -96,12 +101,7 @@ describe("polygonTriangulate and polygonConvexParts with holes", function()
         sweep.grid = true
         local how = ("%s, %s, grid %s: %s"):format(where, verdict, tostring(grid), describeCase(points, list))
         if verdict == "valid" then
-          assert(tris, how .. " refused: " .. tostring(message))
-          local ok, why = oracle.checkCover(points, list, tris)
-          assert(ok, how .. " triangles: " .. tostring(why))
-          assert(parts, how .. " parts refused: " .. tostring(partsMessage))
-          ok, why = oracle.checkCover(points, list, parts, true)
-          assert(ok, how .. " parts: " .. tostring(why))
+          assertCovered(points, list, tris, message, parts, partsMessage, how)
         elseif verdict ~= "unknown" then
           assert(tris == nil and parts == nil, how .. " accepted")
         end
