@@ -121,13 +121,14 @@ describe("polygonTriangulate and polygonConvexParts with holes", function()
     end)
 
     it("covers random rectangles with holes on their edges", function()
-      local seen = {}
-      for seed = 1, JIT and 300 or 600 do
+      local seen, count = {}, JIT and 300 or 600
+      for seed = 1, count do
         local points, list = holes.onEdge(prng.new(INDEX * 1000 + seed))
         local verdict = bothWays(points, list, "seed " .. seed)
         seen[verdict] = (seen[verdict] or 0) + 1
       end
-      assert.is_true((seen.valid or 0) > 150, tostring(seen.valid))
+      -- most are valid (289 of LuaJIT's 300, 563 to 575 of the others' 600)
+      assert.is_true((seen.valid or 0) > 0.8 * count, tostring(seen.valid))
     end)
   end)
 
