@@ -253,10 +253,11 @@ local function listEdge(k)
   indexEntries = n
 end
 
--- Builds the index over the rings at starts: cells of about INDEX_LOAD nodes, or larger ones
--- when the edges are long: an edge passes at most (|dx| + |dy|) / size + 2 cells in the cells'
--- own size, so with L the edges' sum of |dx| + |dy|, cells of at least L / (2 n) keep the
--- entries near INDEX_ENTRIES = 4 per node.
+-- Builds the index over the rings at starts: the check's cells when it went by its grid, with
+-- nothing listed yet (the bridges list theirs); else cells of about INDEX_LOAD nodes, or larger
+-- ones when the edges are long: an edge passes at most (|dx| + |dy|) / size + 2 cells in the
+-- cells' own size, so with L the edges' sum of |dx| + |dy|, cells of at least L / (2 n) keep
+-- the entries near INDEX_ENTRIES = 4 per node.
 local function buildIndex(starts)
   local first, filed, left, top, scale, size, cols, rows = sweep.edgeCells()
   if first then
