@@ -34,6 +34,7 @@ build = {
     ["polygon.monotone"] = "polygon/monotone.lua",
     ["polygon.nodes"] = "polygon/nodes.lua",
     ["polygon.order"] = "polygon/order.lua",
+    ["polygon.places"] = "polygon/places.lua",
     ["polygon.sweep"] = "polygon/sweep.lua",
     ["polygon.rects"] = "polygon/rects.lua",
     ["polygon.triangulate"] = "polygon/triangulate.lua",

@@ -8,12 +8,14 @@ local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
 local nodes = require(_PACKAGE .. ".nodes")
 local lineOrder = require(_PACKAGE .. ".order")
+local places = require(_PACKAGE .. ".places")
 
 local abs, huge, min, max, sqrt = math.abs, math.huge, math.min, math.max, math.sqrt
 local floor, sort = math.floor, table.sort
-local JIT, cross = kernel.JIT, kernel.cross
+local JIT = kernel.JIT
 local scratch, orient, same, sortPlaces = nodes.scratch, nodes.orient, nodes.same, nodes.sortPlaces
 local spanInRow, furtherRight, holeMisplaced = nodes.spanInRow, nodes.furtherRight, nodes.holeMisplaced
+local chainsCross = places.chainsCross
 
 local M = {}
 
@@ -43,6 +45,7 @@ function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   plain, plainOrder, plainCount, plainRank, plainBelow = false, nil, nil, nil, nil
   keptFirst, keptEdge = nil, nil
   nodes.bind(x, y, nextN, ring, sign)
+  places.bind(x, y, nextN, prevN, cap)
 end
 
 -- The ring node k was made for: 1 the outline, h + 1 hole h.
@@ -308,124 +311,6 @@ local function sweep(starts)
   return false
 end
 
--- Where several vertices meet, or a vertex lies inside an edge, the outline may cross or
--- overlap itself without two edges crossing properly (the sweep's test). Around such a place
--- each vertex is a chain: an edge coming in (from its node's predecessor) and one going out
--- (to its successor); an edge holding the place inside is a chain too. Sorted by angle, the
--- edges must alternate, in, out, in, out: crossing an edge changes the winding number by one,
--- up for one kind and down for the other, so two of a kind in a row make a sector covered
--- twice (or wound the wrong way). And no two chains may interleave (the in-out pairs must nest
--- like brackets): chains that interleave cross there, whatever is done near the place. Edges
--- in one direction overlap along it: crossing them all changes the winding number by those
--- leaving less those reaching, which must be -1, 0 or 1 (two edges leaving in one direction,
--- none reaching: the region between them is inside one and outside the other); past that
--- their order across the direction is not known there (a slit, a bridge, a spike along an
--- edge): one edge each way may go in either order (each is tried), more leave the place
--- untested. An entry is 2k for the edge from node k to its
--- successor, 2k + 1 for the edge from its predecessor; an edge f holding the place inside is
--- chain k = capacity + f, its ends f (before) and f's successor (after).
-local placeX, placeY        -- the place being tested, for byAngle
-local function entryTarget(entry)
-  local k = (entry - entry % 2) / 2
-  if k > capacity then
-    local f = k - capacity
-    return entry % 2 == 0 and nextNode[f] or f
-  end
-  return entry % 2 == 0 and nextNode[k] or prevNode[k]
-end
--- Whether the entry u's edge comes before v's by angle about the place, from the +x axis
--- (exact: the side of the x axis, then the sign of a cross product).
-local function byAngle(u, v)
-  local a, b = entryTarget(u), entryTarget(v)
-  local ax, ay, bx, by = nodeX[a], nodeY[a], nodeX[b], nodeY[b]
-  local lowerA = ay < placeY or (ay == placeY and ax < placeX)
-  local lowerB = by < placeY or (by == placeY and bx < placeX)
-  if lowerA ~= lowerB then return lowerB end
-  return cross(placeX, placeY, ax, ay, placeX, placeY, bx, by) > 0
-end
-
--- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
--- `touched` holding it inside (or nil), cross or overlap there (see above).
-local TIED_PAIRS = 4      -- pairs of edges along one another (both ways) at a place, at most,
-                        -- whose 2^pairs orders are tried; past that the place is not tested
-
--- Whether entries[1..count], sorted by angle, alternate in and out and nest like brackets.
-local open = {}   -- alternateAndNest's open brackets: read only up to its depth
-local function alternateAndNest(entries, count)
-  local depth = 0   -- the chains' pairs, as brackets
-  for j = 1, count do
-    local u = entries[j]
-    if u % 2 == entries[j % count + 1] % 2 then return false end   -- two of a kind in a row
-    local chain = (u - u % 2) / 2
-    if depth > 0 and open[depth] == chain then
-      open[depth] = nil
-      depth = depth - 1
-    else
-      depth = depth + 1
-      open[depth] = chain
-    end
-  end
-  return depth == 0
-end
-
--- chainsCross's arrays, kept from one place to the next (read only up to their counts): tile
--- maps meet at a thousand places, each of which made three tables.
-local entries, tied = {}, {}
-local SORT_RUN = 16   -- entries sorted by insertion at most (in Lua, which LuaJIT compiles;
-                      -- table.sort's comparison calls are not compiled into the caller)
-
-local function chainsCross(first, last, touched)
-  local count = 0
-  for g = first, last do
-    local k = placeOrder[g]
-    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
-    count = count + 2
-  end
-  for g = 1, touched and #touched or 0 do
-    local k = capacity + touched[g]
-    entries[count + 1], entries[count + 2] = 2 * k, 2 * k + 1
-    count = count + 2
-  end
-  placeX, placeY = nodeX[placeOrder[first]], nodeY[placeOrder[first]]
-  if count <= SORT_RUN then
-    for i = 2, count do
-      local u, j = entries[i], i - 1
-      while j >= 1 and byAngle(u, entries[j]) do entries[j + 1] = entries[j]; j = j - 1 end
-      entries[j + 1] = u
-    end
-  else
-    for i = #entries, count + 1, -1 do entries[i] = nil end   -- table.sort sorts them all
-    sort(entries, byAngle)
-  end
-  local at, tiedCount = 1, 0
-  while at <= count do   -- the runs of edges in one direction: count those leaving, reaching
-    local u, runEnd, balance = entries[at], at, 0
-    while runEnd < count and not byAngle(u, entries[runEnd + 1]) do runEnd = runEnd + 1 end
-    for j = at, runEnd do balance = balance + (entries[j] % 2 == 0 and 1 or -1) end
-    if balance > 1 or balance < -1 then return true end
-    if runEnd > at + 1 then return false end   -- three or more: not decided here
-    if runEnd == at + 1 then tiedCount = tiedCount + 1; tied[tiedCount] = at end   -- either order
-    at = runEnd + 1
-  end
-  if tiedCount > TIED_PAIRS then return false end
-  for orders = 0, 2 ^ tiedCount - 1 do   -- bit t of orders: swap the t-th tied pair
-    local swapped = orders
-    for t = 1, tiedCount do
-      local j = tied[t]
-      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
-      swapped = (swapped - swapped % 2) / 2
-    end
-    if alternateAndNest(entries, count) then return false end
-    swapped = orders
-    for t = 1, tiedCount do
-      local j = tied[t]
-      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
-      swapped = (swapped - swapped % 2) / 2
-    end
-  end
-  return true
-end
-
 -- Whether the chains cross or overlap at some place where several vertices meet, or where a
 -- vertex lies inside an edge.
 local function placesCross()
@@ -433,7 +318,7 @@ local function placesCross()
   while i <= placeCount do
     local r, last = rank[placeOrder[i]], i
     while last < placeCount and rank[placeOrder[last + 1]] == r do last = last + 1 end
-    if (last > i or touchedAt[r]) and chainsCross(i, last, touchedAt[r]) then
+    if (last > i or touchedAt[r]) and chainsCross(placeOrder, i, last, touchedAt[r]) then
       -- the rings meeting there: two of the nodes, or a node and an edge through the place
       local touched = touchedAt[r]
       crossedA, crossedB = placeOrder[i], touched and touched[1] or placeOrder[last]
@@ -747,6 +632,65 @@ local function pairsCrossing(start)
   return foundA ~= nil
 end
 
+-- The same answer for an outline alone whose edges are short across its width (most outlines
+-- past PAIRS_ALL: a drawn shape, a noisy circle of a few hundred vertices): a sweep and prune.
+-- The edges in the order of their left ends (read off the places' order: an edge comes with the
+-- end of lower rank), each tested against those after it that start before it ends. The tests
+-- an edge takes are about the times a vertical line meets the outline, Σ|dx| over the box's
+-- width: past PRUNE_LOAD the sweep's order is cheaper (noisy circles: the prune took 0.15 ms to
+-- the sweep's 0.19 at 400 vertices, 0.38 to 0.23 at 500; bench/NOTES.md, session 27), and so
+-- it is given up before it starts. Places stacked in a column (a tile map's edges, all on a few
+-- lines) make more pairs than that estimate says: past twice PRUNE_LOAD tests an edge it is
+-- given up midway, for the grid. nil when given up.
+local PRUNE_LOAD = 20
+local function pruneCrossing(start)
+  local width, k = 0, start
+  repeat
+    local q = nextNode[k]
+    width = width + abs(nodeX[q] - nodeX[k])
+    k = q
+  until k == start
+  if width > PRUNE_LOAD * (nodeX[placeOrder[placeCount]] - nodeX[placeOrder[1]]) then return nil end
+  boxX0, boxX1 = scratch(36, capacity), scratch(37, capacity)
+  boxY0, boxY1 = scratch(38, capacity), scratch(39, capacity)
+  local edges, n = scratch(43, capacity), 0
+  for g = 1, placeCount do   -- boxes by position in the order: edges[i]'s at i
+    local p = placeOrder[g]
+    local r, q, o = rank[p], nextNode[p], prevNode[p]
+    if r <= rank[q] then   -- the edge from p (of p and q, the one of lower rank holds it)
+      local y, qy = nodeY[p], nodeY[q]
+      n = n + 1
+      edges[n], boxX0[n], boxX1[n], boxY0[n], boxY1[n] = p, nodeX[p], nodeX[q], min(y, qy), max(y, qy)
+    end
+    if r < rank[o] then    -- the edge to p
+      local y, oy = nodeY[p], nodeY[o]
+      n = n + 1
+      edges[n], boxX0[n], boxX1[n], boxY0[n], boxY1[n] = o, nodeX[p], nodeX[o], min(y, oy), max(y, oy)
+    end
+  end
+  foundA, foundB, foundLow, foundHigh = nil, nil, huge, huge
+  local budget = 2 * PRUNE_LOAD * n
+  for i = 1, n - 1 do
+    local right, low, high = boxX1[i], boxY0[i], boxY1[i]
+    local j = i + 1
+    while j <= n and boxX0[j] <= right do
+      -- the boxes overlap in y (in x they do): as in gridCrossing
+      if JIT then
+        if max(boxY0[j] - high, low - boxY1[j]) <= 0 and pairCross(edges[i], edges[j]) then
+          noteCrossing(edges[i], edges[j])
+        end
+      elseif boxY0[j] <= high and low <= boxY1[j] and pairCross(edges[i], edges[j]) then
+        noteCrossing(edges[i], edges[j])
+      end
+      j = j + 1
+    end
+    budget = budget - (j - i)
+    if budget < 0 then return nil end
+  end
+  crossedA, crossedB = foundA, foundB
+  return foundA ~= nil
+end
+
 -- Where the hole at node `start` lies, by the crossing rule along a row or a column of cells
 -- (the rings do not cross): a message when outside the polygon or inside another hole, nil when well
 -- placed, false when every vertex of the hole lies on another ring (holeMisplaced decides).
@@ -922,7 +866,10 @@ end
 
 local gridUsed   -- whether the last check went by the grid (then gridPlaceAll places the holes)
 M.grid = true    -- false: the sweep always (for the specs that compare the two ways)
-M.lastWay = nil  -- "pairs", "grid" or "sweep": the way the last check went (for those specs)
+M.lastWay = nil  -- "pairs", "prune", "grid" or "sweep": the way the last check went (for those specs)
+M.PAIRS_ALL = PAIRS_ALL
+M.pairsLimit = PAIRS_ALL   -- an outline alone of this many places at most goes by the pairs (the
+                           -- specs set 0 to send small outlines to the prune)
 M.lastSlow = nil -- the holes the last check by the grid placed by gridPlace (for the specs)
 
 local holeLefts, leftCount   -- each hole's first node in (x, y) order, and their count
@@ -953,10 +900,15 @@ local function sweepCrossing(starts)
   placeOrder, placeCount, rank = sortPlaces(starts, capacity)
   touchedAt = {}
   local crossing
-  local allPairs = M.grid and #starts == 1 and placeCount <= PAIRS_ALL
-  if allPairs then crossing = pairsCrossing(starts[1]) elseif M.grid then crossing = gridCrossing(starts) end
-  gridUsed = crossing ~= nil   -- (the pairs too: no sweep, and no holes to place)
-  M.lastWay = allPairs and "pairs" or gridUsed and "grid" or "sweep"
+  local way = "sweep"
+  if M.grid and #starts == 1 and placeCount <= M.pairsLimit then
+    crossing, way = pairsCrossing(starts[1]), "pairs"
+  elseif M.grid then
+    if #starts == 1 then crossing, way = pruneCrossing(starts[1]), "prune" end
+    if crossing == nil then crossing, way = gridCrossing(starts), "grid" end
+  end
+  gridUsed = crossing ~= nil   -- (the pairs and the prune too: no sweep, and no holes to place)
+  M.lastWay = gridUsed and way or "sweep"
   if crossing == nil then
     touchedAt = {}   -- the sweep notes them again
     crossing = sweep(starts)

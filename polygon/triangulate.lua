@@ -10,6 +10,7 @@ local nodes = require(_PACKAGE .. ".nodes")
 local sweep = require(_PACKAGE .. ".sweep")
 local order = require(_PACKAGE .. ".order")
 local monotone = require(_PACKAGE .. ".monotone")
+local places = require(_PACKAGE .. ".places")
 local rects = require(_PACKAGE .. ".rects")
 
 local abs, sqrt, huge, min, max = math.abs, math.sqrt, math.huge, math.min, math.max
@@ -841,6 +842,7 @@ if JIT then
   jit.off(nodes.chunk, true)
   jit.off(order.chunk, true)
   jit.off(monotone.chunk, true)
+  jit.off(places.chunk, true)
 end
 
 local roomMade = not JIT
@@ -859,6 +861,7 @@ local function charge(t0)
   jit.on(nodes.chunk, true)
   jit.on(order.chunk, true)
   jit.on(monotone.chunk, true)
+  jit.on(places.chunk, true)
 end
 
 local build

@@ -34,6 +34,19 @@ local function byWay(grid, points, list)
   return tris, message, way
 end
 
+-- polygonTriangulate with an outline alone of few edges sent to the prune (not the pairs), against
+-- the oracle's verdict; returns the way taken.
+local function checkPruned(points, where)
+  sweep.pairsLimit = 0
+  sweep.lastWay = nil
+  local tris, message = triangulate(points)
+  local way = sweep.lastWay
+  sweep.pairsLimit = sweep.PAIRS_ALL
+  local ok, why = oracle.agrees(points, {}, oracle.regionCrossing(points, {}), tris, message)
+  assert(ok, where .. ", the prune: " .. tostring(why))
+  return way
+end
+
 -- Checks one case against the oracle's verdict by both ways; returns the way the default took.
 local function checkBoth(points, list, where)
   local verdict = oracle.regionCrossing(points, list)
@@ -52,7 +65,7 @@ local function checkBoth(points, list, where)
 end
 
 describe("polygonTriangulate's validity check", function()
-  after_each(function() sweep.grid = true end)
+  after_each(function() sweep.grid, sweep.pairsLimit = true, sweep.PAIRS_ALL end)
 
   describe("when the grid and the sweep check the same random outlines with random holes", function()
     it("give each the oracle's verdict, and the grid takes most of them", function()
@@ -128,8 +141,11 @@ describe("polygonTriangulate's validity check", function()
         for i = 1, 2 * rng:int(4, 9) do points[i] = rng:int(0, 4) end
         local way = checkBoth(points, {}, "seed " .. seed)
         ways[way or "none"] = (ways[way or "none"] or 0) + 1
+        local pruned = checkPruned(points, "seed " .. seed) == "prune" and "pruned" or "not pruned"
+        ways[pruned] = (ways[pruned] or 0) + 1
       end
       assert.is_true(ways.pairs > CASES, tostring(ways.pairs))
+      assert.is_true(ways.pruned > CASES, tostring(ways.pruned))
       -- cases that mutants of the pairs' loop got wrong (its first form, in the place order,
       -- without its last pair; boxes meeting at a side taken as apart)
       for _, points in ipairs({ { 1,1, 2,2, 1,0, 0,4, 4,3 }, { 2,1, 1,2, 3,1, 0,0, 0,2, 2,3, 4,0 },
@@ -137,6 +153,16 @@ describe("polygonTriangulate's validity check", function()
         local way, verdict = checkBoth(points, {}, table.concat(points, ","))
         assert.are.equal("pairs", way)
         assert.are.equal("cross", verdict)
+      end
+      -- and cases that mutants of the prune's loop got wrong (found among scribbles of 0..6
+      -- sent to it: its x test with < rather than <=, its y test likewise, without its last
+      -- edge, without the last edge it tests an edge against)
+      for _, points in ipairs({ { 2,3, 3,1, 2,1, 1,2, 0,2, 1,3, 1,1, 1,3 },
+          { 5,3, 4,2, 5,4, 6,0, 1,0, 0,1, 5,5, 5,2 }, { 2,3, 4,1, 4,0, 3,1, 5,1, 1,1 },
+          { 2,0, 2,2, 3,3, 1,2, 1,2, 4,2, 3,4, 0,4, 1,1, 2,1, 2,1 }, { 6,6, 2,5, 3,5, 2,6, 1,4 },
+          { 2,2, 1,4, 0,0, 4,3, 1,3 }, { 6,0, 1,4, 3,0, 5,6, 1,4 }, { 4,2, 2,3, 4,1, 3,3, 2,3 } }) do
+        assert.are.equal("cross", oracle.regionCrossing(points, {}))
+        assert.are.equal("prune", checkPruned(points, table.concat(points, ",")))
       end
     end)
 
@@ -168,6 +194,106 @@ describe("polygonTriangulate's validity check", function()
       checkBoth({ 0,0, 20,0, 20,20, 15,20, 10,0, 5,20, 0,20 }, {}, "tip on an edge")
       -- a spike out and back along one line: (30, 10) -> (40, 10) -> (30, 10)... as a fold
       checkBoth({ 0,0, 20,0, 20,10, 40,10, 20,10, 20,20, 0,20 }, {}, "fold")
+    end)
+  end)
+
+  describe("when an outline alone has more edges, short across its width (the prune)", function()
+    -- A saw: teeth along the top from (0, 10) to (50, 10), each notch down to (2i + 1, 5), then
+    -- (50, 0) and (0, 0): 53 vertices, past the pairs' 48. A vertical line meets it twice to
+    -- four times, so the edges by their left ends each meet a few others.
+    local function saw(tipX, tipY)
+      local points = {}
+      for i = 0, 24 do
+        local x, y = 2 * i + 1, 5
+        if x == tipX then y = tipY end
+        for _, v in ipairs({ 2 * i, 10, x, y }) do points[#points + 1] = v end
+      end
+      for _, v in ipairs({ 50, 10, 50, 0, 0, 0 }) do points[#points + 1] = v end
+      return points
+    end
+    -- twice the triangles' areas, summed (integers: exact)
+    local function doubleArea(tris)
+      local sum = 0
+      for _, t in ipairs(tris) do
+        sum = sum + math.abs((t[3] - t[1]) * (t[6] - t[2]) - (t[4] - t[2]) * (t[5] - t[1]))
+      end
+      return sum
+    end
+
+    it("triangulates a saw of 53 vertices and finds a tooth through its base", function()
+      -- area: the 50 by 10 box less 25 notches of base 2 and depth 5: 500 - 25 * 5 = 375
+      local points = saw()
+      local way, verdict = checkBoth(points, {}, "saw")
+      assert.are.equal("prune", way)
+      assert.are.equal("valid", verdict)
+      assert.are.equal(2 * 375, doubleArea(triangulate(points)))
+      -- the notch at x = 25 down to y = -1: its edges from (24, 10) and to (26, 10) cross the
+      -- base y = 0 at x = 24 + 10/11 and 25 + 1/11, inside it (0 .. 50)
+      way, verdict = checkBoth(saw(25, -1), {}, "saw, a tooth through the base")
+      assert.are.equal("prune", way)
+      assert.are.equal("cross", verdict)
+      assert.same({ nil, "edges cross" }, { triangulate(saw(25, -1)) })
+      -- down to y = 0: the tip on the base, inside that edge (the oracle decides)
+      assert.are.equal("prune", (checkBoth(saw(25, 0), {}, "saw, a tip on the base")))
+      -- the last notch, at x = 49, to (49, 0): ending where no later edge begins
+      assert.are.equal("prune", (checkBoth(saw(49, 0), {}, "saw, the last tip on the base")))
+      assert.are.equal("prune", (checkBoth(saw(49, -1), {}, "saw, the last tooth through")))
+    end)
+
+    -- 49 to 260 points about the origin by angle, at radii R (1 - amp u), u uniform, rounded
+    -- to integers (repeated points, points in line, edges through vertices); half of them with
+    -- two points 2 to 6 apart swapped (most then cross), some scaled to thousandths or far out
+    local angle = rawget(math, "atan2") or math.atan
+    local function roundOutline(seed)
+      local rng = prng.new(seed)
+      local n, radius, amp = rng:int(49, 260), rng:int(20, 200), ({ 0.05, 0.2, 0.5 })[seed % 3 + 1]
+      local pts = {}
+      for i = 1, n do
+        local a, r = 2 * math.pi * (i - 1 + 0.8 * rng:float()) / n, radius * (1 - amp * rng:float())
+        local x, y = math.floor(r * math.cos(a) + 0.5), math.floor(r * math.sin(a) + 0.5)
+        pts[i] = { x, y, angle(y, x) }
+      end
+      table.sort(pts, function(a, b) return a[3] < b[3] end)
+      if seed % 2 == 1 then
+        local i, j = rng:int(1, n - 6), rng:int(2, 6)
+        pts[i], pts[i + j] = pts[i + j], pts[i]
+      end
+      local scale, offset = seed % 5 == 0 and 1e-3 or 1, seed % 7 == 0 and 2 ^ 40 or 0
+      local points = {}
+      for _, p in ipairs(pts) do
+        points[#points + 1], points[#points + 2] = p[1] * scale + offset, p[2] * scale - offset
+      end
+      return points
+    end
+
+    it("gives random round outlines the oracle's verdict, the sweep's too", function()
+      local ways, verdicts, first = {}, {}, 550000 + INDEX * 1000
+      for seed = first, first + CASES - 1 do
+        local way, verdict = checkBoth(roundOutline(seed), {}, "seed " .. seed)
+        ways[way or "none"] = (ways[way or "none"] or 0) + 1
+        verdicts[verdict] = (verdicts[verdict] or 0) + 1
+      end
+      assert.is_true((ways.prune or 0) > CASES / 2, tostring(ways.prune))
+      assert.is_true(verdicts.valid > CASES / 4 and verdicts.cross > CASES / 4,
+        ("valid %s, cross %s"):format(tostring(verdicts.valid), tostring(verdicts.cross)))
+    end)
+
+    it("is given up for the cells when its edges all start at one line", function()
+      -- a zigzag of 120 edges between x = 0 and x = 0.1 down the left of the box 0..10 x
+      -- 0..120: the edges' widths add up to about 32, 3 times the box's, but every zigzag edge
+      -- starts at x = 0 and meets the 120 others there: 7,000 tests, past twice 20 an edge
+      local points = {}
+      for i = 0, 120 do points[#points + 1], points[#points + 2] = (i % 2) * 0.1, i end
+      for _, v in ipairs({ 10, 120, 10, 0 }) do points[#points + 1] = v end
+      local way, verdict = checkBoth(points, {}, "zigzag")
+      assert.are_not.equal("prune", way)
+      assert.are.equal("valid", verdict)
+      -- the last vertex, (10, 0), moved to (-1, 60): the edge to it from (10, 120) passes x =
+      -- 0.1 at y = 120 - 60 * 9.9 / 11 = 66, through the zigzag
+      points[#points - 1], points[#points] = -1, 60
+      way, verdict = checkBoth(points, {}, "zigzag, crossed")
+      assert.are_not.equal("prune", way)
+      assert.are.equal("cross", verdict)
     end)
   end)
 

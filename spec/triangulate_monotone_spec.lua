@@ -166,10 +166,11 @@ describe("polygonTriangulate by monotone pieces", function()
       _, _, taken, declined = bySweep(polygon.polygonTriangulate, { 0,0, 10,0, 10,10, 0,10 },
         { { 4,4, 6,4, 6,6, 4,6 } })
       assert.are.equal(0, taken + declined)
-      -- the grid's check (the default on short edges) leaves no sweep to read
+      -- the prune's check (the default for an outline alone of short edges) leaves no sweep
+      -- to read
       local before = monotone.taken + monotone.declined
       assert.is_table(polygon.polygonTriangulate(shapes.noisyCircle(100, prng.new(100))))
-      assert.are.equal("grid", sweep.lastWay)
+      assert.are.equal("prune", sweep.lastWay)
       assert.are.equal(before, monotone.taken + monotone.declined)
     end)
   end)
