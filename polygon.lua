@@ -390,7 +390,9 @@ polygon.polygonClosestPoint = closest.polygonClosestPoint
 -- touch the outline or another hole at a vertex; a hole enclosing nothing (fewer than 3
 -- points, or zero area without crossing itself) is skipped
 -- @treturn[1] {table,...} triangles `{x1, y1, x2, y2, x3, y3}`, copies of input vertices, each
--- wound like `points`, none of zero area
+-- wound like `points`, none of zero area; a vertex in line with its neighbours (a straight run,
+-- or one left so as triangles are cut off) may be the corner of none, lying on a triangle's edge
+-- (so there may be fewer than n - 2)
 -- @return[2] nil
 -- @treturn[2] string why: fewer than 3 points, zero area, crossing edges (a bow-tie too), the
 -- rings that cross (`holes[2] crosses the outline`), a hole outside the polygon or inside
