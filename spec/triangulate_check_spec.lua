@@ -34,6 +34,20 @@ local function byWay(grid, points, list)
   return tris, message, way
 end
 
+-- The outline through points {x, y, angle} in order of angle, with points i and i + apart
+-- swapped when i is given (most then cross); scaled to thousandths when the seed is a multiple of
+-- 5, moved out by 2^40 when of 7.
+local function byAngle(pts, seed, i, apart)
+  table.sort(pts, function(a, b) return a[3] < b[3] end)
+  if i then pts[i], pts[i + apart] = pts[i + apart], pts[i] end
+  local scale, offset = seed % 5 == 0 and 1e-3 or 1, seed % 7 == 0 and 2 ^ 40 or 0
+  local points = {}
+  for _, p in ipairs(pts) do
+    points[#points + 1], points[#points + 2] = p[1] * scale + offset, p[2] * scale - offset
+  end
+  return points
+end
+
 -- polygonTriangulate with an outline alone of few edges sent to the prune (not the pairs), against
 -- the oracle's verdict; returns the way taken.
 local function checkPruned(points, where)
@@ -99,17 +113,7 @@ describe("polygonTriangulate's validity check", function()
           pts[#pts + 1] = { x, y, angle(y, x) }
         end
       end
-      table.sort(pts, function(a, b) return a[3] < b[3] end)
-      if seed % 2 == 1 and #pts >= 4 then
-        local i = rng:int(1, #pts - 1)
-        pts[i], pts[i + 1] = pts[i + 1], pts[i]
-      end
-      local scale, offset = seed % 5 == 0 and 1e-3 or 1, seed % 7 == 0 and 2 ^ 40 or 0
-      local points = {}
-      for _, p in ipairs(pts) do
-        points[#points + 1], points[#points + 2] = p[1] * scale + offset, p[2] * scale - offset
-      end
-      return points
+      return byAngle(pts, seed, seed % 2 == 1 and #pts >= 4 and rng:int(1, #pts - 1), 1)
     end
 
     it("gives random small outlines the oracle's verdict, the sweep's too", function()
@@ -253,17 +257,8 @@ describe("polygonTriangulate's validity check", function()
         local x, y = math.floor(r * math.cos(a) + 0.5), math.floor(r * math.sin(a) + 0.5)
         pts[i] = { x, y, angle(y, x) }
       end
-      table.sort(pts, function(a, b) return a[3] < b[3] end)
-      if seed % 2 == 1 then
-        local i, j = rng:int(1, n - 6), rng:int(2, 6)
-        pts[i], pts[i + j] = pts[i + j], pts[i]
-      end
-      local scale, offset = seed % 5 == 0 and 1e-3 or 1, seed % 7 == 0 and 2 ^ 40 or 0
-      local points = {}
-      for _, p in ipairs(pts) do
-        points[#points + 1], points[#points + 2] = p[1] * scale + offset, p[2] * scale - offset
-      end
-      return points
+      local i = seed % 2 == 1 and rng:int(1, n - 6)
+      return byAngle(pts, seed, i, i and rng:int(2, 6))
     end
 
     it("gives random round outlines the oracle's verdict, the sweep's too", function()
