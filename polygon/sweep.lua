@@ -1,8 +1,9 @@
 -- polygon/sweep.lua: whether the rings of a polygon with holes are a valid input for the
 -- triangulation (no two edges cross, no ring overlaps another, every hole inside the outline and
--- outside the other holes), pair by pair (a small outline alone), by a grid of edges or by a
--- sweep over the node rings that polygon/triangulate.lua builds. Every decision is one of
--- kernel's exact signs (through polygon/nodes.lua's tests on the nodes).
+-- outside the other holes), pair by pair (a small outline alone), by a sweep and prune (a larger
+-- outline alone of short edges), by a grid of edges or by a sweep over the node rings that
+-- polygon/triangulate.lua builds; the places where vertices meet by polygon/places.lua. Every
+-- decision is one of kernel's exact signs (through polygon/nodes.lua's tests on the nodes).
 
 local _PACKAGE = (...):match("^(.+)%.[^%.]+")
 local kernel = require(_PACKAGE .. ".kernel")
@@ -636,12 +637,12 @@ end
 -- past PAIRS_ALL: a drawn shape, a noisy circle of a few hundred vertices): a sweep and prune.
 -- The edges in the order of their left ends (read off the places' order: an edge comes with the
 -- end of lower rank), each tested against those after it that start before it ends. The tests
--- an edge takes are about the times a vertical line meets the outline, Σ|dx| over the box's
--- width: past PRUNE_LOAD the sweep's order is cheaper (noisy circles: the prune took 0.15 ms to
--- the sweep's 0.19 at 400 vertices, 0.38 to 0.23 at 500; bench/NOTES.md, session 27), and so
--- it is given up before it starts. Places stacked in a column (a tile map's edges, all on a few
--- lines) make more pairs than that estimate says: past twice PRUNE_LOAD tests an edge it is
--- given up midway, for the grid. nil when given up.
+-- an edge takes are about the times a vertical line meets the outline, the sum of |dx| over the
+-- box's width: past PRUNE_LOAD the sweep's order is cheaper (noisy circles: the prune took 0.15
+-- ms to the sweep's 0.18 at 400 vertices, 0.38 to 0.23 at 500; bench/NOTES.md, session 27), and
+-- so the prune is not begun. Places stacked in a column (edges starting at one x by the dozen)
+-- make more pairs than that estimate says: past twice PRUNE_LOAD tests an edge it is given up
+-- midway, for the grid. nil when given up.
 local PRUNE_LOAD = 20
 local function pruneCrossing(start)
   local width, k = 0, start
