@@ -56,6 +56,16 @@ if [ "$quick" != 1 ] && command -v luajit >/dev/null 2>&1; then
   [ "$rc" = 0 ] || { echo "bench.sh: bench/holes.lua failed" >&2; status=1; }
 fi
 
+# One input repeated against different inputs taken in turn, polygonTriangulate and earcut, per
+# vertex (bench/cycled.lua; full run only: about 40 s).
+cycled=$sections/cycled.md
+if [ "$quick" != 1 ] && command -v luajit >/dev/null 2>&1; then
+  { echo "## One input repeated against inputs in turn: \`luajit bench/cycled.lua\`"; echo; echo '```'
+    luajit bench/cycled.lua; rc=$?
+    echo '```'; echo; } >> "$cycled"
+  [ "$rc" = 0 ] || { echo "bench.sh: bench/cycled.lua failed" >&2; status=1; }
+fi
+
 # Lists of convex parts against the convex pair calls they need (bench/compound.lua), each ratio
 # in 16 processes (full run only: about a minute on LuaJIT, two on Lua 5.4).
 compound=$sections/compound.md
@@ -87,6 +97,7 @@ fi
   for lua in $ran; do [ -f "$sections/$lua.md" ] && cat "$sections/$lua.md"; done
   [ -f "$concave" ] && cat "$concave"
   [ -f "$holes" ] && cat "$holes"
+  [ -f "$cycled" ] && cat "$cycled"
   [ -f "$compound" ] && cat "$compound"
 } > "$out/RESULTS.md"
 rm -rf "$sections"

@@ -14,18 +14,8 @@ local shapes = require "shapes"
 local tiles = require "tiles"
 local earcut = require "earcut"
 
--- A tile map of size x size tiles, each filled with probability 0.85, its border filled: the
--- largest outline and its enclosed gaps as holes.
-local function tileMap(size)
-  local rng = prng.new(size)
-  local set = tiles.random(rng, size, size, 0.85)
-  for c = 1, size do set[1][c], set[size][c], set[c][1], set[c][size] = true, true, true, true end
-  local best
-  for _, shape in ipairs(tiles.shapes(set, 10, 0, 0)) do
-    if not best or #shape[1] > #best[1] then best = shape end
-  end
-  return best[1], best[2]
-end
+-- A tile map of size x size tiles (see tiles.level): the largest outline, its gaps as holes.
+local function tileMap(size) return tiles.level(prng.new(size), size) end
 
 -- name, and a function making points, holes
 local CASES = {
@@ -174,7 +164,8 @@ local function growth(small, large, which)
   return a and b and ("%.2f"):format(b / a) or "-"
 end
 print()
-print("cost per vertex, the largest input's over the smallest's (target: at most 2)")
+print("cost per vertex, the largest input's over the smallest's (target: at most 2), one input repeated")
+print("(the processor learns a small call repeated: inputs in turn, `luajit bench/cycled.lua`)")
 print(("%-40s %8s %8s"):format("", "LuaJIT", "Lua 5.4"))
 print(("%-40s %8s %8s"):format("noisy-circle-10000 / noisy-circle-100",
   growth("noisy-circle-100", "noisy-circle-10000", 1), growth("noisy-circle-100", "noisy-circle-10000", 2)))

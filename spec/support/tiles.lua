@@ -126,4 +126,17 @@ function tiles.shapes(set, size, ox, oy)
   return outlines
 end
 
+--- A level: a random map of size x size tiles, each filled with probability 0.85, its border
+-- filled, tiles 10 wide from (0, 0); its largest outline and the enclosed gaps as holes (for the
+-- benchmarks: bench/holes.lua's tile maps, bench/cycled.lua's).
+function tiles.level(rng, size)
+  local set = tiles.random(rng, size, size, 0.85)
+  for c = 1, size do set[1][c], set[size][c], set[c][1], set[c][size] = true, true, true, true end
+  local best
+  for _, shape in ipairs(tiles.shapes(set, 10, 0, 0)) do
+    if not best or #shape[1] > #best[1] then best = shape end
+  end
+  return best[1], best[2]
+end
+
 return tiles
