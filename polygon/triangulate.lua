@@ -415,6 +415,10 @@ end
 -- a noisy outline) meets a few cells per row where its box would hold a large share of all
 -- the nodes.
 local CELL_LOAD = 2     -- nodes per cell on average, when the grid is built
+local ONE_CELL = 40     -- a ring of at most this many nodes gets one cell: each ear test reads
+                        -- every entry in one loop, with no rows or spans to compute (small
+                        -- outlines taken in turn ran 7 to 15 % faster on LuaJIT, 4 to 5 % on
+                        -- Lua 5.4; past 40 nodes slower: bench/NOTES.md, session 28)
 local SHARED_RUN = 8    -- nodes of one cell compared pair by pair, at most (then all shared)
 local FINE = 2 ^ -30    -- cells wider than this times the largest coordinate are visited by
                         -- the triangle's span (rounding stays far below a cell); narrower
@@ -446,6 +450,7 @@ local function buildGrid(s)
   until k == s
   -- the ring has area, so its box has width and height
   cellSize = sqrt((x1 - x0) * (y1 - y0) * CELL_LOAD / count)
+  if count <= ONE_CELL then cellSize = 2 * max(x1 - x0, y1 - y0) end   -- one column, one row
   gridLeft, gridTop, gridScale = x0, y0, 1 / cellSize
   gridCols = min(floor((x1 - x0) * gridScale) + 1, count)
   gridRows = min(floor((y1 - y0) * gridScale) + 1, count)
@@ -487,12 +492,25 @@ local function buildGrid(s)
   local kept = 0
   for c = 1, cells do
     local first, last = cellStart[c], cellStart[c + 1] - 1
-    -- nodes at one place share a cell; a crowded cell is all marked shared
-    for i = first, last do
-      local j = entryNode[i]
-      if last - first >= SHARED_RUN then shared[j] = true end
-      for m = i + 1, last - first < SHARED_RUN and last or i do
-        if same(j, entryNode[m]) then shared[j], shared[entryNode[m]] = true, true end
+    if count <= ONE_CELL then
+      -- the one cell of a small ring: the nodes at another's place, from the check's circles
+      -- of twins (all of them would be marked below, and listed at every ear test)
+      for i = first, last do
+        local j = entryNode[i]
+        local t = twin[j]
+        while t ~= j and gone[t] do t = twin[t] end
+        shared[j] = t ~= j
+      end
+    else
+      -- nodes at one place share a cell; a crowded cell is all marked shared, its nodes listed
+      -- for good (marked only at their places, the nodes a drop leaves reflex and unlisted
+      -- make settle rebuild the grid: water2's five times rather than three, 14 % slower)
+      for i = first, last do
+        local j = entryNode[i]
+        if last - first >= SHARED_RUN then shared[j] = true end
+        for m = i + 1, last - first < SHARED_RUN and last or i do
+          if same(j, entryNode[m]) then shared[j], shared[entryNode[m]] = true, true end
+        end
       end
     end
     -- keep the nodes not strictly convex and those sharing a place, packed cell after cell
