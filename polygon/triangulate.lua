@@ -417,7 +417,7 @@ end
 local CELL_LOAD = 2     -- nodes per cell on average, when the grid is built
 local ONE_CELL = 40     -- a ring of at most this many nodes gets one cell: each ear test reads
                         -- every entry in one loop, with no rows or spans to compute (small
-                        -- outlines taken in turn ran 7 to 15 % faster on LuaJIT, 4 to 5 % on
+                        -- outlines taken in turn ran 5 to 15 % faster on LuaJIT, 4 to 5 % on
                         -- Lua 5.4; past 40 nodes slower: bench/NOTES.md, session 28)
 local SHARED_RUN = 8    -- nodes of one cell compared pair by pair, at most (then all shared)
 local FINE = 2 ^ -30    -- cells wider than this times the largest coordinate are visited by
