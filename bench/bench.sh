@@ -31,6 +31,17 @@ for lua in $luas; do
 done
 [ -n "$ran" ] || { echo "bench.sh: no Lua interpreter found (tried: $luas)" >&2; exit 1; }
 
+# Appends to FILE a section titled TITLE holding COMMAND's output as a code block; a failure of
+# COMMAND is reported and fails the run: section FILE TITLE COMMAND...
+section() {
+  file=$1 title=$2
+  shift 2
+  { echo "## $title"; echo; echo '```'
+    "$@"; rc=$?
+    echo '```'; echo; } >> "$file"
+  [ "$rc" = 0 ] || { echo "bench.sh: $* failed" >&2; status=1; }
+}
+
 # Triangulation and convex parts per vertex at 100 to 10,000 vertices, beside earcut (node) and
 # love.math.triangulate where installed (full run only: it takes about a minute).
 concave=$sections/concave.md
@@ -38,10 +49,8 @@ if [ "$quick" != 1 ]; then
   for lua in luajit lua5.4; do
     command -v "$lua" >/dev/null 2>&1 || continue
     love=0; [ "$lua" = luajit ] && love=1
-    { echo "## Concave shapes on $lua: \`LOVE=$love $lua bench/concave.lua\`"; echo; echo '```'
-      LOVE=$love "$lua" bench/concave.lua; rc=$?
-      echo '```'; echo; } >> "$concave"
-    [ "$rc" = 0 ] || { echo "bench.sh: $lua bench/concave.lua failed" >&2; status=1; }
+    section "$concave" "Concave shapes on $lua: \`LOVE=$love $lua bench/concave.lua\`" \
+      env LOVE=$love "$lua" bench/concave.lua
   done
 fi
 
@@ -50,20 +59,15 @@ fi
 # full run only: about a minute and a half).
 holes=$sections/holes.md
 if [ "$quick" != 1 ] && command -v luajit >/dev/null 2>&1; then
-  { echo "## Outlines with holes against earcut: \`luajit bench/holes.lua\`"; echo; echo '```'
-    luajit bench/holes.lua; rc=$?
-    echo '```'; echo; } >> "$holes"
-  [ "$rc" = 0 ] || { echo "bench.sh: bench/holes.lua failed" >&2; status=1; }
+  section "$holes" "Outlines with holes against earcut: \`luajit bench/holes.lua\`" luajit bench/holes.lua
 fi
 
 # One input repeated against different inputs taken in turn, polygonTriangulate and earcut, per
 # vertex (bench/cycled.lua; full run only: about 40 s).
 cycled=$sections/cycled.md
 if [ "$quick" != 1 ] && command -v luajit >/dev/null 2>&1; then
-  { echo "## One input repeated against inputs in turn: \`luajit bench/cycled.lua\`"; echo; echo '```'
-    luajit bench/cycled.lua; rc=$?
-    echo '```'; echo; } >> "$cycled"
-  [ "$rc" = 0 ] || { echo "bench.sh: bench/cycled.lua failed" >&2; status=1; }
+  section "$cycled" "One input repeated against inputs in turn: \`luajit bench/cycled.lua\`" \
+    luajit bench/cycled.lua
 fi
 
 # Lists of convex parts against the convex pair calls they need (bench/compound.lua), each ratio

@@ -8,6 +8,7 @@ local prng = require "prng"
 local oracle = require "oracle"
 
 local shapes = require "shapes"
+local shell = require "bench.shell"
 
 local SIZES = { 100, 1000, 10000 }
 
@@ -106,25 +107,18 @@ local function fieldsOf(command)
   return out
 end
 
-local function shell(command)
-  local ok = os.execute(command)
-  return ok == true or ok == 0
-end
-
-local dir = os.tmpname()
-os.remove(dir)
-assert(shell("mkdir -p " .. dir))
+local dir = shell.tempDir()
 export(dir)
 local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
 local earcut, love = {}, {}
-if shell("command -v node >/dev/null 2>&1") and io.open(earcutFile) then
+if shell.have("node") and io.open(earcutFile) then
   earcut = fieldsOf(("EARCUT=%s node bench/earcut.js %s"):format(earcutFile, dir))
 else
   print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
 end
 local haveLove = "command -v love >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1"
-if os.getenv("LOVE") ~= "0" and shell(haveLove) then
-  assert(shell(("cp bench/love-triangulate.lua %s/main.lua"):format(dir)))
+if os.getenv("LOVE") ~= "0" and shell.ok(haveLove) then
+  assert(shell.ok(("cp bench/love-triangulate.lua %s/main.lua"):format(dir)))
   love = fieldsOf(("xvfb-run -a love %s 2>/dev/null"):format(dir))
 else
   print("(love.math.triangulate skipped: needs love and xvfb-run)")
@@ -165,4 +159,4 @@ for _, case in ipairs(HARD) do
   local lov = l and (l[2] == "fail" and "fails" or ("%s tris, %.1e"):format(l[4], tonumber(l[5]))) or "-"
   print(("%-19s %-22s %-22s %-22s%s"):format(name, mine, theirs, lov, valid and "" or "  (invalid input)"))
 end
-shell("rm -rf " .. dir)
+shell.ok("rm -rf " .. dir)

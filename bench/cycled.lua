@@ -15,6 +15,7 @@ local polygon = require "polygon"
 local prng = require "prng"
 local shapes = require "shapes"
 local tiles = require "tiles"
+local shell = require "bench.shell"
 
 local LAP = 50000      -- vertices in a lap of a case's inputs, at least (16 noisy circles of 100
                        -- vertices in turn ran 0.31 us a vertex, 64 of them 0.48, 256 0.53)
@@ -98,27 +99,14 @@ elseif mode == "export" then
   return
 end
 
-local function shell(command)
-  local ok = os.execute(command)
-  return ok == true or ok == 0
-end
-local function fields(command)
-  local pipe = assert(io.popen(command))
-  local words = {}
-  for word in pipe:read("*a"):gmatch("%S+") do words[#words + 1] = word end
-  pipe:close()
-  return words
-end
-
+local fields = shell.words
 local self = arg[-1] or "lua"
 local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
-local withEarcut = shell("command -v node >/dev/null 2>&1") and io.open(earcutFile) ~= nil
+local withEarcut = shell.have("node") and io.open(earcutFile) ~= nil
 local dir
 if withEarcut then
-  dir = os.tmpname()
-  os.remove(dir)
-  assert(shell("mkdir -p " .. dir))
-  assert(shell(("%s bench/cycled.lua export %s"):format(self, dir)))
+  dir = shell.tempDir()
+  assert(shell.ok(("%s bench/cycled.lua export %s"):format(self, dir)))
 else
   print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
 end
@@ -146,4 +134,4 @@ for _, pair in ipairs({ { "noisy-100", "noisy-10000" }, { "tiles-8", "tiles-120"
   local function growth(w) return small[w] and large[w] and ("%.2f"):format(large[w] / small[w]) or "-" end
   print(("%-26s %6s %6s"):format(pair[2] .. " / " .. pair[1], growth(1), growth(2)))
 end
-if dir then shell("rm -rf " .. dir) end
+if dir then shell.ok("rm -rf " .. dir) end

@@ -13,6 +13,7 @@ local prng = require "prng"
 local shapes = require "shapes"
 local tiles = require "tiles"
 local earcut = require "earcut"
+local shell = require "bench.shell"
 
 -- A tile map of size x size tiles (see tiles.level): the largest outline, its gaps as holes.
 local function tileMap(size) return tiles.level(prng.new(size), size) end
@@ -94,24 +95,10 @@ elseif mode == "export" then
   return
 end
 
-local function run(command)
-  local pipe = assert(io.popen(command))
-  local fields = {}
-  for word in pipe:read("*a"):gmatch("%S+") do fields[#fields + 1] = word end
-  pipe:close()
-  return fields
-end
-local function shell(command)
-  local ok = os.execute(command)
-  return ok == true or ok == 0
-end
-local function have(command) return shell("command -v " .. command .. " >/dev/null 2>&1") end
-
-local dir = os.tmpname()
-os.remove(dir)
-assert(shell("mkdir -p " .. dir))
+local run, have = shell.words, shell.have
+local dir = shell.tempDir()
 local self = arg[-1] or "lua"
-assert(shell(("%s bench/holes.lua export %s"):format(self, dir)))
+assert(shell.ok(("%s bench/holes.lua export %s"):format(self, dir)))
 local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
 local warmEarcut = {}
 local withEarcut = have("node") and io.open(earcutFile) ~= nil
@@ -171,5 +158,5 @@ print(("%-40s %8s %8s"):format("noisy-circle-10000 / noisy-circle-100",
   growth("noisy-circle-100", "noisy-circle-10000", 1), growth("noisy-circle-100", "noisy-circle-10000", 2)))
 print(("%-40s %8s %8s"):format("tiles-120 / tiles-8 (holes included)", growth("tiles-8", "tiles-120", 1),
   growth("tiles-8", "tiles-120", 2)))
-shell("rm -rf " .. dir)
+shell.ok("rm -rf " .. dir)
 if failed then os.exit(1) end
