@@ -114,9 +114,13 @@ print(("polygonTriangulate on %s and earcut: ns a vertex, one input repeated aga
   :format(self))
 print(("%-12s %7s %6s | %9s %9s %6s | %9s %9s %6s | %s"):format("input", "n", "inputs", "repeated",
   "in turn", "slower", "earcut", "in turn", "slower", "ratio in turn"))
-local perVertex = {}
+local perVertex, failed = {}, false
 for _, case in ipairs(CASES) do
   local ours = fields(("%s bench/cycled.lua run %s"):format(self, case))
+  if ours[1] ~= case then   -- a refusal or an error: no time
+    io.stderr:write(("bench/cycled.lua: %s on %s: %s\n"):format(case, self, table.concat(ours, " ")))
+    failed = true
+  end
   local theirs = withEarcut and fields(("EARCUT=%s node bench/earcut-cycled.js %s/%s.json"):format(
     earcutFile, dir, case)) or {}
   local a, b, n, count = tonumber(ours[2]), tonumber(ours[3]), tonumber(ours[4]), tonumber(ours[5])
@@ -128,10 +132,11 @@ for _, case in ipairs(CASES) do
   perVertex[case] = { a, b }
 end
 print()
-print("cost per vertex, the largest input's over the smallest's (LuaJIT: repeated, in turn)")
+print(("cost per vertex, the largest input's over the smallest's (%s: repeated, in turn)"):format(self))
 for _, pair in ipairs({ { "noisy-100", "noisy-10000" }, { "tiles-8", "tiles-120" } }) do
   local small, large = perVertex[pair[1]], perVertex[pair[2]]
   local function growth(w) return small[w] and large[w] and ("%.2f"):format(large[w] / small[w]) or "-" end
   print(("%-26s %6s %6s"):format(pair[2] .. " / " .. pair[1], growth(1), growth(2)))
 end
 if dir then shell.ok("rm -rf " .. dir) end
+if failed then os.exit(1) end
