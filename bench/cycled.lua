@@ -1,8 +1,8 @@
 -- The cost per vertex of one input triangulated again and again (as bench/holes.lua's warm
 -- column times it) against that of different inputs of its kind and size taken in turn (as a
 -- level load meets its outlines): polygonTriangulate on LuaJIT, and earcut in node likewise.
--- Noisy circles of 30 to 10,000 vertices and tile maps of 8 to 120 tiles a side; the first
--- input of each size bench/holes.lua has is its own. The processor learns the branches of a
+-- Noisy circles of 30 to 10,000 vertices and tile maps of 8 to 120 tiles a side; at the sizes
+-- bench/holes.lua has, the first input is its own. The processor learns the branches of a
 -- call repeated, up to some thousands of vertices' worth, so a small input repeated runs faster
 -- per vertex than inputs taken in turn, and so does a lap of a few small inputs: each case
 -- takes as many inputs as hold LAP vertices (16 at least). Past that size the two ways agree
@@ -23,8 +23,8 @@ local FEWEST = 16      -- inputs of a case, at least
 local ROUNDS = 4       -- timed rounds of each way, the two ways alternating
 local ROUND = 0.2      -- seconds a round runs, at least (whole laps of the inputs)
 local WARM = 0.5       -- seconds of laps before the rounds (LuaJIT compiles)
--- noisy-30, noisy-300 and tiles-20 besides bench/holes.lua's sizes: where the ratio to earcut
--- falls past 3 (bench/NOTES.md, session 29)
+-- noisy-30, noisy-300 and tiles-20 besides bench/holes.lua's sizes: the small sizes, where the
+-- ratio to earcut passes 3 (bench/NOTES.md, session 29)
 local CASES = { "noisy-30", "noisy-100", "noisy-300", "noisy-1000", "noisy-10000",
   "tiles-8", "tiles-20", "tiles-40", "tiles-120" }
 

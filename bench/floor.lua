@@ -1,11 +1,13 @@
 -- bench/floor.lua: polygonTriangulate against the plainest ear clipping Lua can run, on small
--- outlines, to show how much of a small call's time any triangulator in Lua pays. The bare
--- clipper below takes rounded signs, checks nothing, knows no holes, ties or repeated points, and
--- writes one flat array of vertex numbers (no tables a triangle): not a triangulator to use, a
--- floor to measure against. Its ear test reads every vertex of the ring, as earcut's does below
--- 80 vertices. Both take the same noisy circles, different ones in turn (as bench/cycled.lua's
--- "in turn" column: as many as hold 50,000 vertices), in alternating rounds; ns a vertex, the
--- best of each. These are bench/cycled.lua's noisy-30 and noisy-100: earcut's times are there.
+-- outlines: a rough floor for any triangulator written in Lua at these sizes. The bare clipper
+-- below takes floating-point orientation tests (not exact), checks nothing, knows no holes, ties
+-- or repeated points, and writes one flat array of vertex numbers (no tables a triangle): not a
+-- triangulator to use, a floor to measure against. Its ear test reads every vertex of the ring,
+-- as earcut's does up to 80 vertices (past that earcut hashes its vertices, and this clipper's
+-- cost, growing with the square of the size, is no floor any more). Both take the same noisy
+-- circles, bench/cycled.lua's noisy-30 and noisy-100 (earcut's times on them are there),
+-- different ones in turn, after 0.5 s of laps, in alternating rounds; ns a vertex, the best of
+-- each.
 -- From the repository root: `luajit bench/floor.lua` (any Lua): each size in a process of its
 -- own (LuaJIT's traces for one size served the next one worse: noisy-100 took 600 ns a vertex
 -- after noisy-30 in one process, 450 alone); `luajit bench/floor.lua 100`: one size, here.
@@ -19,6 +21,7 @@ local SIZES = { 30, 100 }
 local LAP = 50000     -- vertices of a lap of the inputs, at least
 local ROUNDS = 5      -- rounds of each, alternating
 local ROUND = 0.2     -- seconds a round runs, at least
+local WARM = 0.5      -- seconds of laps of each before the rounds (LuaJIT compiles), as cycled.lua
 
 local min, max = math.min, math.max
 local X, Y, nextV, prevV = {}, {}, {}, {}
@@ -74,8 +77,14 @@ local function bareClip(pts)
   return written / 3
 end
 
+-- One call of f on each input; the triangles made, counted (the checksum that keeps the calls).
 local function lap(inputs, f)
-  for i = 1, #inputs do f(inputs[i]) end
+  local made = 0
+  for i = 1, #inputs do
+    local r = f(inputs[i])
+    made = made + (type(r) == "table" and #r or r)
+  end
+  return made
 end
 
 local size = tonumber(arg[1])
@@ -104,14 +113,19 @@ do
   until #inputs * size >= LAP
   local best = { math.huge, math.huge }
   local ways = { bareClip, polygon.polygonTriangulate }
-  for _, f in ipairs(ways) do lap(inputs, f) end
+  local made = 0
+  for _, f in ipairs(ways) do
+    local began = os.clock()
+    repeat made = made + lap(inputs, f) until os.clock() - began > WARM
+  end
   for _ = 1, ROUNDS do
     for w, f in ipairs(ways) do
       local laps, began = 0, os.clock()
-      repeat lap(inputs, f); laps = laps + 1 until os.clock() - began > ROUND
+      repeat made = made + lap(inputs, f); laps = laps + 1 until os.clock() - began > ROUND
       best[w] = min(best[w], (os.clock() - began) / (laps * #inputs * size) * 1e9)
     end
   end
+  assert(made > 0)
   print(("noisy-%-5d %5d inputs  bare %5.0f  polygonTriangulate %5.0f  ratio %.1f")
     :format(size, #inputs, best[1], best[2], best[2] / best[1]))
 end
