@@ -388,7 +388,8 @@ polygon.polygonClosestPoint = closest.polygonClosestPoint
 -- @tparam table points flat array, either winding
 -- @tparam[opt] {table,...} holes flat arrays inside the polygon, either winding; a hole may
 -- touch the outline or another hole at a vertex; a hole enclosing nothing (fewer than 3
--- points, or zero area without crossing itself) is skipped
+-- points, or zero area without crossing itself) is skipped; one of zero area crossing itself
+-- (two edges crossing, or a figure eight whose loops cancel, touching itself) is refused
 -- @treturn[1] {table,...} triangles `{x1, y1, x2, y2, x3, y3}`, copies of input vertices, each
 -- wound like `points`, none of zero area; a vertex in line with its neighbours (a straight run,
 -- or one left so as triangles are cut off) may be the corner of none, lying on a triangle's edge

@@ -898,6 +898,7 @@ function M.plainSweep()
 end
 
 local function sweepCrossing(starts)
+  keptFirst, keptEdge = nil, nil   -- (a hole of zero area may have been checked alone before)
   placeOrder, placeCount, rank = sortPlaces(starts, capacity)
   touchedAt = {}
   local crossing

@@ -920,6 +920,22 @@ local function triangulate(fname, points, holes, checkOnly)
   return tris, why
 end
 
+-- Whether the ring at node `first`, a hole of zero area, crosses itself: where two edges cross,
+-- or where its vertices meet or one lies inside an edge and the ring passes through in a crossing
+-- order (a figure eight whose loops are wound against each other and cancel, slits from one
+-- point visited out of their turn around it), as the check tests an outline. A ring along one
+-- vertical line (no width for the check's sort) cannot; nor can any ring along one line, which
+-- the check passes (a sliver folded flat).
+local function flatHoleCrosses(first)
+  if anyCrossing({ first }) then return true end
+  local x0, x1, k = huge, -huge, first
+  repeat
+    x0, x1 = min(x0, nodeX[k]), max(x1, nodeX[k])
+    k = nextNode[k]
+  until k == first
+  return x1 > x0 and ringsTrouble({ first }) ~= nil
+end
+
 -- triangulate's work, on arguments it has checked.
 function build(points, n, holes, checkOnly)
   turn = areaSign(points, n)
@@ -955,7 +971,7 @@ function build(points, n, holes, checkOnly)
       local first = linkRing(hole, m, firstId, (s > 0) == (turn > 0), h + 1)
       if s ~= 0 then
         starts[#starts + 1] = first
-      elseif anyCrossing({ first }) then
+      elseif flatHoleCrosses(first) then
         return nil, ("holes[%d] crosses itself"):format(h)
       end
     end

@@ -176,6 +176,50 @@ describe("polygonTriangulate", function()
     end)
   end)
 
+  -- A hole of zero area takes nothing away and is skipped, unless it crosses itself: where two
+  -- edges cross, or where it touches itself and passes through in a crossing order. Only the
+  -- first was looked for, and the others were skipped as enclosing nothing.
+  describe("when a hole has zero area", function()
+    local BIG = { 0, 0, 100, 0, 100, 100, 0, 100 }
+
+    local function refused(hole)
+      local tris, message = triangulate(BIG, { hole })
+      local parts, partsMessage = convexParts(BIG, { hole })
+      assert.is_nil(tris)
+      assert.is_nil(parts)
+      assert.are.equal("holes[1] crosses itself", message)
+      assert.are.equal(message, partsMessage)
+    end
+
+    it("skips one that does not cross itself: slits in turn around a point, a sliver", function()
+      -- slits east, north, west, south of (50, 50), in that turn: the square's 2 triangles
+      local tris = triangulate(BIG, { { 50,50, 60,50, 50,50, 50,60, 50,50, 40,50, 50,50, 50,40 } })
+      assert.are.equal(2, #tris)
+      assertPieces(BIG, {}, tris)
+      assert.are.equal(2, #triangulate(BIG, { { 20,20, 40,40, 30,30 } }))   -- folded flat
+    end)
+
+    it("refuses slits visited out of their turn around the point", function()
+      -- east, west, north, south: the visit from east to west and the one from north to south
+      -- cross at (50, 50)
+      refused({ 50,50, 60,50, 50,50, 40,50, 50,50, 50,60, 50,50, 50,40 })
+    end)
+
+    it("refuses a figure eight whose loops cancel", function()
+      -- loops (50,50) (60,40) (60,60) and (50,50) (40,40) (40,60): twice their areas +200 and
+      -- -200 (shoelace: -1000 + 1200 + 0 and 0 + 800 - 1000); at (50, 50) the edges in from
+      -- (60,60) at 45 degrees and from (40,60) at 135 come one after the other
+      refused({ 50,50, 60,40, 60,60, 50,50, 40,40, 40,60 })
+    end)
+
+    it("refuses one whose vertex lies inside its own edge, its loops wound against each other", function()
+      -- twice the area: -900 - 106 + 404 - 248 + 850 = 0; (64,52) lies on the edge from
+      -- (50,50) to (71,53) (both steps of slope 1/7), and the loops on either side of it have
+      -- twice the areas +2 and -2
+      refused({ 50,50, 71,53, 73,53, 64,52, 70,53 })
+    end)
+  end)
+
   describe("when given bad arguments", function()
     it("raises errors naming the function and argument", function()
       assert.has_error(function() triangulate("x") end,
