@@ -13,6 +13,7 @@ local oracle = require "oracle"
 local prng = require "prng"
 local holes = require "holes"
 local tiles = require "tiles"
+local answers = require "answers"
 
 local triangulate, convexParts = polygon.polygonTriangulate, polygon.polygonConvexParts
 
@@ -28,30 +29,6 @@ local function firstSeed()
   return 280000 + INDEX * 3000
 end
 
--- What the message must name for each kind of invalid input.
-local EXPECTED = {
-  cross = { "cross" },
-  outside = { "outside" },
-  inside = { "inside" },
-  degenerate = { "zero area", "cross" },
-}
-
-local function describeCase(points, list)
-  local parts = {}
-  for h, hole in ipairs(list) do parts[h] = "{" .. table.concat(hole, ",") .. "}" end
-  return "{" .. table.concat(points, ",") .. "}, {" .. table.concat(parts, ",") .. "}"
-end
-
--- Asserts that a valid case's triangles and parts cover it exactly (oracle.checkCover).
-local function assertCovered(points, list, tris, message, parts, partsMessage, where)
-  assert(tris, where .. " refused: " .. tostring(message))
-  local ok, why = oracle.checkCover(points, list, tris)
-  assert(ok, where .. " triangles: " .. tostring(why))
-  assert(parts, where .. " parts refused: " .. tostring(partsMessage))
-  ok, why = oracle.checkCover(points, list, parts, true)
-  assert(ok, where .. " parts: " .. tostring(why))
-end
-
 describe("polygonTriangulate and polygonConvexParts with holes", function()
   describe("when given random outlines with random holes", function()
     it("cover every valid one exactly and refuse every invalid one, naming the trouble", function()
@@ -64,16 +41,8 @@ describe("polygonTriangulate and polygonConvexParts with holes", function()
         seen[kind] = (seen[kind] or 0) + 1
         local tris, message = triangulate(points, list)
         local parts, partsMessage = convexParts(points, list)
-        local where = ("seed %d (%s, %s): %s"):format(seed, kind, verdict, describeCase(points, list))
-        if verdict == "valid" or (verdict == "unknown" and tris) then
-          assertCovered(points, list, tris, message, parts, partsMessage, where)
-        elseif verdict ~= "unknown" then
-          assert(tris == nil and parts == nil, where .. " accepted")
-          assert(message == partsMessage, where)
-          local named = false
-          for _, word in ipairs(EXPECTED[verdict]) do named = named or message:find(word) ~= nil end
-          assert(named, where .. " message: " .. message)
-        end
+        local where = ("seed %d (%s, %s): %s"):format(seed, kind, verdict, answers.describe(points, list))
+        answers.check(points, list, verdict, tris, message, parts, partsMessage, where)
       end
       -- the cases are of every kind, most of them valid, and invalid ones of each sort came up
       assert.is_true(seen.valid > CASES / 2, tostring(seen.valid))
@@ -99,12 +68,9 @@ describe("polygonTriangulate and polygonConvexParts with holes", function()
         local tris, message = triangulate(points, list)
         local parts, partsMessage = convexParts(points, list)
         sweep.grid = true
-        local how = ("%s, %s, grid %s: %s"):format(where, verdict, tostring(grid), describeCase(points, list))
-        if verdict == "valid" then
-          assertCovered(points, list, tris, message, parts, partsMessage, how)
-        elseif verdict ~= "unknown" then
-          assert(tris == nil and parts == nil, how .. " accepted")
-        end
+        local how = ("%s, %s, grid %s: %s"):format(where, verdict, tostring(grid),
+          answers.describe(points, list))
+        answers.check(points, list, verdict, tris, message, parts, partsMessage, how)
       end
       return verdict
     end
