@@ -214,8 +214,12 @@ local function noteBelow(s, below, above)
   if rank[v] ~= leftRank[r] then return end
   if below and nodeRing[below] == r and rank[sweepLeft[below]] == rank[v] then return end
   ringBelow[r] = below or false
-  -- an edge along s, on either side of it in the order, leaves the order there undecided
-  if alongside(below, s) or (above and nodeRing[above] ~= r and alongside(above, s)) then
+  -- an edge along s, on either side of it in the order, leaves the order there undecided; so
+  -- does an edge along the edge below, right under it: two edges running along each other (a
+  -- spike out of the outline, two parts of it meeting along a line), in an order not known
+  -- here, one of them with the inside above it and one with the outside
+  if alongside(below, s) or (above and nodeRing[above] ~= r and alongside(above, s))
+    or (below and alongside(downEdge[below], below)) then
     ringStart[r] = 0
   elseif not below then
     ringStart[r] = -1

@@ -619,4 +619,41 @@ describe("polygonTriangulate's validity check", function()
       end
     end)
   end)
+
+  -- The sweep places a hole by the edge just below its leftmost place: inside when that edge has
+  -- the inside above it. Two edges running along each other, one each way, have the inside on
+  -- opposite sides; which of them the order puts nearer the hole is not known there, so such a
+  -- pair leaves the hole to the crossing rule. Taking the nearer one as it came placed a hole
+  -- above a spike out of a square inside (the ear clipping then refused it: "edges overlap or
+  -- cross"), and one inside an outline whose two parts meet along a line outside.
+  describe("when the edge below a hole runs along another edge", function()
+    it("places the hole by the crossing rule, both ways", function()
+      -- a square with a spike out along y = 50 to (150, 50) and back; triangles above and below
+      -- the spike, outside the square
+      local spiked = { 0,0, 100,0, 100,50, 150,50, 100,50, 100,100, 0,100 }
+      for _, hole in ipairs({ { 120,55, 130,55, 125,60 }, { 120,45, 125,40, 130,45 },
+          { 110,55, 140,55, 140,60, 110,60 } }) do
+        local _, verdict = checkBoth(spiked, { hole }, "above or below a spike")
+        assert.are.equal("outside", verdict)
+        for _, grid in ipairs({ true, false }) do
+          local tris, message = byWay(grid, spiked, { hole })
+          assert.is_nil(tris)
+          assert.are.equal("holes[1] is outside the polygon", message)
+        end
+      end
+      -- an outline of petals about (50, 50), two of them meeting along the ray from there
+      -- through (31, 88) and (30, 90) (its edges from (31, 88) back to the centre and from the
+      -- centre out to (30, 90) run along each other), a hole in the petal above the ray touching
+      -- the centre: inside (its point (50.5, 55.2) has winding number 1), the oracle undecided
+      local petals = { 50,50, 80,35, 69,50, 50,50, 74,62, 68,68, 50,50, 65,65, 68,86, 50,63, 31,88,
+        50,50, 30,90, 33,67 }
+      local hole = { 50,50, 53,56, 50,55, 47,56 }
+      checkBoth(petals, { hole }, "petals meeting along a ray")
+      for _, grid in ipairs({ true, false }) do
+        local tris = byWay(grid, petals, { hole })
+        assert.is_truthy(tris)
+        assert.is_true((oracle.checkCover(petals, { hole }, tris)))
+      end
+    end)
+  end)
 end)
