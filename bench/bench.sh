@@ -63,13 +63,13 @@ if [ "$quick" != 1 ] && command -v luajit >/dev/null 2>&1; then
 fi
 
 # One input repeated against different inputs taken in turn, polygonTriangulate and earcut, per
-# vertex (bench/cycled.lua), and small outlines against a bare ear clipper (bench/floor.lua; full
-# run only: about a minute and 15 s).
+# vertex (bench/cycled.lua), and small inputs against a bare ear clipper and earcut
+# (bench/floor.lua; full run only: about a minute and 30 s).
 cycled=$sections/cycled.md
 if [ "$quick" != 1 ] && command -v luajit >/dev/null 2>&1; then
   section "$cycled" "One input repeated against inputs in turn: \`luajit bench/cycled.lua\`" \
     luajit bench/cycled.lua
-  section "$cycled" "Small outlines against a bare ear clipper: \`luajit bench/floor.lua\`" \
+  section "$cycled" "Small inputs against a bare ear clipper: \`luajit bench/floor.lua\`" \
     luajit bench/floor.lua
 fi
 
