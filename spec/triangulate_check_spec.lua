@@ -21,8 +21,7 @@ local triangulate = polygon.polygonTriangulate
 
 local JIT = rawget(_G, "jit") ~= nil
 local CASES = JIT and 300 or 600
-local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
-  ["Lua 5.4"] = 4 })[_VERSION] or 5
+local INDEX = require "seeds"   -- this interpreter's range of seeds
 
 -- polygonTriangulate by one way: the triangles or nil, the message, and the way taken.
 local function byWay(grid, points, list)

@@ -20,9 +20,7 @@ local triangulate, convexParts = polygon.polygonTriangulate, polygon.polygonConv
 local JIT = rawget(_G, "jit") ~= nil
 local CASES = JIT and 1200 or 2500   -- this interpreter's share
 
--- The interpreter's index, for its own range of seeds: LuaJIT 0, then Lua 5.1 to 5.4.
-local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
-  ["Lua 5.4"] = 4 })[_VERSION] or 5
+local INDEX = require "seeds"   -- this interpreter's range of seeds
 
 -- The first of the interpreter's random cases (apart by more than CASES).
 local function firstSeed()

@@ -15,8 +15,7 @@ local shapes = require "shapes"
 
 local JIT = rawget(_G, "jit") ~= nil
 local CASES = JIT and 1500 or 3000
-local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
-  ["Lua 5.4"] = 4 })[_VERSION] or 5
+local INDEX = require "seeds"   -- this interpreter's range of seeds
 
 -- fn(points, holes) with the sweep forced: its answers, and how many calls monotone.lua took
 -- and left to ear clipping.

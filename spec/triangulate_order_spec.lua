@@ -14,8 +14,7 @@ local holes = require "holes"
 local shapes = require "shapes"
 
 local JIT = rawget(_G, "jit") ~= nil
-local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
-  ["Lua 5.4"] = 4 })[_VERSION] or 5
+local INDEX = require "seeds"   -- this interpreter's range of seeds
 
 -- Runs f with blocks of `size` entries, and puts the size back even when f fails.
 local function withBlocks(size, f)

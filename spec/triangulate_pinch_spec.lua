@@ -16,10 +16,8 @@ local answers = require "answers"
 
 local triangulate, convexParts = polygon.polygonTriangulate, polygon.polygonConvexParts
 
-local JIT = rawget(_G, "jit") ~= nil
 local CASES = 150   -- a kind, on this interpreter
-local INDEX = JIT and 0 or ({ ["Lua 5.1"] = 1, ["Lua 5.2"] = 2, ["Lua 5.3"] = 3,
-  ["Lua 5.4"] = 4 })[_VERSION] or 5
+local INDEX = require "seeds"   -- this interpreter's range of seeds
 
 -- Runs CASES cases of one kind and checks each (spec/support/answers.lua); returns the count
 -- of each verdict, and of the undecided cases whose pieces came back (`covered`).
