@@ -34,8 +34,8 @@ end
 -- leaving less those reaching, which must be -1, 0 or 1 (two edges leaving in one direction,
 -- none reaching: the region between them is inside one and outside the other); past that
 -- their order across the direction is not known there (a slit, a bridge, a spike along an
--- edge): one edge each way may go in either order (each is tried), more leave the place
--- untested. An entry is 2k for the edge from node k to its
+-- edge): one edge each way may go in either order, which alternation decides (below); three
+-- or more leave the place untested. An entry is 2k for the edge from node k to its
 -- successor, 2k + 1 for the edge from its predecessor; an edge f holding the place inside is
 -- chain k = capacity + f, its ends f (before) and f's successor (after).
 local placeX, placeY        -- the place being tested, for byAngle
@@ -60,8 +60,6 @@ end
 
 -- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
 -- `touched` holding it inside (or nil), cross or overlap there (see above): chainsCross.
-local TIED_PAIRS = 4      -- pairs of edges along one another (both ways) at a place, at most,
-                        -- whose 2^pairs orders are tried; past that the place is not tested
 
 -- Whether entries[1..count], sorted by angle, alternate in and out and nest like brackets.
 local open = {}   -- alternateAndNest's open brackets: read only up to its depth
@@ -121,21 +119,30 @@ function M.chainsCross(placeOrder, first, last, touched)
     if runEnd == at + 1 then tiedCount = tiedCount + 1; tied[tiedCount] = at end   -- either order
     at = runEnd + 1
   end
-  if tiedCount > TIED_PAIRS then return false end
-  for orders = 0, 2 ^ tiedCount - 1 do   -- bit t of orders: swap the t-th tied pair
-    local swapped = orders
-    for t = 1, tiedCount do
-      local j = tied[t]
-      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
-      swapped = (swapped - swapped % 2) / 2
+  if tiedCount == 0 then return not alternateAndNest(entries, count) end
+  -- Alternation fixes every entry's kind by its position, up to one flip of them all: (j +
+  -- entries[j]) % 2 is one number for every j. The entries not in a tied pair say which, or no
+  -- order alternates; each tied pair (one edge each way) then has the one order that gives its
+  -- first position the kind it needs. So of the 2^pairs orders at most two alternate: those are
+  -- tested, and only when no entry outside the pairs fixes the flip, both.
+  local parity, t = -1, 1
+  local j = 1
+  while j <= count do
+    if t <= tiedCount and tied[t] == j then
+      t, j = t + 1, j + 2
+    else
+      local p = (j + entries[j]) % 2
+      if parity < 0 then parity = p elseif p ~= parity then return true end
+      j = j + 1
+    end
+  end
+  for flip = 0, parity < 0 and 1 or 0 do
+    local want = parity < 0 and flip or parity
+    for g = 1, tiedCount do
+      j = tied[g]
+      if (j + entries[j]) % 2 ~= want then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
     end
     if alternateAndNest(entries, count) then return false end
-    swapped = orders
-    for t = 1, tiedCount do
-      local j = tied[t]
-      if swapped % 2 == 1 then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
-      swapped = (swapped - swapped % 2) / 2
-    end
   end
   return true
 end

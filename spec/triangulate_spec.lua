@@ -157,6 +157,24 @@ describe("polygonTriangulate", function()
       assert.are.equal("edges cross", message)
     end)
 
+    it("returns nil and a message for slits from one point visited out of their turn", function()
+      -- a square with a slit in from the west to (50, 50), then slits north, east, north-east
+      -- and south, each out and back: five pairs of edges along one another at (50, 50), each
+      -- pair in either order. Clockwise (y up) around the point the arms lie W, N, NE, E, S;
+      -- the visit from N to E holds NE between its ends and the one from NE to S does not, so
+      -- the two cross there in every order (four pairs were the most tested before)
+      local points = { 0,0, 100,0, 100,100, 0,100, 0,50, 50,50, 50,80, 50,50, 80,50, 50,50,
+        70,70, 50,50, 50,20, 50,50, 0,50 }
+      local tris, message = triangulate(points)
+      assert.is_nil(tris)
+      assert.are.equal("edges cross", message)
+      assert.are.same({ nil, "edges cross" }, { convexParts(points) })
+      -- visited in their turn, N, NE, E, S, they nest: the square's 2 triangles
+      local inTurn = { 0,0, 100,0, 100,100, 0,100, 0,50, 50,50, 50,80, 50,50, 70,70, 50,50,
+        80,50, 50,50, 50,20, 50,50, 0,50 }
+      assertPieces(inTurn, {}, assert(triangulate(inTurn)))
+    end)
+
     it("returns nil and a message for a hole outside", function()
       local tris, message = triangulate(FRAME, { { 40, 10, 50, 10, 50, 20 } })
       assert.is_nil(tris)
@@ -203,6 +221,12 @@ describe("polygonTriangulate", function()
       -- east, west, north, south: the visit from east to west and the one from north to south
       -- cross at (50, 50)
       refused({ 50,50, 60,50, 50,50, 40,50, 50,50, 50,60, 50,50, 50,40 })
+    end)
+
+    it("refuses five slits visited out of their turn", function()
+      -- as the outline's slits above, with a fifth, west: N, E, NE, S, W; the visits from N to
+      -- E and from NE to S cross at (50, 50)
+      refused({ 50,50, 50,80, 50,50, 80,50, 50,50, 70,70, 50,50, 50,20, 50,50, 20,50 })
     end)
 
     it("refuses a figure eight whose loops cancel", function()
