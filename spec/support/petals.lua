@@ -110,8 +110,47 @@ local function zeroHole(rng, cx, cy)
   return hole
 end
 
+-- The slits of kind 9: out from (ax, ay) to each arm's end and back, in the arms' order,
+-- appended to `points`.
+local function slitsFrom(ax, ay, arms, points)
+  for _, arm in ipairs(arms) do
+    points[#points + 1], points[#points + 2] = ax, ay
+    points[#points + 1], points[#points + 2] = ax + arm[1], ay + arm[2]
+  end
+  return points
+end
+
+local atan2 = rawget(math, "atan2") or math.atan   -- (Lua 5.3 and 5.4: atan takes y, x)
+
+local function gcd(a, b)
+  while b ~= 0 do a, b = b, a % b end
+  return a
+end
+
+-- `count` whole vectors of up to 30 * s a side in different directions, none due west, by angle
+-- clockwise (y up) from due west, or shuffled.
+local function arms(rng, count, shuffled, s)
+  local list, seen = {}, {}
+  while #list < count do
+    local x, y = rng:int(-30, 30), rng:int(-30, 30)
+    local g = gcd(math.abs(x), math.abs(y))
+    local key = g > 0 and (x / g) .. "," .. (y / g)
+    if key and not seen[key] and not (y == 0 and x < 0) then
+      seen[key] = true
+      list[#list + 1] = { x * s, y * s, atan2(y, x) }
+    end
+  end
+  table.sort(list, function(p, q) return p[3] > q[3] end)
+  for i = shuffled and #list or 0, 2, -1 do
+    local j = rng:int(1, i)
+    list[i], list[j] = list[j], list[i]
+  end
+  return list
+end
+
 petals.KINDS = { "pinched", "holes meeting", "holes at the outline", "holes at its pinch",
-  "pinched on rays", "holes meeting on rays", "holes at its pinch on rays", "a hole of zero area" }
+  "pinched on rays", "holes meeting on rays", "holes at its pinch on rays", "a hole of zero area",
+  "slits from one point" }
 
 --- A random case of kind `kind` (an index into petals.KINDS): an outline, a list of holes.
 function petals.case(rng, kind)
@@ -133,6 +172,20 @@ function petals.case(rng, kind)
     points = { 0, 0, 100 * s, 0, 100 * s, 100 * s, 0, 100 * s, 0, ay }
     for _, w in ipairs(wedges(rng, rng:int(1, 4), -pi / 2, pi)) do
       list[#list + 1] = petal(rng, 0, ay, w[1], w[2], 5 * s, 40 * s)
+    end
+  elseif kind == 9 then
+    -- 2 to 7 slits out from the apex and back, in their turn around it or shuffled (then the
+    -- ring may cross itself there): in an outline, which comes in along a slit of its own from
+    -- the square's left side and goes back along it, or as a hole of zero area in the square
+    local shuffled = rng:int(0, 1) == 1
+    if rng:int(0, 1) == 1 then
+      points = { 0, 0, 100 * s, 0, 100 * s, 100 * s, 0, 100 * s, 0, ay }
+      slitsFrom(ax, ay, arms(rng, rng:int(2, 7), shuffled, s), points)
+      points[#points + 1], points[#points + 2] = ax, ay
+      points[#points + 1], points[#points + 2] = 0, ay
+    else
+      points = square
+      list[1] = slitsFrom(ax, ay, arms(rng, rng:int(3, 7), shuffled, s), {})
     end
   elseif kind == 8 then
     points = square
