@@ -104,6 +104,9 @@ local function spanInRow(ax, ay, bx, by, top, size, rows, row, margin)
   local hi = max(ay, by)
   if row < rows - 1 then hi = min(hi, top + (row + 1) * size + margin) end
   local slope = (bx - ax) / (by - ay)
+  -- too steep for a double (a rise below 2^-1022 or so against its run: outside the exact
+  -- range): the segment's box
+  if not (abs(slope) < huge) then return min(ax, bx), max(ax, bx) end   -- luacheck: ignore 581 (NaN too)
   local xa, xb = ax + (lo - ay) * slope, ax + (hi - ay) * slope
   return max(min(ax, bx), min(xa, xb) - margin), min(max(ax, bx), max(xa, xb) + margin)
 end

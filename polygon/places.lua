@@ -18,9 +18,16 @@ M.chunk = debug.getinfo(1, "f").func
 -- The node arrays of the triangulation under way (bound by sweep.lua's bind).
 local nodeX, nodeY, nextNode, prevNode, capacity
 
+local undecided   -- a place was left untested since the last bind (see M.undecided)
+
 function M.bind(x, y, nextN, prevN, cap)
   nodeX, nodeY, nextNode, prevNode, capacity = x, y, nextN, prevN, cap
+  undecided = false
 end
+
+-- Whether chainsCross left a place untested (three or more edges along one direction) since
+-- the triangulation's arrays were bound: the rings may still cross there.
+function M.undecided() return undecided end
 
 -- Where several vertices meet, or a vertex lies inside an edge, the outline may cross or
 -- overlap itself without two edges crossing properly (the sweep's test). Around such a place
@@ -115,7 +122,7 @@ function M.chainsCross(placeOrder, first, last, touched)
     while runEnd < count and not byAngle(u, entries[runEnd + 1]) do runEnd = runEnd + 1 end
     for j = at, runEnd do balance = balance + (entries[j] % 2 == 0 and 1 or -1) end
     if balance > 1 or balance < -1 then return true end
-    if runEnd > at + 1 then return false end   -- three or more: not decided here
+    if runEnd > at + 1 then undecided = true; return false end   -- three or more: not decided here
     if runEnd == at + 1 then tiedCount = tiedCount + 1; tied[tiedCount] = at end   -- either order
     at = runEnd + 1
   end

@@ -304,10 +304,13 @@ end
 -- unless another vertex in the triangle (h, hit, P) is: the one there at the least angle from
 -- the ray (nearest on ties) is seen. nil when the ray hits nothing (the hole is outside). The
 -- holes join from left to right, so no hole yet to join reaches left of h: the joined ring's
--- edges in h's row of cells are all the ray can meet.
+-- edges in h's row of cells are all the ray can meet. Where the hole meets an edge of the joined
+-- ring at h alone (h inside it, h's neighbours on its inside), that edge's node and true: the
+-- hole joins there (splitEdge); a bridge to P would run along the edge, over its other side.
 local function bridgeTarget(h)
   local hx, hy = nodeX[h], nodeY[h]
   local vertex, lo, hi   -- the nearest hit so far: a vertex, or an edge lo -> hi (upwards in y)
+  local through          -- an edge of the joined ring holding h's place inside
   local rowFirst = indexRow(hy) * indexCols + 1
   local cell, stop = rowFirst + indexCol(hx), rowFirst
   while cell >= stop do
@@ -330,11 +333,19 @@ local function bridgeTarget(h)
           end
         end
         local qy = nodeY[q]
+        if y == hy and qy == hy and min(x, nodeX[q]) < hx and hx < max(x, nodeX[q])
+          and orient(k, q, nextNode[h]) > 0 and orient(k, q, prevNode[h]) > 0 then
+          through = k   -- a level edge holding h inside, the hole meeting it there alone
+        end
         if (y < hy and qy > hy) or (y > hy and qy < hy) then
           local a, b = k, q
           if y > qy then a, b = q, k end
           local ax, ay = nodeX[a], nodeY[a]
-          if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy) <= 0 then   -- meets the ray
+          local side = cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy)
+          if side == 0 and orient(k, q, nextNode[h]) > 0 and orient(k, q, prevNode[h]) > 0 then
+            through = k   -- (of two edges along each other, the one facing the hole; a hole
+                          -- running along the edge from h goes the ray's way)
+          elseif side <= 0 then   -- meets the ray
             if vertex then
               if cross(ax, ay, nodeX[b], nodeY[b], ax, ay, nodeX[vertex], nodeY[vertex]) > 0 then
                 vertex, lo, hi = nil, a, b
@@ -346,6 +357,8 @@ local function bridgeTarget(h)
         end
       end
     end
+    -- (h's own cell holds a vertex at h's place, if any: that one first, above)
+    if through then return through, true end
     -- every hit not yet seen lies in a column left of those walked; one left of the nearest
     -- hit's (its place estimated when on an edge) holds none nearer
     if indexFine and (vertex or lo) then
@@ -386,6 +399,16 @@ local function bridgeTarget(h)
     end
   end
   return copyFacing(best, h)
+end
+
+-- A new node at hole node h's place in the edge k -> nextNode[k] of the joined ring, which holds
+-- that place inside, for the hole to join (see bridgeTarget); bridge lists its edges.
+local function splitEdge(k, h)
+  local w, q = newNode(inX[h], inY[h], origin[h]), nextNode[k]
+  nodeRing[w] = nodeRing[k]
+  twin[w], twin[h] = twin[h], w
+  nextNode[k], prevNode[w], nextNode[w], prevNode[q] = w, k, q, w
+  return w
 end
 
 -- Joins the hole ring at node h to the ring at node m: m -> h ... around the hole ... h' -> m'
@@ -587,11 +610,14 @@ local function blocks(k, a, b, c)
   if s1 > 0 and s2 > 0 and s3 > 0 then insideFound = k; return true end
   local atA, atB, atC = same(k, a), same(k, b), same(k, c)   -- each asked once (pinch points)
   if strict and s3 == 0 and not atA and not atC then return true end
-  -- an edge of another node running along a side of the triangle the same way: it has the
-  -- triangle's side as its inside too, which cutting the ear off would leave behind (two cuts
-  -- meeting along one diagonal both ways, at pinch points, leave such an edge)
-  local q = nextNode[k]
-  if (atC and same(q, a)) or (atA and same(q, b)) or (atB and same(q, c) and k ~= b) then
+  -- an edge of another node along a side the same way, from its first corner or to its last
+  -- (any length: a vertex inside an edge makes shorter sides): the side's far side is outside
+  -- there, which cutting the ear off would leave inside the ring (two cuts meeting along one
+  -- diagonal both ways, at pinch points, leave such an edge)
+  local q, p = nextNode[k], prevNode[k]
+  if (atC and ((q ~= a and along(c, a, q)) or along(c, b, p)))
+    or (atA and (along(a, b, q) or (p ~= c and along(a, c, p))))
+    or (atB and k ~= b and (along(b, c, q) or along(b, a, p))) then
     return true
   end
   for side = 1, 2 do
@@ -619,6 +645,7 @@ local earA, earB, earC, boxX0, boxY0, boxX1, boxY1, boxCol0, boxCol1
 local spanX0, spanX1    -- the triangle's widened span in x over the row being visited
 local nearby = {}       -- on LuaJIT, the entries near the triangle, tested after the scan
 local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
+local earWide, earMargin   -- the box stands for the spans (see isEar); spanMargin, or huge
 
 -- The columns of the cells the triangle may meet in a row: its span in x over the row's band
 -- of y, band and span widened by SPAN_MARGIN cells against rounding (the last row's band runs
@@ -627,7 +654,7 @@ local topX, topY, midX, midY, longSlope, upperSlope, lowerSlope
 -- (m may come in when outside [lo, hi]: a wider span, never a narrower one). A cell's width
 -- of widening on each side cost a thin spike's ear three cells a row instead of one or two.
 local function rowSpan(row)
-  if not gridFine then spanX0, spanX1 = boxX0, boxX1; return boxCol0, boxCol1 end
+  if earWide then spanX0, spanX1 = boxX0, boxX1; return boxCol0, boxCol1 end
   local margin = SPAN_MARGIN * cellSize
   local lo = max(boxY0, gridTop + row * cellSize - margin)
   local hi = row < gridRows - 1 and min(boxY1, gridTop + (row + 1) * cellSize + margin) or boxY1
@@ -640,7 +667,7 @@ local function rowSpan(row)
 end
 
 -- Whether (x, y), in the triangle's box, lies near the triangle: within its span in x at
--- height y, widened by spanMargin (as rowSpan, far beyond rounding). A long thin ear meets
+-- height y, widened by earMargin (as rowSpan, far beyond rounding). A long thin ear meets
 -- about one candidate a row that only the exact test would turn down otherwise. The short
 -- sides are both measured from m, each clamped to its own rows, so their sum is the short
 -- side's x at y (a level side too) without a branch: branches here multiplied LuaJIT's side
@@ -648,7 +675,7 @@ end
 local function nearTriangle(x, y)
   local xLong = topX + (y - topY) * longSlope
   local xShort = midX + (min(y, midY) - midY) * upperSlope + (max(y, midY) - midY) * lowerSlope
-  return abs(x + x - xLong - xShort) <= abs(xLong - xShort) + spanMargin
+  return abs(x + x - xLong - xShort) <= abs(xLong - xShort) + earMargin
 end
 
 -- Whether node b, strictly convex, is an ear: no listed node in the cells its triangle meets
@@ -677,6 +704,12 @@ local function isEar(b)
   longSlope = (nodeX[u] - topX) / (nodeY[u] - topY)   -- not level: the triangle has area
   upperSlope = midY > topY and (midX - topX) / (midY - topY) or 0
   lowerSlope = nodeY[u] > midY and (nodeX[u] - midX) / (nodeY[u] - midY) or 0
+  -- cells too fine for the margin, or a slope past the doubles (outside the exact range): the
+  -- box stands for the spans, and every entry in it goes to the exact test
+  local steep = abs(longSlope) + abs(upperSlope) + abs(lowerSlope)
+  earWide = not gridFine or not (steep < huge)   -- luacheck: ignore 581 (NaN too)
+  if earWide then longSlope, upperSlope, lowerSlope = 0, 0, 0 end
+  earMargin = earWide and huge or spanMargin
   -- one loop over the entries of the rows' spans, one row after the other: a loop per row (a
   -- few entries) ran as a trace of its own, and every row left it for the interpreter
   local row, lastRow, j, last = rowOf(boxY0) - 1, rowOf(boxY1), 1, 0
@@ -707,7 +740,7 @@ local function isEar(b)
       -- tests' side traces, started with the loop's many live values, aborted ("register
       -- coalescing too complex") thousands of times on outlines with holes
       if max(spanX0 - x, x - spanX1, boxY0 - y, y - boxY1,
-          abs(xNear + xNear - xLong - xShort) - abs(xLong - xShort) - spanMargin) <= 0 then
+          abs(xNear + xNear - xLong - xShort) - abs(xLong - xShort) - earMargin) <= 0 then
         found = found + 1
         nearby[found] = j
       end
@@ -942,7 +975,8 @@ function build(points, n, holes, checkOnly)
   local flat = turn == 0   -- zero area: a bow-tie's halves cancel; say so when edges cross
   turn = turn < 0 and -1 or 1
   capacity = n / 2
-  for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 2 end   -- 2: a bridge
+  -- 3: a bridge's two, and one where the hole touches an edge (splitEdge)
+  for h = 1, holes and #holes or 0 do capacity = capacity + #holes[h] / 2 + 3 end
   nodes.usePool(capacity)
   nodeX, nodeY = scratch(23, capacity), scratch(24, capacity)
   inX, inY = scratch(25, capacity), scratch(26, capacity)
@@ -979,7 +1013,10 @@ function build(points, n, holes, checkOnly)
   end
   local trouble = ringsTrouble(starts)
   if trouble then return nil, trouble end
-  if checkOnly then return true end
+  -- (where the check left a place untested, the ear clipping decides, as it does for
+  -- polygonTriangulate: polygonConvexParts' rectangles then come back only when the triangles
+  -- would)
+  if checkOnly and not places.undecided() then return true end
   -- an outline alone that the sweep found plain: by monotone pieces (see polygon/monotone.lua)
   local placeOrder, placeCount, placeRank, below = sweep.plainSweep()
   if placeOrder and #starts == 1 then
@@ -991,8 +1028,9 @@ function build(points, n, holes, checkOnly)
   local lefts, leftCount = sweep.holeLefts()
   if leftCount > 0 then buildIndex(starts) end
   for i = 1, leftCount do
-    local m = bridgeTarget(lefts[i])
+    local m, inside = bridgeTarget(lefts[i])
     if not m then return nil, "a hole is outside the polygon" end
+    if inside then m = splitEdge(m, lefts[i]) end
     bridge(m, lefts[i])
   end
   local first = dropInLine(outer)

@@ -1,6 +1,7 @@
--- Coordinates beyond the exact range (2^500, about 3.3e150): signs are no longer guaranteed, but
--- finite input must still give finite (or honestly infinite) numbers, never NaN, and the
--- collision functions rescale so that squares this large still collide with the right depth.
+-- Coordinates beyond the exact range (2^500, about 3.3e150), and below it: signs are no longer
+-- guaranteed, but finite input must still give finite (or honestly infinite) numbers, never NaN,
+-- and the collision functions rescale so that squares this large still collide with the right
+-- depth.
 local polygon = require "polygon"
 
 local function isNaN(v) return v ~= v end
@@ -44,6 +45,28 @@ describe("coordinates far beyond the exact range", function()
         assert.near(b / 2, cx, b * 1e-12)
         assert.near(b / 2, cy, b * 1e-12)
       end)
+    end)
+  end
+end)
+
+-- Below the exact range (nonzero magnitudes under 2^-447) signs are not guaranteed either, but a
+-- call must still answer, never stop in a Lua error. A side that rises by 2^-1074 (the least
+-- double) along a run of 1 has a slope past the largest double: the ear test's spans of the
+-- triangle came out infinite on LuaJIT, and the scan indexed its cells with them.
+describe("coordinates below the exact range", function()
+  local TINY = 2 ^ -1074
+  for _, case in ipairs({
+    { "a triangle with a side rising by 2^-1074", { 1, 0, 0, TINY, 0, 0 } },
+    { "a quadrilateral with such a side", { 1, 0, 0, TINY, 0, 0, 0.5, -1 } },
+    { "a sliver 1e-6 high with vertices at +-1e-323", { 0, 1e-6, 500, 1e-6, 1000, 1e-6, 1000, -1e-323,
+      500, 1e-323, 0, -1e-323 } },
+  }) do
+    it(("polygonTriangulate and polygonConvexParts answer for %s"):format(case[1]), function()
+      for _, f in ipairs({ polygon.polygonTriangulate, polygon.polygonConvexParts }) do
+        local ok, pieces, message = pcall(f, case[2])
+        assert.is_true(ok, tostring(pieces))
+        assert.is_true(type(pieces) == "table" or type(message) == "string")
+      end
     end)
   end
 end)

@@ -625,6 +625,31 @@ describe("polygonTriangulate's validity check", function()
   -- pair leaves the hole to the crossing rule. Taking the nearer one as it came placed a hole
   -- above a spike out of a square inside (the ear clipping then refused it: "edges overlap or
   -- cross"), and one inside an outline whose two parts meet along a line outside.
+  -- Three or more edges along one direction from a place leave it untested (polygon/places.lua):
+  -- the ear clipping decides such a case for polygonTriangulate, and polygonConvexParts' path
+  -- for outlines along the axes (rectangles, no ear clipping) took the check's word for it.
+  describe("when the check leaves a place untested", function()
+    it("gives polygonTriangulate's answer from polygonConvexParts too, both ways", function()
+      -- hole 1 a square (1..2, 8..9) with a spike down x = 1 to (1, 6) and back; hole 2 the
+      -- square (1..2, 6..7), its edge from (1, 6) to (1, 7) along the spike: three edges go up
+      -- x = 1 from (1, 6). The oracle leaves it undecided.
+      local points, list = { 0,0, 3,0, 3,12, 0,12 }, { { 1,9, 2,9, 2,8, 1,8, 1,6 }, { 2,7, 2,6, 1,6, 1,7 } }
+      assert.are.equal("unknown", oracle.regionCrossing(points, list))
+      for _, grid in ipairs({ true, false }) do
+        sweep.grid = grid
+        local tris, message = triangulate(points, list)
+        local parts, partsMessage = polygon.polygonConvexParts(points, list)
+        sweep.grid = true
+        assert.are.equal(tris == nil, parts == nil, "grid " .. tostring(grid))
+        assert.are.equal(message, partsMessage)
+        if tris then
+          assert.is_true((oracle.checkCover(points, list, tris)))
+          assert.is_true((oracle.checkCover(points, list, parts, true)))
+        end
+      end
+    end)
+  end)
+
   describe("when the edge below a hole runs along another edge", function()
     it("places the hole by the crossing rule, both ways", function()
       -- a square with a spike out along y = 50 to (150, 50) and back; triangles above and below
