@@ -615,7 +615,7 @@ local function blocks(k, a, b, c)
   -- there, which cutting the ear off would leave inside the ring (two cuts meeting along one
   -- diagonal both ways, at pinch points, leave such an edge)
   local q, p = nextNode[k], prevNode[k]
-  if (atC and ((q ~= a and along(c, a, q)) or along(c, b, p)))
+  if (atC and (along(c, a, q) or along(c, b, p)))
     or (atA and (along(a, b, q) or (p ~= c and along(a, c, p))))
     or (atB and k ~= b and (along(b, c, q) or along(b, a, p))) then
     return true
