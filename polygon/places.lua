@@ -15,13 +15,17 @@ local M = {}
 -- in it (see there).
 M.chunk = debug.getinfo(1, "f").func
 
--- The node arrays of the triangulation under way (bound by sweep.lua's bind).
-local nodeX, nodeY, nextNode, prevNode, capacity
+-- The node arrays of the triangulation under way (bound by sweep.lua's bind), and the kind of
+-- edge (0 leaving the place, 1 reaching it; see below) with the polygon's inside just after it
+-- by angle: every ring has the inside on its orient > 0 side, on the left of its edges when the
+-- outline turns positively.
+local nodeX, nodeY, nextNode, prevNode, nodeRing, capacity, insideKind
 
 local undecided   -- a place was left untested since the last bind (see M.undecided)
 
-function M.bind(x, y, nextN, prevN, cap)
-  nodeX, nodeY, nextNode, prevNode, capacity = x, y, nextN, prevN, cap
+function M.bind(x, y, nextN, prevN, cap, ring, sign)
+  nodeX, nodeY, nextNode, prevNode, capacity, nodeRing = x, y, nextN, prevN, cap, ring
+  insideKind = sign and (sign > 0 and 0 or 1)
   undecided = false
 end
 
@@ -87,6 +91,42 @@ local function alternateAndNest(entries, count)
   return depth == 0
 end
 
+-- The ring of entry u's chain: its node's, or that of the edge holding the place inside.
+local function entryRing(u)
+  local k = (u - u % 2) / 2
+  return nodeRing[k > capacity and k - capacity or k]
+end
+
+-- Whether every sector the alternation gives the polygon (the one after an edge of insideKind)
+-- lies on the polygon's side of each ring through the place by that ring's own edges there:
+-- inside the outline, outside each hole. (A hole running along the outline's edge and on past
+-- the outline's vertex, out of the polygon, alternates and nests there, but covers the
+-- outline's corner: there a sector after an edge of the outline lies after an edge of the hole
+-- of the other kind.)
+local ringsAt, ringOf = {}, {}   -- the rings through the place, each entry's: read only up
+                                 -- to their counts
+local function ringsAgree(entries, count)
+  local rings = 0
+  for j = 1, count do
+    local r, known = entryRing(entries[j]), false
+    ringOf[j] = r
+    for g = 1, rings do known = known or ringsAt[g] == r end
+    if not known then rings = rings + 1; ringsAt[rings] = r end
+  end
+  for g = 1, rings > 1 and rings or 0 do   -- (one ring alone agrees with itself)
+    local r, last = ringsAt[g], nil
+    for j = count, 1, -1 do   -- the kind of r's last edge before the first, going round
+      if ringOf[j] == r then last = entries[j] % 2; break end
+    end
+    for j = 1, count do
+      local kind = entries[j] % 2
+      if ringOf[j] == r then last = kind
+      elseif kind == insideKind and last ~= insideKind then return false end
+    end
+  end
+  return true
+end
+
 -- chainsCross's arrays, kept from one place to the next (read only up to their counts): tile
 -- maps meet at a thousand places, each of which made three tables.
 local entries, tied = {}, {}
@@ -126,7 +166,7 @@ function M.chainsCross(placeOrder, first, last, touched)
     if runEnd == at + 1 then tiedCount = tiedCount + 1; tied[tiedCount] = at end   -- either order
     at = runEnd + 1
   end
-  if tiedCount == 0 then return not alternateAndNest(entries, count) end
+  if tiedCount == 0 then return not (alternateAndNest(entries, count) and ringsAgree(entries, count)) end
   -- Alternation fixes every entry's kind by its position, up to one flip of them all: (j +
   -- entries[j]) % 2 is one number for every j. The entries not in a tied pair say which, or no
   -- order alternates; each tied pair (one edge each way) then has the one order that gives its
@@ -149,7 +189,7 @@ function M.chainsCross(placeOrder, first, last, touched)
       j = tied[g]
       if (j + entries[j]) % 2 ~= want then entries[j], entries[j + 1] = entries[j + 1], entries[j] end
     end
-    if alternateAndNest(entries, count) then return false end
+    if alternateAndNest(entries, count) and ringsAgree(entries, count) then return false end
   end
   return true
 end

@@ -46,7 +46,7 @@ function M.bind(x, y, nextN, prevN, ring, cap, sign, twins)
   plain, plainOrder, plainCount, plainRank, plainBelow = false, nil, nil, nil, nil
   keptFirst, keptEdge = nil, nil
   nodes.bind(x, y, nextN, ring, sign)
-  places.bind(x, y, nextN, prevN, cap)
+  places.bind(x, y, nextN, prevN, cap, ring, sign)
 end
 
 -- The ring node k was made for: 1 the outline, h + 1 hole h.

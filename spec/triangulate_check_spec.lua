@@ -625,6 +625,25 @@ describe("polygonTriangulate's validity check", function()
   -- pair leaves the hole to the crossing rule. Taking the nearer one as it came placed a hole
   -- above a spike out of a square inside (the ear clipping then refused it: "edges overlap or
   -- cross"), and one inside an outline whose two parts meet along a line outside.
+  -- At a place where a vertex lies inside another ring's edge, the edges there alternated and
+  -- nested, but nothing asked whether the polygon's side of each edge lies on the polygon's side
+  -- of every other ring through the place.
+  describe("when a hole runs along the outline's edge and on past its vertex", function()
+    it("names the hole crossing the outline, both ways", function()
+      -- the outline's edges lie on x = 24 (y from 0 to 48) and x + y = 72 (x from 0 to 24),
+      -- the triangle on x + y <= 72; the hole's (24, 37) and (20, 52) lie on them and (0, 72)
+      -- is the outline's vertex, but (24, 58) lies outside (24 + 58 = 82): its edge up x = 24
+      -- passes the outline's vertex (24, 48), out of the polygon. Before, the ear clipping
+      -- refused it without naming a ring ("edges overlap or cross").
+      local points, list = { 0,72, 24,48, 24,0 }, { { 24,37, 0,72, 20,52, 24,58 } }
+      for _, grid in ipairs({ true, false }) do
+        local tris, message = byWay(grid, points, list)
+        assert.is_nil(tris)
+        assert.are.equal("holes[1] crosses the outline", message)
+      end
+    end)
+  end)
+
   -- Three or more edges along one direction from a place leave it untested (polygon/places.lua):
   -- the ear clipping decides such a case for polygonTriangulate, and polygonConvexParts' path
   -- for outlines along the axes (rectangles, no ear clipping) took the check's word for it.
