@@ -69,9 +69,6 @@ local function byAngle(u, v)
   return cross(placeX, placeY, ax, ay, placeX, placeY, bx, by) > 0
 end
 
--- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
--- `touched` holding it inside (or nil), cross or overlap there (see above): chainsCross.
-
 -- Whether entries[1..count], sorted by angle, alternate in and out and nest like brackets.
 local open = {}   -- alternateAndNest's open brackets: read only up to its depth
 local function alternateAndNest(entries, count)
@@ -133,6 +130,8 @@ local entries, tied = {}, {}
 local SORT_RUN = 16   -- entries sorted by insertion at most (in Lua, which LuaJIT compiles;
                       -- table.sort's comparison calls are not compiled into the caller)
 
+-- Whether the chains of the nodes placeOrder[first..last], all at one place, and of the edges
+-- `touched` holding it inside (or nil), cross or overlap there (see above).
 function M.chainsCross(placeOrder, first, last, touched)
   local count = 0
   for g = first, last do
