@@ -109,13 +109,9 @@ end
 
 local dir = shell.tempDir()
 export(dir)
-local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
+local earcutFile = shell.earcut()
 local earcut, love = {}, {}
-if shell.have("node") and io.open(earcutFile) then
-  earcut = fieldsOf(("EARCUT=%s node bench/earcut.js %s"):format(earcutFile, dir))
-else
-  print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
-end
+if earcutFile then earcut = fieldsOf(("EARCUT=%s node bench/earcut.js %s"):format(earcutFile, dir)) end
 local haveLove = "command -v love >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1"
 if os.getenv("LOVE") ~= "0" and shell.ok(haveLove) then
   assert(shell.ok(("cp bench/love-triangulate.lua %s/main.lua"):format(dir)))

@@ -104,14 +104,12 @@ end
 
 local fields = shell.words
 local self = arg[-1] or "lua"
-local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
-local withEarcut = shell.have("node") and io.open(earcutFile) ~= nil
+local earcutFile = shell.earcut()
+local withEarcut = earcutFile ~= nil
 local dir
 if withEarcut then
   dir = shell.tempDir()
   assert(shell.ok(("%s bench/cycled.lua export %s"):format(self, dir)))
-else
-  print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
 end
 print(("polygonTriangulate on %s and earcut: ns a vertex, one input repeated against inputs in turn")
   :format(self))

@@ -247,14 +247,10 @@ local case = arg[1]
 if not case then
   -- each case in its own process; earcut on the same inputs (bench/cycled.lua's export) in node
   local self = arg[-1] or "lua"
-  local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
-  local found = io.open(earcutFile)
-  if found then found:close() end
-  local dir = found and shell.have("node") and shell.tempDir()
+  local earcutFile = shell.earcut()
+  local dir = earcutFile and shell.tempDir()
   if dir then
     assert(shell.ok(("%s bench/cycled.lua export %s"):format(self, dir)), "bench/cycled.lua export failed")
-  else
-    print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
   end
   print(("polygonTriangulate on %s against the bare clipper, and earcut in node: ns a vertex"):format(self))
   print(("%-10s %6s | %-36s | %-36s"):format("", "", "one input repeated", "inputs in turn"))

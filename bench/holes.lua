@@ -99,9 +99,9 @@ local run, have = shell.words, shell.have
 local dir = shell.tempDir()
 local self = arg[-1] or "lua"
 assert(shell.ok(("%s bench/holes.lua export %s"):format(self, dir)))
-local earcutFile = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
+local earcutFile = shell.earcut()
 local warmEarcut = {}
-local withEarcut = have("node") and io.open(earcutFile) ~= nil
+local withEarcut = earcutFile ~= nil
 if withEarcut then
   local pipe = assert(io.popen(("EARCUT=%s node bench/earcut-holes.js %s"):format(earcutFile, dir)))
   for line in pipe:lines() do
@@ -109,8 +109,6 @@ if withEarcut then
     if n then warmEarcut[n] = tonumber(ms) end
   end
   pipe:close()
-else
-  print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
 end
 
 local luas = {}

@@ -21,6 +21,18 @@ function shell.words(command)
   return words
 end
 
+-- The earcut module file for the benchmarks' earcut columns (EARCUT, else the copy that
+-- `npm install --prefix /tmp/earcut earcut` makes), when it and node are there; else nil, and
+-- the line saying that those columns are skipped is printed.
+function shell.earcut()
+  local file = os.getenv("EARCUT") or "/tmp/earcut/node_modules/earcut/src/earcut.js"
+  local found = io.open(file)
+  if found then found:close() end
+  if found and shell.have("node") then return file end
+  print("(earcut skipped: needs node and `npm install --prefix /tmp/earcut earcut`, or EARCUT=file)")
+  return nil
+end
+
 -- A new empty folder's path (remove it with shell.ok("rm -rf " .. path)).
 function shell.tempDir()
   local dir = os.tmpname()

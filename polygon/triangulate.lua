@@ -307,6 +307,9 @@ end
 -- edges in h's row of cells are all the ray can meet. Where the hole meets an edge of the joined
 -- ring at h alone (h inside it, h's neighbours on its inside), that edge's node and true: the
 -- hole joins there (splitEdge); a bridge to P would run along the edge, over its other side.
+local function meetsAlone(k, q, h)   -- h's neighbours on the inside of the edge k -> q
+  return orient(k, q, nextNode[h]) > 0 and orient(k, q, prevNode[h]) > 0
+end
 local function bridgeTarget(h)
   local hx, hy = nodeX[h], nodeY[h]
   local vertex, lo, hi   -- the nearest hit so far: a vertex, or an edge lo -> hi (upwards in y)
@@ -334,7 +337,7 @@ local function bridgeTarget(h)
         end
         local qy = nodeY[q]
         if y == hy and qy == hy and min(x, nodeX[q]) < hx and hx < max(x, nodeX[q])
-          and orient(k, q, nextNode[h]) > 0 and orient(k, q, prevNode[h]) > 0 then
+          and meetsAlone(k, q, h) then
           through = k   -- a level edge holding h inside, the hole meeting it there alone
         end
         if (y < hy and qy > hy) or (y > hy and qy < hy) then
@@ -342,7 +345,7 @@ local function bridgeTarget(h)
           if y > qy then a, b = q, k end
           local ax, ay = nodeX[a], nodeY[a]
           local side = cross(ax, ay, nodeX[b], nodeY[b], ax, ay, hx, hy)
-          if side == 0 and orient(k, q, nextNode[h]) > 0 and orient(k, q, prevNode[h]) > 0 then
+          if side == 0 and meetsAlone(k, q, h) then
             through = k   -- (of two edges along each other, the one facing the hole; a hole
                           -- running along the edge from h goes the ray's way)
           elseif side <= 0 then   -- meets the ray
